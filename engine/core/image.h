@@ -1,0 +1,44 @@
+#pragma once
+// A linear RGB float image and its files: EXR (float, linear) and PNG (sRGB, tonemapped).
+#include <string>
+#include <vector>
+
+#include "engine/core/color.h"
+
+namespace mvpl {
+
+class Image {
+public:
+    Image() = default;
+    Image(int width, int height)
+        : m_width(width), m_height(height), m_pixels(size_t(width) * height, Rgb(0.0f)) {}
+
+    int width() const { return m_width; }
+    int height() const { return m_height; }
+    Rgb& at(int x, int y) { return m_pixels[size_t(y) * m_width + x]; }
+    const Rgb& at(int x, int y) const { return m_pixels[size_t(y) * m_width + x]; }
+    std::vector<Rgb>& pixels() { return m_pixels; }
+    const std::vector<Rgb>& pixels() const { return m_pixels; }
+
+    Rgb mean() const;  // accumulated in double
+
+private:
+    int m_width = 0;
+    int m_height = 0;
+    std::vector<Rgb> m_pixels;  // row-major, row 0 at the top
+};
+
+// Writes by the extension of `path`: .exr (32-bit float linear) or .png (8-bit sRGB after
+// multiplying by 2^exposure). Throws UsageError for another extension, std::runtime_error when
+// the file cannot be written.
+void write_image(const Image& image, const std::string& path, float exposure = 0.0f);
+void write_exr(const Image& image, const std::string& path);
+void write_png(const Image& image, const std::string& path, float exposure = 0.0f);
+// Reads the R, G, B channels of an EXR (half or float). Throws InputError naming the file.
+Image read_exr(const std::string& path);
+
+// Linear value to the sRGB transfer curve, clamped to [0, 1].
+float linear_to_srgb(float v);
+float srgb_to_linear(float v);
+
+}  // namespace mvpl

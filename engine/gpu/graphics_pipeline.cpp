@@ -1,0 +1,264 @@
+#include "engine/gpu/graphics_pipeline.h"
+
+#include <vulkan/vulkan.h>
+
+#include "engine/gpu/buffer.h"
+#include "engine/gpu/command_list.h"
+#include "engine/gpu/context.h"
+#include "engine/gpu/gpu_error.h"
+#include "engine/gpu/image.h"
+#include "engine/gpu/vk_check.h"
+#include "engine/gpu/vk_types.h"
+
+namespace mvpl::gpu {
+namespace {
+
+VkFormat to_vk_vertex_format(VertexFormat format) {
+    switch (format) {
+        case VertexFormat::float4:
+            return VK_FORMAT_R32G32B32A32_SFLOAT;
+        case VertexFormat::uint1:
+            return VK_FORMAT_R32_UINT;
+        case VertexFormat::float3:
+        default:
+            return VK_FORMAT_R32G32B32_SFLOAT;
+    }
+}
+
+VkShaderModule create_module(VkDevice device, std::span<const uint32_t> spirv,
+                             const std::string& what) {
+    if (spirv.empty()) throw GpuError(what + ": no SPIR-V");
+    VkShaderModuleCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+    info.codeSize = spirv.size_bytes();
+    info.pCode = spirv.data();
+    VkShaderModule module = VK_NULL_HANDLE;
+    vk_check(vkCreateShaderModule(device, &info, nullptr, &module),
+             "vkCreateShaderModule(" + what + ")");
+    return module;
+}
+
+constexpr VkShaderStageFlags kPushStages =
+    VK_SHADER_STAGE_VERTEX_BIT | VK_SHADER_STAGE_FRAGMENT_BIT;
+
+}  // namespace
+
+GraphicsPipeline::GraphicsPipeline(Context& context, std::span<const uint32_t> vertex_spirv,
+                                   std::span<const uint32_t> fragment_spirv, GraphicsLayout layout,
+                                   std::string_view name)
+    : m_context(&context), m_layout(std::move(layout)), m_name(name) {
+    const VkDevice device = context.device();
+    const std::string what = "graphics pipeline '" + m_name + "'";
+    const uint32_t max_push = context.device_info().limits.max_push_constants_size;
+    if (m_layout.push_constant_bytes % 4 != 0 || m_layout.push_constant_bytes > max_push) {
+        throw GpuError(what + ": " + std::to_string(m_layout.push_constant_bytes) +
+                       " push-constant bytes (a multiple of 4, at most " +
+                       std::to_string(max_push) + ")");
+    }
+    VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
+    try {
+        VkPushConstantRange push{};
+        push.stageFlags = kPushStages;
+        push.size = m_layout.push_constant_bytes;
+        VkPipelineLayoutCreateInfo layout_info{};
+        layout_info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+        layout_info.pushConstantRangeCount = push.size > 0 ? 1 : 0;
+        layout_info.pPushConstantRanges = &push;
+        vk_check(vkCreatePipelineLayout(device, &layout_info, nullptr, &m_pipeline_layout),
+                 "vkCreatePipelineLayout(" + m_name + ")");
+
+        modules[0] = create_module(device, vertex_spirv, what);
+        modules[1] = create_module(device, fragment_spirv, what);
+        VkPipelineShaderStageCreateInfo stages[2]{};
+        for (int i = 0; i < 2; ++i) {
+            stages[i].sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+            stages[i].stage = i == 0 ? VK_SHADER_STAGE_VERTEX_BIT : VK_SHADER_STAGE_FRAGMENT_BIT;
+            stages[i].module = modules[i];
+            stages[i].pName = "main";
+        }
+
+        VkVertexInputBindingDescription binding{0, m_layout.vertex_stride,
+                                                VK_VERTEX_INPUT_RATE_VERTEX};
+        std::vector<VkVertexInputAttributeDescription> attributes;
+        for (uint32_t i = 0; i < m_layout.attributes.size(); ++i) {
+            attributes.push_back({i, 0, to_vk_vertex_format(m_layout.attributes[i].format),
+                                  m_layout.attributes[i].offset});
+        }
+        VkPipelineVertexInputStateCreateInfo vertex_input{};
+        vertex_input.sType = VK_STRUCTURE_TYPE_PIPELINE_VERTEX_INPUT_STATE_CREATE_INFO;
+        vertex_input.vertexBindingDescriptionCount = attributes.empty() ? 0 : 1;
+        vertex_input.pVertexBindingDescriptions = &binding;
+        vertex_input.vertexAttributeDescriptionCount = uint32_t(attributes.size());
+        vertex_input.pVertexAttributeDescriptions = attributes.data();
+
+        VkPipelineInputAssemblyStateCreateInfo assembly{};
+        assembly.sType = VK_STRUCTURE_TYPE_PIPELINE_INPUT_ASSEMBLY_STATE_CREATE_INFO;
+        assembly.topology = VK_PRIMITIVE_TOPOLOGY_TRIANGLE_LIST;
+
+        VkPipelineViewportStateCreateInfo viewport{};
+        viewport.sType = VK_STRUCTURE_TYPE_PIPELINE_VIEWPORT_STATE_CREATE_INFO;
+        viewport.viewportCount = 1;
+        viewport.scissorCount = 1;
+
+        VkPipelineRasterizationStateCreateInfo raster{};
+        raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
+        raster.polygonMode = VK_POLYGON_MODE_FILL;
+        raster.cullMode = VK_CULL_MODE_NONE;
+        raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+        raster.lineWidth = 1.0f;
+
+        VkPipelineMultisampleStateCreateInfo multisample{};
+        multisample.sType = VK_STRUCTURE_TYPE_PIPELINE_MULTISAMPLE_STATE_CREATE_INFO;
+        multisample.rasterizationSamples = VK_SAMPLE_COUNT_1_BIT;
+
+        VkPipelineDepthStencilStateCreateInfo depth{};
+        depth.sType = VK_STRUCTURE_TYPE_PIPELINE_DEPTH_STENCIL_STATE_CREATE_INFO;
+        depth.depthTestEnable = m_layout.depth ? VK_TRUE : VK_FALSE;
+        depth.depthWriteEnable = m_layout.depth ? VK_TRUE : VK_FALSE;
+        depth.depthCompareOp = VK_COMPARE_OP_GREATER;
+
+        std::vector<VkPipelineColorBlendAttachmentState> blend(m_layout.color_formats.size());
+        std::vector<VkFormat> color_formats;
+        for (size_t i = 0; i < blend.size(); ++i) {
+            blend[i].colorWriteMask = VK_COLOR_COMPONENT_R_BIT | VK_COLOR_COMPONENT_G_BIT |
+                                      VK_COLOR_COMPONENT_B_BIT | VK_COLOR_COMPONENT_A_BIT;
+            color_formats.push_back(to_vk_format(m_layout.color_formats[i]));
+        }
+        VkPipelineColorBlendStateCreateInfo blend_state{};
+        blend_state.sType = VK_STRUCTURE_TYPE_PIPELINE_COLOR_BLEND_STATE_CREATE_INFO;
+        blend_state.attachmentCount = uint32_t(blend.size());
+        blend_state.pAttachments = blend.data();
+
+        const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT,
+                                                 VK_DYNAMIC_STATE_SCISSOR};
+        VkPipelineDynamicStateCreateInfo dynamic{};
+        dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
+        dynamic.dynamicStateCount = 2;
+        dynamic.pDynamicStates = dynamic_states;
+
+        VkPipelineRenderingCreateInfo rendering{};
+        rendering.sType = VK_STRUCTURE_TYPE_PIPELINE_RENDERING_CREATE_INFO;
+        rendering.colorAttachmentCount = uint32_t(color_formats.size());
+        rendering.pColorAttachmentFormats = color_formats.data();
+        rendering.depthAttachmentFormat =
+            m_layout.depth ? VK_FORMAT_D32_SFLOAT : VK_FORMAT_UNDEFINED;
+
+        VkGraphicsPipelineCreateInfo info{};
+        info.sType = VK_STRUCTURE_TYPE_GRAPHICS_PIPELINE_CREATE_INFO;
+        info.pNext = &rendering;
+        info.stageCount = 2;
+        info.pStages = stages;
+        info.pVertexInputState = &vertex_input;
+        info.pInputAssemblyState = &assembly;
+        info.pViewportState = &viewport;
+        info.pRasterizationState = &raster;
+        info.pMultisampleState = &multisample;
+        info.pDepthStencilState = &depth;
+        info.pColorBlendState = &blend_state;
+        info.pDynamicState = &dynamic;
+        info.layout = m_pipeline_layout;
+        vk_check(vkCreateGraphicsPipelines(device, VK_NULL_HANDLE, 1, &info, nullptr, &m_pipeline),
+                 "vkCreateGraphicsPipelines(" + m_name + ")");
+    } catch (...) {
+        for (VkShaderModule module : modules) {
+            if (module) vkDestroyShaderModule(device, module, nullptr);
+        }
+        release();
+        throw;
+    }
+    // The pipeline keeps what it needs; the modules are only inputs.
+    for (VkShaderModule module : modules)
+        vkDestroyShaderModule(device, module, nullptr);
+    context.set_debug_name(VK_OBJECT_TYPE_PIPELINE, uint64_t(m_pipeline), m_name);
+}
+
+GraphicsPipeline::~GraphicsPipeline() {
+    release();
+}
+
+void GraphicsPipeline::release() noexcept {
+    const VkDevice device = m_context->device();
+    if (m_pipeline) vkDestroyPipeline(device, m_pipeline, nullptr);
+    if (m_pipeline_layout) vkDestroyPipelineLayout(device, m_pipeline_layout, nullptr);
+    m_pipeline = nullptr;
+    m_pipeline_layout = nullptr;
+}
+
+void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
+                     const DepthTarget* depth) {
+    const Image* first = !colors.empty() ? colors[0].image : depth ? depth->image : nullptr;
+    if (!first) throw GpuError("begin_rendering without targets");
+    const uint32_t width = first->width();
+    const uint32_t height = first->height();
+    std::vector<VkRenderingAttachmentInfo> attachments;
+    for (const ColorTarget& target : colors) {
+        const VkImageView view = target.image ? target.image->layer_view(target.layer) : nullptr;
+        if (!view || target.image->width() != width || target.image->height() != height) {
+            throw GpuError("begin_rendering: colour target '" +
+                           (target.image ? target.image->name() : std::string("null")) +
+                           "' layer " + std::to_string(target.layer) +
+                           " is not an attachment of the common size");
+        }
+        VkRenderingAttachmentInfo a{};
+        a.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+        a.imageView = view;
+        a.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+        a.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        a.storeOp = VK_ATTACHMENT_STORE_OP_STORE;
+        for (int i = 0; i < 4; ++i)
+            a.clearValue.color.float32[i] = target.clear[size_t(i)];
+        attachments.push_back(a);
+    }
+    VkRenderingAttachmentInfo depth_attachment{};
+    if (depth) {
+        const VkImageView view = depth->image ? depth->image->layer_view(depth->layer) : nullptr;
+        if (!view || depth->image->width() != width || depth->image->height() != height) {
+            throw GpuError("begin_rendering: the depth target is not an attachment of the size");
+        }
+        depth_attachment.sType = VK_STRUCTURE_TYPE_RENDERING_ATTACHMENT_INFO;
+        depth_attachment.imageView = view;
+        depth_attachment.imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+        depth_attachment.loadOp = VK_ATTACHMENT_LOAD_OP_CLEAR;
+        // The depth is only needed while drawing: nothing reads it afterwards.
+        depth_attachment.storeOp = VK_ATTACHMENT_STORE_OP_DONT_CARE;
+        depth_attachment.clearValue.depthStencil = {depth->clear, 0};
+    }
+    VkRenderingInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
+    info.renderArea = {{0, 0}, {width, height}};
+    info.layerCount = 1;
+    info.colorAttachmentCount = uint32_t(attachments.size());
+    info.pColorAttachments = attachments.data();
+    info.pDepthAttachment = depth ? &depth_attachment : nullptr;
+    vkCmdBeginRendering(cmd.handle(), &info);
+    const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    const VkRect2D scissor{{0, 0}, {width, height}};
+    vkCmdSetViewport(cmd.handle(), 0, 1, &viewport);
+    vkCmdSetScissor(cmd.handle(), 0, 1, &scissor);
+}
+
+void end_rendering(CommandList& cmd) {
+    vkCmdEndRendering(cmd.handle());
+}
+
+void draw(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
+          std::span<const std::byte> push_constants, uint32_t first_vertex, uint32_t vertex_count) {
+    if (push_constants.size() != pipeline.layout().push_constant_bytes) {
+        throw GpuError("draw with '" + pipeline.name() +
+                       "': " + std::to_string(push_constants.size()) +
+                       " push-constant bytes, the layout has " +
+                       std::to_string(pipeline.layout().push_constant_bytes));
+    }
+    const VkCommandBuffer handle = cmd.handle();
+    vkCmdBindPipeline(handle, VK_PIPELINE_BIND_POINT_GRAPHICS, pipeline.handle());
+    const VkBuffer buffer = vertices.handle();
+    const VkDeviceSize offset = 0;
+    vkCmdBindVertexBuffers(handle, 0, 1, &buffer, &offset);
+    if (!push_constants.empty()) {
+        vkCmdPushConstants(handle, pipeline.pipeline_layout(), kPushStages, 0,
+                           uint32_t(push_constants.size()), push_constants.data());
+    }
+    vkCmdDraw(handle, vertex_count, 1, first_vertex, 0);
+}
+
+}  // namespace mvpl::gpu

@@ -1,0 +1,92 @@
+#pragma once
+// A graphics pipeline for dynamic rendering (Vulkan 1.3, no render pass objects) and the few
+// commands that draw with it: begin/end rendering into layers of mvpl Images and non-indexed
+// draws from one vertex buffer. Vulkan-free to include.
+//
+// The shape is what the render passes need and no more: one interleaved vertex buffer, push
+// constants visible to both stages and no descriptor sets (per-draw data fits in 128 bytes, the
+// guaranteed push-constant size), no culling (mvpl never culls geometry), dynamic viewport and
+// scissor, no blending. Depth is reversed (compare GREATER, clear to 0, z_ndc = near / distance):
+// floats then resolve depth with the same relative precision at every distance, which an
+// infinite far plane and any scene scale need.
+#include <array>
+#include <cstdint>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "engine/gpu/format.h"
+#include "engine/gpu/vk_fwd.h"
+
+namespace mvpl::gpu {
+
+class Buffer;
+class CommandList;
+class Context;
+class Image;
+
+enum class VertexFormat { float3, float4, uint1 };
+
+struct VertexAttribute {
+    VertexFormat format = VertexFormat::float3;
+    uint32_t offset = 0;  // bytes into the vertex; location = index in GraphicsLayout::attributes
+};
+
+struct GraphicsLayout {
+    uint32_t vertex_stride = 0;
+    std::vector<VertexAttribute> attributes;
+    std::vector<Format> color_formats;  // fragment output location i writes attachment i
+    bool depth = false;                 // a d32_float depth attachment, test GREATER and write
+    uint32_t push_constant_bytes = 0;   // one range, vertex and fragment stages
+};
+
+class GraphicsPipeline {
+public:
+    // vertex_spirv/fragment_spirv: compile_glsl output. name appears in errors and validation.
+    GraphicsPipeline(Context& context, std::span<const uint32_t> vertex_spirv,
+                     std::span<const uint32_t> fragment_spirv, GraphicsLayout layout,
+                     std::string_view name);
+    ~GraphicsPipeline();
+    GraphicsPipeline(const GraphicsPipeline&) = delete;
+    GraphicsPipeline& operator=(const GraphicsPipeline&) = delete;
+
+    const GraphicsLayout& layout() const { return m_layout; }
+    const std::string& name() const { return m_name; }
+    VkPipeline handle() const { return m_pipeline; }
+    VkPipelineLayout pipeline_layout() const { return m_pipeline_layout; }
+
+private:
+    void release() noexcept;
+
+    Context* m_context;
+    GraphicsLayout m_layout;
+    std::string m_name;
+    VkPipelineLayout m_pipeline_layout = nullptr;
+    VkPipeline m_pipeline = nullptr;
+};
+
+// One layer of an image as an attachment, cleared at the start of rendering.
+struct ColorTarget {
+    const Image* image = nullptr;
+    uint32_t layer = 0;
+    std::array<float, 4> clear{0.0f, 0.0f, 0.0f, 0.0f};
+};
+struct DepthTarget {
+    const Image* image = nullptr;
+    uint32_t layer = 0;
+    float clear = 0.0f;  // reversed depth: 0 is infinitely far
+};
+
+// Begins dynamic rendering over the full extent of the targets (all of the same size) and sets
+// the viewport and scissor to it. depth may be nullptr.
+void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
+                     const DepthTarget* depth);
+void end_rendering(CommandList& cmd);
+
+// Binds pipeline and vertices, pushes push_constants (the layout's size) and draws
+// vertex_count vertices from first_vertex as a triangle list.
+void draw(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
+          std::span<const std::byte> push_constants, uint32_t first_vertex, uint32_t vertex_count);
+
+}  // namespace mvpl::gpu

@@ -1,0 +1,258 @@
+#include "engine/light/light_sampler.h"
+
+#include <algorithm>
+
+#include "engine/core/sampling.h"
+#include "engine/material/material_eval.h"
+
+namespace mvpl::light {
+
+float spot_attenuation(const scene::Light& light, float cos_angle) {
+    const float cos_outer = std::cos(light.outer_cone);
+    const float cos_inner = std::cos(light.inner_cone);
+    const float scale = 1.0f / std::max(1e-3f, cos_inner - cos_outer);
+    const float t = std::clamp((cos_angle - cos_outer) * scale, 0.0f, 1.0f);
+    return t * t;
+}
+
+namespace {
+
+struct TrianglePoints {
+    Vec3 p0, p1, p2;
+};
+
+TrianglePoints triangle_points(const scene::Mesh& mesh, int triangle) {
+    const uint32_t* idx = &mesh.indices[3 * size_t(triangle)];
+    return {mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]};
+}
+
+material::SurfaceUv interpolate_uv(const scene::Mesh& mesh, int triangle, const Vec2& b) {
+    const uint32_t* idx = &mesh.indices[3 * size_t(triangle)];
+    const float b0 = 1.0f - b.x - b.y;
+    material::SurfaceUv uv;
+    if (!mesh.uv0.empty())
+        uv.uv0 = b0 * mesh.uv0[idx[0]] + b.x * mesh.uv0[idx[1]] + b.y * mesh.uv0[idx[2]];
+    if (!mesh.uv1.empty())
+        uv.uv1 = b0 * mesh.uv1[idx[0]] + b.x * mesh.uv1[idx[1]] + b.y * mesh.uv1[idx[2]];
+    return uv;
+}
+
+}  // namespace
+
+LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene) {
+    const float diagonal = scene.bounds().diagonal();
+    m_scene_radius = diagonal > 0.0f ? 0.5f * diagonal : 1.0f;
+    if (!scene.bounds().empty()) m_scene_center = scene.bounds().center();
+    m_first_emitter.assign(scene.meshes.size(), -1);
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const scene::Mesh& mesh = scene.meshes[m];
+        const scene::Material& mat = scene.materials[mesh.material];
+        if (!mat.is_emissive()) continue;
+        m_first_emitter[m] = int(m_emitters.size());
+        // Selection by the flux of the emission factor; a texture only modulates it.
+        const float radiance = luminance(mat.emission());
+        for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+            const TrianglePoints tri = triangle_points(mesh, int(t));
+            Emitter e;
+            e.type = EmitterType::Triangle;
+            e.mesh = int(m);
+            e.triangle = int(t);
+            e.area = 0.5f * glm::length(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
+            e.power = kPi * e.area * radiance;
+            m_emitters.push_back(e);
+        }
+    }
+    for (size_t l = 0; l < scene.lights.size(); ++l) {
+        const scene::Light& light = scene.lights[l];
+        Emitter e;
+        e.light = int(l);
+        const float y = luminance(light.intensity);
+        switch (light.type) {
+            case scene::LightType::Point:
+                e.type = EmitterType::Point;
+                e.power = 4.0f * kPi * y;
+                break;
+            case scene::LightType::Spot:
+                e.type = EmitterType::Spot;
+                // pbrt-v3's estimate of the flux inside the smooth cone.
+                e.power = 2.0f * kPi * y *
+                          (1.0f - 0.5f * (std::cos(light.inner_cone) + std::cos(light.outer_cone)));
+                break;
+            case scene::LightType::Directional:
+                e.type = EmitterType::Directional;
+                e.power = kPi * m_scene_radius * m_scene_radius * y;
+                break;
+        }
+        m_emitters.push_back(e);
+    }
+    // Emitters with no power cannot be sampled; they stay in the list so that indices are stable.
+    m_cdf.reserve(m_emitters.size());
+    double sum = 0.0;
+    for (const Emitter& e : m_emitters) {
+        sum += std::isfinite(e.power) && e.power > 0.0f ? e.power : 0.0f;
+        m_cdf.push_back(float(sum));
+    }
+    m_total_power = float(sum);
+    if (!(m_total_power > 0.0f)) {
+        m_emitters.clear();
+        m_cdf.clear();
+        m_total_power = 0.0f;
+    }
+}
+
+int LightSampler::emitter_of(int mesh, int triangle) const {
+    if (mesh < 0 || size_t(mesh) >= m_first_emitter.size() || m_first_emitter[mesh] < 0) return -1;
+    return m_first_emitter[mesh] + triangle;
+}
+
+Rgb LightSampler::emitted_radiance(int mesh, int triangle, const Vec2& barycentric,
+                                   const Vec3& w) const {
+    const scene::Mesh& m = m_scene.meshes[mesh];
+    const TrianglePoints tri = triangle_points(m, triangle);
+    const Vec3 n = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+    if (glm::dot(n, w) <= 0.0f) return Rgb(0.0f);
+    const scene::Material& mat = m_scene.materials[m.material];
+    return material::resolve_emission(mat, m_scene.textures,
+                                      interpolate_uv(m, triangle, barycentric));
+}
+
+std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick,
+                                                   const Vec2& u) const {
+    if (m_emitters.empty()) return std::nullopt;
+    const float target = u_pick * m_total_power;
+    const size_t index =
+        std::min<size_t>(std::upper_bound(m_cdf.begin(), m_cdf.end(), target) - m_cdf.begin(),
+                         m_emitters.size() - 1);
+    const Emitter& e = m_emitters[index];
+    const float pick = e.power / m_total_power;
+    if (!(pick > 0.0f)) return std::nullopt;
+
+    LightSample s;
+    if (e.type == EmitterType::Triangle) {
+        const scene::Mesh& mesh = m_scene.meshes[e.mesh];
+        const TrianglePoints tri = triangle_points(mesh, e.triangle);
+        const Vec2 b = sample_uniform_triangle(u);
+        s.p = (1.0f - b.x - b.y) * tri.p0 + b.x * tri.p1 + b.y * tri.p2;
+        const Vec3 cross = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+        const float cross_len = glm::length(cross);
+        if (!(cross_len > 0.0f)) return std::nullopt;
+        s.n = cross / cross_len;
+        const Vec3 d = s.p - ref;
+        const float dist2 = glm::dot(d, d);
+        if (!(dist2 > 0.0f)) return std::nullopt;
+        s.distance = std::sqrt(dist2);
+        s.wi = d / s.distance;
+        const float cos_light = -glm::dot(s.n, s.wi);
+        if (cos_light <= 0.0f) return std::nullopt;  // back face: one-sided emitter
+        s.pdf = pick * dist2 / (cos_light * e.area);
+        const scene::Material& mat = m_scene.materials[mesh.material];
+        s.li =
+            material::resolve_emission(mat, m_scene.textures, interpolate_uv(mesh, e.triangle, b));
+        if (!std::isfinite(s.pdf)) return std::nullopt;
+        return s;
+    }
+
+    const scene::Light& light = m_scene.lights[e.light];
+    s.is_delta = true;
+    s.pdf = pick;
+    if (e.type == EmitterType::Directional) {
+        s.wi = -light.direction;
+        s.distance = std::numeric_limits<float>::infinity();
+        s.li = light.intensity;
+        return s;
+    }
+    s.p = light.position;
+    const Vec3 d = light.position - ref;
+    const float dist2 = glm::dot(d, d);
+    if (!(dist2 > 0.0f)) return std::nullopt;
+    s.distance = std::sqrt(dist2);
+    s.wi = d / s.distance;
+    s.li = light.intensity / dist2;
+    if (e.type == EmitterType::Spot)
+        s.li *= spot_attenuation(light, glm::dot(light.direction, -s.wi));
+    if (is_black(s.li)) return std::nullopt;
+    return s;
+}
+
+float LightSampler::pdf_li(const Vec3& ref, int mesh, int triangle, const Vec3& p,
+                           const Vec3& n) const {
+    const int index = emitter_of(mesh, triangle);
+    if (index < 0 || m_emitters.empty()) return 0.0f;
+    const Emitter& e = m_emitters[index];
+    const Vec3 d = p - ref;
+    const float dist2 = glm::dot(d, d);
+    const float cos_light = std::abs(glm::dot(n, d)) / std::sqrt(dist2);
+    if (!(cos_light > 0.0f) || !(e.area > 0.0f)) return 0.0f;
+    return (e.power / m_total_power) * dist2 / (cos_light * e.area);
+}
+
+std::optional<EmissionSample> LightSampler::sample_le(float u_pick, const Vec2& u_pos,
+                                                      const Vec2& u_dir) const {
+    if (m_emitters.empty()) return std::nullopt;
+    const size_t index = std::min<size_t>(
+        std::upper_bound(m_cdf.begin(), m_cdf.end(), u_pick * m_total_power) - m_cdf.begin(),
+        m_emitters.size() - 1);
+    const Emitter& e = m_emitters[index];
+    EmissionSample s;
+    s.type = e.type;
+    s.emitter = int(index);
+    s.pick = e.power / m_total_power;
+    if (!(s.pick > 0.0f)) return std::nullopt;
+
+    if (e.type == EmitterType::Triangle) {
+        const scene::Mesh& mesh = m_scene.meshes[e.mesh];
+        const TrianglePoints tri = triangle_points(mesh, e.triangle);
+        const Vec2 b = sample_uniform_triangle(u_pos);
+        s.p = (1.0f - b.x - b.y) * tri.p0 + b.x * tri.p1 + b.y * tri.p2;
+        const Vec3 cross = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+        const float cross_len = glm::length(cross);
+        if (!(cross_len > 0.0f) || !(e.area > 0.0f)) return std::nullopt;
+        s.n = cross / cross_len;
+        const Vec3 local = sample_cosine_hemisphere(u_dir);
+        if (!(local.z > 0.0f)) return std::nullopt;
+        s.direction = Frame(s.n).to_world(local);
+        s.pdf_pos = 1.0f / e.area;
+        s.pdf_dir = cosine_hemisphere_pdf(local.z);
+        const scene::Material& mat = m_scene.materials[mesh.material];
+        const Rgb radiance =
+            material::resolve_emission(mat, m_scene.textures, interpolate_uv(mesh, e.triangle, b));
+        s.le = radiance * (e.area / s.pick);
+        // Le · cos θ / (pick · pdf_pos · cos θ/π): the cosine cancels exactly.
+        s.throughput = radiance * (kPi * e.area / s.pick);
+        return is_black(s.le) ? std::nullopt : std::optional<EmissionSample>(s);
+    }
+
+    const scene::Light& light = m_scene.lights[e.light];
+    s.pdf_pos = 1.0f;
+    s.le = light.intensity / s.pick;
+    if (e.type == EmitterType::Directional) {
+        // A disk of the bounding sphere's radius, one radius behind the centre, facing the light's
+        // direction: every ray through the scene starts on it.
+        const Frame frame(light.direction);
+        const Vec2 d = m_scene_radius * sample_concentric_disk(u_pos);
+        s.p = m_scene_center - m_scene_radius * light.direction + frame.s * d.x + frame.t * d.y;
+        s.n = light.direction;
+        s.direction = light.direction;
+        s.pdf_pos = 1.0f / (kPi * m_scene_radius * m_scene_radius);
+        s.pdf_dir = 1.0f;
+        s.throughput = light.intensity / (s.pick * s.pdf_pos);
+        return s;
+    }
+    s.p = light.position;
+    if (e.type == EmitterType::Point) {
+        s.direction = sample_uniform_sphere(u_dir);
+        s.pdf_dir = 1.0f / (4.0f * kPi);
+        s.throughput = light.intensity * (4.0f * kPi / s.pick);
+        return s;
+    }
+    // Spot: uniform in the outer cone, the KHR falloff as a weight.
+    const float cos_outer = std::cos(light.outer_cone);
+    s.n = light.direction;
+    s.direction = Frame(light.direction).to_world(sample_uniform_cone(u_dir, cos_outer));
+    s.pdf_dir = 1.0f / (2.0f * kPi * std::max(1e-7f, 1.0f - cos_outer));
+    const float falloff = spot_attenuation(light, glm::dot(light.direction, s.direction));
+    s.throughput = light.intensity * (falloff / (s.pick * s.pdf_dir));
+    return s;
+}
+
+}  // namespace mvpl::light

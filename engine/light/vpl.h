@@ -1,0 +1,43 @@
+#pragma once
+// The virtual point light record: what the sampler produces and the renderer and the CPU oracle
+// consume (DESIGN.md, "The algorithm"). The renderer knows this record, not how VPLs were chosen.
+//
+// Contribution of a VPL at x_j to a receiver x' (shading normal n', viewed from ω_o), with
+// ω = unit(x' − x_j), d = |x' − x_j|, V the visibility and d_min the clamping distance:
+//
+//   Point:       power · V · f_r(ω_o, −ω) · cos θ'                          / max(d², d_min²)
+//   Spot:        power · V · f_r(ω_o, −ω) · cos θ' · spot(axis·ω)           / max(d², d_min²)
+//   Area:        power · V · f_r(ω_o, −ω) · cos θ' · max(0, n_j·ω)          / max(d², d_min²)
+//   Surface:     power · V · f_r(ω_o, −ω) · cos θ' · f_j(ω_in, ω) · max(0, n_j·ω) / max(d², d_min²)
+//   Directional: power · V · f_r(ω_o, −axis) · cos θ'            (V from an orthographic map)
+//
+// with cos θ' = max(0, n'·(−ω)), f_r the receiver's BRDF and f_j the VPL's own closure evaluated
+// with its shading normal (seed eq. 5). `power` already holds the path throughput divided by all
+// sampling densities and by the number of light paths, so that an image is the plain sum.
+#include <cstdint>
+#include <vector>
+
+#include "engine/core/color.h"
+#include "engine/core/math.h"
+#include "engine/material/closure.h"
+
+namespace mvpl::light {
+
+enum class VplType : uint32_t { Point = 0, Spot = 1, Area = 2, Surface = 3, Directional = 4 };
+
+struct Vpl {
+    VplType type = VplType::Surface;
+    Vec3 position{0.0f};
+    // Area and Surface: geometric normal on the lit/emitting side. Spot: the axis (the way the
+    // light travels). Directional: the direction of travel.
+    Vec3 normal{0.0f, 0.0f, 1.0f};
+    Vec3 shading_normal{0.0f, 0.0f, 1.0f};  // Surface only, on the same side as `normal`
+    Vec3 wi{0.0f, 0.0f, 1.0f};  // Surface only: unit direction towards where its light came from
+    Rgb power{0.0f};
+    material::ClosureParams closure;  // Surface only
+    float cos_inner = 1.0f;           // Spot only
+    float cos_outer = 0.0f;           // Spot only
+    uint32_t path_length = 0;         // segments from the light: 0 for emitter VPLs
+};
+
+}  // namespace mvpl::light

@@ -1,0 +1,38 @@
+#pragma once
+// A surface closure: the material parameters resolved at one surface point (textures applied),
+// all that a BSDF needs. VPLs carry one; the G-buffer stores one per pixel.
+#include "engine/core/color.h"
+
+namespace mvpl::material {
+
+struct ClosureParams {
+    Rgb base_color{0.8f};
+    float metallic = 0.0f;
+    float roughness = 1.0f;  // perceptual (glTF); the GGX alpha is roughness²
+    float specular = 1.0f;   // KHR_materials_specular factor; 0 removes the dielectric layer
+    Rgb specular_color{1.0f};
+    float ior = 1.5f;
+
+    // Metallic 0 and no specular layer: a pure Lambertian, shaded by the cheap path.
+    bool is_lambertian() const { return metallic <= 0.0f && specular <= 0.0f; }
+};
+
+// The parameters limited to the ranges glTF allows (NaN becomes the lower bound): base_color,
+// metallic, roughness and specular in [0, 1]; specular_color and ior in [0, 1e6] (specular_color
+// may exceed 1 by KHR_materials_specular; the cap only keeps infinities out, since F0 saturates
+// at 1 long before). Bsdf applies this itself; resolve_closure returns it.
+inline ClosureParams clamp_to_valid_ranges(const ClosureParams& p) {
+    const auto unit = [](float x) { return x > 0.0f ? std::min(x, 1.0f) : 0.0f; };
+    const auto non_negative = [](float x) { return x > 0.0f ? std::min(x, 1e6f) : 0.0f; };
+    ClosureParams c = p;
+    c.base_color = Rgb(unit(p.base_color.r), unit(p.base_color.g), unit(p.base_color.b));
+    c.metallic = unit(p.metallic);
+    c.roughness = unit(p.roughness);
+    c.specular = unit(p.specular);
+    c.specular_color = Rgb(non_negative(p.specular_color.r), non_negative(p.specular_color.g),
+                           non_negative(p.specular_color.b));
+    c.ior = non_negative(p.ior);
+    return c;
+}
+
+}  // namespace mvpl::material

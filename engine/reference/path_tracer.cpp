@@ -1,0 +1,141 @@
+#include "engine/reference/path_tracer.h"
+
+#include <atomic>
+#include <limits>
+
+#include "engine/core/parallel.h"
+#include "engine/core/progress.h"
+#include "engine/core/sampling.h"
+#include "engine/core/timer.h"
+#include "engine/reference/shading_point.h"
+#include "engine/scene/camera.h"
+#include "engine/trace/interaction.h"
+
+namespace mvpl::reference {
+
+PathTracer::PathTracer(const scene::Scene& scene, const trace::Accel& accel,
+                       const light::LightSampler& lights)
+    : m_scene(scene), m_accel(accel), m_lights(lights) {}
+
+namespace {
+
+Vec2 next_2d(Rng& rng) {
+    const float a = rng.next_float();
+    return Vec2(a, rng.next_float());
+}
+
+}  // namespace
+
+Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth,
+                         int rr_depth) const {
+    const bool unlimited = max_depth < 0;
+    Rgb L(0.0f);
+    Rgb throughput(1.0f);
+    trace::Ray ray = camera_ray;
+    float prev_bsdf_pdf = 0.0f;  // solid-angle pdf of the BSDF sample that made `ray`
+    Vec3 prev_p(0.0f);
+    // depth = number of segments of the path up to the current vertex (Mitsuba's convention).
+    for (int depth = 1;; ++depth) {
+        const std::optional<trace::Hit> hit = m_accel.intersect(ray);
+        if (!hit) break;
+        const trace::SurfaceInteraction si = trace::make_interaction(m_scene, *hit, ray);
+        const Vec3 wo_world = -glm::normalize(ray.direction);
+
+        // Emission, weighted against the light-sampling strategy that could have found it.
+        if (m_scene.materials[si.material].is_emissive()) {
+            const Rgb le =
+                m_lights.emitted_radiance(si.mesh, si.triangle, hit->barycentric, wo_world);
+            if (!is_black(le)) {
+                float weight = 1.0f;
+                if (depth > 1) {
+                    const float light_pdf =
+                        m_lights.pdf_li(prev_p, si.mesh, si.triangle, si.p, si.ng);
+                    weight = power_heuristic(prev_bsdf_pdf, light_pdf);
+                }
+                L += throughput * le * weight;
+            }
+        }
+        if (!unlimited && depth >= max_depth) break;
+
+        const ShadingPoint sp = make_shading_point(m_scene, si);
+        const Vec3 wo = sp.frame.to_local(wo_world);
+        if (wo.z <= 0.0f) break;  // seen from below the shading surface: black
+
+        // Next-event estimation: one light sample, the path gets one more segment.
+        if (const auto ls = m_lights.sample_li(sp.p, rng.next_float(), next_2d(rng))) {
+            const Vec3 wi = sp.frame.to_local(ls->wi);
+            const Rgb f = sp.bsdf.eval(wo, wi);
+            if (!is_black(f) && glm::dot(ls->wi, sp.ng) > 0.0f) {
+                const trace::Ray shadow = std::isinf(ls->distance)
+                                              ? trace::spawn_ray(sp.p, sp.ng, ls->wi)
+                                              : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n);
+                if (!m_accel.occluded(shadow)) {
+                    const float weight =
+                        ls->is_delta ? 1.0f : power_heuristic(ls->pdf, sp.bsdf.pdf(wo, wi));
+                    L += throughput * f * std::abs(wi.z) * ls->li * (weight / ls->pdf);
+                }
+            }
+        }
+
+        const auto bs = sp.bsdf.sample(wo, next_2d(rng), rng.next_float());
+        if (!bs) break;
+        const Vec3 wi_world = sp.frame.to_world(bs->wi);
+        // A direction below the geometric surface would leak through it.
+        if (glm::dot(wi_world, sp.ng) <= 0.0f) break;
+        throughput *= bs->weight;
+        prev_bsdf_pdf = bs->pdf;
+        prev_p = sp.p;
+        ray = trace::spawn_ray(sp.p, sp.ng, wi_world);
+
+        if (depth + 1 >= rr_depth) {
+            // Russian roulette on the throughput (pbrt-v3 §14.5.1), never below a 5% survival
+            // floor so that white furnaces still terminate.
+            const float survive = std::min(0.95f, max_component(throughput));
+            if (!(survive > 0.0f) || rng.next_float() >= survive) break;
+            throughput /= survive;
+        }
+    }
+    return L;
+}
+
+Image PathTracer::render(const PathTracerOptions& options, RenderStats* stats) const {
+    Image image(options.width, options.height);
+    const uint64_t rays_before = m_accel.ray_count();
+    std::atomic<uint64_t> nonfinite{0};
+    Timer timer;
+    Progress progress("reference", options.height, options.quiet);
+    const uint64_t seed = mix_bits(options.seed);
+    parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {
+        for (int64_t y = y0; y < y1; ++y) {
+            for (int x = 0; x < options.width; ++x) {
+                const uint64_t pixel = uint64_t(y) * uint64_t(options.width) + uint64_t(x);
+                Rng rng(seed, pixel);
+                DVec3 sum(0.0);
+                for (int s = 0; s < options.spp; ++s) {
+                    const Vec2 film = Vec2(float(x), float(y)) + next_2d(rng);
+                    const scene::CameraRay cr = scene::generate_camera_ray(
+                        m_scene.camera, options.width, options.height, film);
+                    const Rgb L = radiance(trace::Ray{cr.origin, cr.direction}, rng,
+                                           options.max_depth, options.rr_depth);
+                    if (is_finite(L)) {
+                        sum += DVec3(L);
+                    } else {
+                        nonfinite.fetch_add(1, std::memory_order_relaxed);
+                    }
+                }
+                image.at(x, int(y)) = Rgb(sum / double(std::max(options.spp, 1)));
+            }
+            progress.advance();
+        }
+    });
+    progress.finish();
+    if (stats) {
+        stats->seconds = timer.seconds();
+        stats->rays = m_accel.ray_count() - rays_before;
+        stats->paths = uint64_t(options.width) * options.height * options.spp;
+        stats->nonfinite_samples = nonfinite.load();
+    }
+    return image;
+}
+
+}  // namespace mvpl::reference

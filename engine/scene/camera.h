@@ -1,0 +1,21 @@
+#pragma once
+#include "engine/core/math.h"
+#include "engine/scene/bounds.h"
+#include "engine/scene/scene.h"
+
+namespace mvpl::scene {
+
+// Primary ray through a point of the image plane; `film` is in pixels, (0,0) the top-left corner
+// of the image and (width, height) the bottom-right. The horizontal field of view follows from
+// the image aspect (glTF's aspectRatio is ignored: `--res` decides).
+struct CameraRay {
+    Vec3 origin;
+    Vec3 direction;  // unit
+};
+CameraRay generate_camera_ray(const Camera& camera, int width, int height, const Vec2& film);
+
+// A camera outside the bounds looking at their centre along -Z, far enough that the whole box
+// fits the vertical field of view.
+Camera frame_bounds(const Bounds& bounds);
+
+}  // namespace mvpl::scene

@@ -1,0 +1,200 @@
+#include "engine/scene/gltf_materials.h"
+
+#include <algorithm>
+
+#include "engine/scene/gltf_value.h"
+
+namespace mvpl::scene::gltf {
+namespace {
+
+class MaterialReader {
+public:
+    MaterialReader(const Document& doc, TextureCache& textures, int index)
+        : m_doc(doc),
+          m_textures(textures),
+          m_material(doc.model.materials[size_t(index)]),
+          m_name("material " + std::to_string(index)) {}
+
+    Material read() const;
+
+private:
+    // Reflectance-like factors above 1 would let a surface reflect more than it receives; the
+    // spec bounds them at 1, so they are clamped. Negative or non-finite values are errors.
+    float fraction(double value, const std::string& what) const {
+        return std::min(non_negative(value, what), 1.0f);
+    }
+    float non_negative(double value, const std::string& what) const {
+        if (!std::isfinite(value)) m_doc.fail(m_name + " " + what + " is not finite");
+        if (value < 0.0) m_doc.fail(m_name + " " + what + " is negative");
+        return float(value);
+    }
+    Rgb colour(const std::vector<double>& values, const std::string& what, bool clamp) const {
+        if (values.size() < 3) m_doc.fail(m_name + " " + what + " has fewer than 3 components");
+        Rgb c;
+        for (int i = 0; i < 3; ++i) {
+            c[i] =
+                clamp ? fraction(values[size_t(i)], what) : non_negative(values[size_t(i)], what);
+        }
+        return c;
+    }
+
+    TextureRef texture(int index, int tex_coord, const tinygltf::Value* transform, ColorSpace space,
+                       const std::string& slot) const;
+    TextureRef texture(const tinygltf::TextureInfo& info, ColorSpace space,
+                       const std::string& slot) const {
+        if (info.index == -1) return {};
+        const tinygltf::Value* transform =
+            find_extension(m_doc, info.extensions, "KHR_texture_transform", m_name + " " + slot);
+        return texture(info.index, info.texCoord, transform, space, slot);
+    }
+    TextureRef texture(const tinygltf::Value* info, ColorSpace space,
+                       const std::string& slot) const;
+
+    void read_extensions(Material& out) const;
+
+    const Document& m_doc;
+    TextureCache& m_textures;
+    const tinygltf::Material& m_material;
+    std::string m_name;
+};
+
+TextureRef MaterialReader::texture(int index, int tex_coord, const tinygltf::Value* transform,
+                                   ColorSpace space, const std::string& slot) const {
+    const std::string usage = m_name + " " + slot;
+    TextureRef ref;
+    ref.texture = m_textures.get(index, space, usage);
+    ref.texcoord = tex_coord;
+    if (transform) {
+        const std::string what = usage + " KHR_texture_transform";
+        const std::vector<double> offset =
+            read_numbers(m_doc, find_member(*transform, "offset"), 2, {0.0, 0.0}, what + " offset");
+        const std::vector<double> scale =
+            read_numbers(m_doc, find_member(*transform, "scale"), 2, {1.0, 1.0}, what + " scale");
+        ref.offset = Vec2(float(offset[0]), float(offset[1]));
+        ref.scale = Vec2(float(scale[0]), float(scale[1]));
+        ref.rotation =
+            float(read_number(m_doc, find_member(*transform, "rotation"), 0.0, what + " rotation"));
+        ref.texcoord =
+            read_int(m_doc, find_member(*transform, "texCoord"), ref.texcoord, what + " texCoord");
+    }
+    // Meshes carry TEXCOORD_0 and TEXCOORD_1 only.
+    if (ref.texcoord < 0 || ref.texcoord > 1) {
+        m_doc.fail(usage + " uses TEXCOORD_" + std::to_string(ref.texcoord) +
+                   "; only TEXCOORD_0 and TEXCOORD_1 are supported");
+    }
+    return ref;
+}
+
+TextureRef MaterialReader::texture(const tinygltf::Value* info, ColorSpace space,
+                                   const std::string& slot) const {
+    if (info == nullptr) return {};
+    const std::string usage = m_name + " " + slot;
+    if (!info->IsObject()) m_doc.fail(usage + " is not a JSON object");
+    const tinygltf::Value* index = find_member(*info, "index");
+    if (index == nullptr) m_doc.fail(usage + " has no texture index");
+    const tinygltf::Value* transform = nullptr;
+    if (const tinygltf::Value* extensions = find_member(*info, "extensions")) {
+        if (!extensions->IsObject()) m_doc.fail(usage + " extensions is not a JSON object");
+        transform = find_member(*extensions, "KHR_texture_transform");
+        if (transform && !transform->IsObject()) {
+            m_doc.fail(usage + " KHR_texture_transform is not a JSON object");
+        }
+    }
+    return texture(read_int(m_doc, index, -1, usage + " index"),
+                   read_int(m_doc, find_member(*info, "texCoord"), 0, usage + " texCoord"),
+                   transform, space, slot);
+}
+
+Material MaterialReader::read() const {
+    const tinygltf::PbrMetallicRoughness& pbr = m_material.pbrMetallicRoughness;
+    Material out;
+    out.name = m_material.name.empty() ? m_name : m_material.name;
+    // Alpha (baseColorFactor[3]) is not used by the renderer yet.
+    out.base_color = colour(pbr.baseColorFactor, "baseColorFactor", true);
+    out.base_color_texture = texture(pbr.baseColorTexture, ColorSpace::Srgb, "baseColorTexture");
+    out.metallic = fraction(pbr.metallicFactor, "metallicFactor");
+    out.roughness = fraction(pbr.roughnessFactor, "roughnessFactor");
+    out.metallic_roughness_texture =
+        texture(pbr.metallicRoughnessTexture, ColorSpace::Linear, "metallicRoughnessTexture");
+
+    const tinygltf::NormalTextureInfo& normal = m_material.normalTexture;
+    if (normal.index != -1) {
+        const tinygltf::Value* transform = find_extension(
+            m_doc, normal.extensions, "KHR_texture_transform", m_name + " normalTexture");
+        out.normal_texture =
+            texture(normal.index, normal.texCoord, transform, ColorSpace::Linear, "normalTexture");
+        if (!std::isfinite(normal.scale)) m_doc.fail(m_name + " normalTexture scale is not finite");
+        out.normal_scale = float(normal.scale);
+    }
+
+    out.emissive = colour(m_material.emissiveFactor, "emissiveFactor", false);
+    out.emissive_texture = texture(m_material.emissiveTexture, ColorSpace::Srgb, "emissiveTexture");
+    out.double_sided = m_material.doubleSided;
+    read_extensions(out);
+    return out;
+}
+
+void MaterialReader::read_extensions(Material& out) const {
+    const tinygltf::ExtensionMap& extensions = m_material.extensions;
+    if (const tinygltf::Value* ext =
+            find_extension(m_doc, extensions, "KHR_materials_emissive_strength", m_name)) {
+        out.emissive_strength =
+            non_negative(read_number(m_doc, find_member(*ext, "emissiveStrength"), 1.0,
+                                     m_name + " emissiveStrength"),
+                         "emissiveStrength");
+    }
+    if (const tinygltf::Value* ext =
+            find_extension(m_doc, extensions, "KHR_materials_specular", m_name)) {
+        out.specular = fraction(read_number(m_doc, find_member(*ext, "specularFactor"), 1.0,
+                                            m_name + " specularFactor"),
+                                "specularFactor");
+        out.specular_texture =
+            texture(find_member(*ext, "specularTexture"), ColorSpace::Linear, "specularTexture");
+        // specularColorFactor may exceed 1 (the spec allows it to tint above white).
+        out.specular_color = colour(read_numbers(m_doc, find_member(*ext, "specularColorFactor"), 3,
+                                                 {1.0, 1.0, 1.0}, m_name + " specularColorFactor"),
+                                    "specularColorFactor", false);
+        out.specular_color_texture = texture(find_member(*ext, "specularColorTexture"),
+                                             ColorSpace::Srgb, "specularColorTexture");
+    }
+    if (const tinygltf::Value* ext =
+            find_extension(m_doc, extensions, "KHR_materials_ior", m_name)) {
+        const double ior = read_number(m_doc, find_member(*ext, "ior"), 1.5, m_name + " ior");
+        // 0 is allowed by the extension's schema (a limit case with total Fresnel reflection).
+        if (!(ior >= 1.0 || ior == 0.0)) {
+            m_doc.fail(m_name + " ior " + number_text(ior) + " is below 1");
+        }
+        out.ior = float(ior);
+    }
+}
+
+}  // namespace
+
+MaterialTable::MaterialTable(const Document& doc, Scene& scene, TextureCache& textures)
+    : m_doc(doc), m_scene(scene) {
+    const size_t count = doc.model.materials.size();
+    m_scene.materials.reserve(count + 1);
+    for (size_t i = 0; i < count; ++i) {
+        m_scene.materials.push_back(MaterialReader(doc, textures, int(i)).read());
+    }
+}
+
+int MaterialTable::material_for(int gltf_index, const std::string& usage) {
+    if (gltf_index == -1) {
+        if (m_default < 0) {
+            Material fallback;  // glTF's default material: white, fully metallic, fully rough
+            fallback.name = "default";
+            m_scene.materials.push_back(fallback);
+            m_default = int(m_scene.materials.size()) - 1;
+        }
+        return m_default;
+    }
+    const size_t count = m_doc.model.materials.size();
+    if (gltf_index < 0 || size_t(gltf_index) >= count) {
+        m_doc.fail(usage + " refers to material " + std::to_string(gltf_index) +
+                   ", but the file has " + std::to_string(count) + " materials");
+    }
+    return gltf_index;
+}
+
+}  // namespace mvpl::scene::gltf

@@ -1,0 +1,122 @@
+#include "engine/scene/gltf_punctual.h"
+
+#include <numbers>
+#include <string>
+
+#include "engine/scene/gltf_value.h"
+
+namespace mvpl::scene::gltf {
+namespace {
+
+// Slack for π/2 written out in decimal.
+constexpr double kAngleSlack = 1e-6;
+
+DVec3 unit(const DVec3& v, bool& ok) {
+    const double length = glm::length(v);
+    ok = length > 0.0 && std::isfinite(length);
+    return ok ? v / length : v;
+}
+
+double non_negative(const Document& doc, double value, const std::string& what) {
+    if (!std::isfinite(value) || value < 0.0) {
+        doc.fail(what + " " + number_text(value) + " is not a finite non-negative number");
+    }
+    return value;
+}
+
+}  // namespace
+
+std::optional<Light> node_light(const Document& doc, int node, const DMat4& world) {
+    const tinygltf::Node& gltf_node = doc.model.nodes[size_t(node)];
+    const std::string node_name = "node " + std::to_string(node);
+    const tinygltf::Value* ext =
+        find_extension(doc, gltf_node.extensions, "KHR_lights_punctual", node_name);
+    if (ext == nullptr) return std::nullopt;
+    const tinygltf::Value* light_member = find_member(*ext, "light");
+    if (light_member == nullptr) doc.fail(node_name + " KHR_lights_punctual has no light index");
+    const int index = read_int(doc, light_member, -1, node_name + " KHR_lights_punctual light");
+    const auto& lights = doc.model.lights;
+    if (index < 0 || size_t(index) >= lights.size()) {
+        doc.fail(node_name + " refers to light " + std::to_string(index) + ", but the file has " +
+                 std::to_string(lights.size()) + " lights");
+    }
+    const tinygltf::Light& light = lights[size_t(index)];
+    const std::string name = "light " + std::to_string(index);
+
+    Light out;
+    out.name = light.name.empty() ? name : light.name;
+    Rgb colour(1.0f);
+    if (!light.color.empty()) {
+        if (light.color.size() != 3) doc.fail(name + " color must have 3 components");
+        for (int i = 0; i < 3; ++i)
+            colour[i] = float(non_negative(doc, light.color[size_t(i)], name + " color"));
+    }
+    // Photometric intensity taken 1:1 as radiometric (DESIGN.md).
+    out.intensity = colour * float(non_negative(doc, light.intensity, name + " intensity"));
+
+    if (light.type == "point") {
+        out.type = LightType::Point;
+    } else if (light.type == "directional") {
+        out.type = LightType::Directional;
+    } else if (light.type == "spot") {
+        out.type = LightType::Spot;
+        const double inner = light.spot.innerConeAngle;
+        const double outer = light.spot.outerConeAngle;
+        const bool valid = std::isfinite(inner) && std::isfinite(outer) && inner >= 0.0 &&
+                           inner < outer && outer <= std::numbers::pi / 2 + kAngleSlack;
+        if (!valid) {
+            doc.fail(name + " has invalid cone angles (inner " + number_text(inner) + ", outer " +
+                     number_text(outer) + "); need 0 <= inner < outer <= pi/2");
+        }
+        out.inner_cone = float(inner);
+        out.outer_cone = float(outer);
+    } else {
+        doc.fail(name + " has unknown type '" + light.type + "'");
+    }
+
+    out.position = Vec3(DVec3(world[3]));
+    bool ok = false;
+    out.direction = Vec3(unit(-DVec3(world[2]), ok));  // the node's -Z
+    if (!ok) doc.fail(node_name + " orients " + name + " with a degenerate transform");
+    return out;
+}
+
+std::optional<Camera> node_camera(const Document& doc, int node, const DMat4& world) {
+    const tinygltf::Node& gltf_node = doc.model.nodes[size_t(node)];
+    if (gltf_node.camera == -1) return std::nullopt;
+    const std::string node_name = "node " + std::to_string(node);
+    const auto& cameras = doc.model.cameras;
+    if (gltf_node.camera < 0 || size_t(gltf_node.camera) >= cameras.size()) {
+        doc.fail(node_name + " refers to camera " + std::to_string(gltf_node.camera) +
+                 ", but the file has " + std::to_string(cameras.size()) + " cameras");
+    }
+    const tinygltf::Camera& camera = cameras[size_t(gltf_node.camera)];
+    if (camera.type != "perspective") return std::nullopt;
+    const std::string name = "camera " + std::to_string(gltf_node.camera);
+    const double yfov = camera.perspective.yfov;
+    const double znear = camera.perspective.znear;
+    if (!(yfov > 0.0 && yfov < std::numbers::pi)) {
+        doc.fail(name + " has an invalid yfov " + number_text(yfov));
+    }
+    if (!(znear > 0.0 && std::isfinite(znear))) {
+        doc.fail(name + " has an invalid znear " + number_text(znear));
+    }
+
+    // The camera frame is rigid: keep the viewing direction (-Z) exactly, then the up vector
+    // (Y) as far as it is orthogonal to it; a mirroring node cannot mirror the image.
+    bool z_ok = false;
+    bool y_ok = false;
+    const DVec3 z = unit(DVec3(world[2]), z_ok);
+    const DVec3 y = unit(DVec3(world[1]) - glm::dot(DVec3(world[1]), z) * z, y_ok);
+    if (!z_ok || !y_ok) doc.fail(node_name + " places " + name + " with a degenerate transform");
+    const DVec3 x = glm::cross(y, z);
+
+    Camera out;
+    out.camera_to_world = Mat4(Vec4(Vec3(x), 0.0f), Vec4(Vec3(y), 0.0f), Vec4(Vec3(z), 0.0f),
+                               Vec4(Vec3(DVec3(world[3])), 1.0f));
+    out.yfov = float(yfov);
+    out.znear = float(znear);
+    return out;
+}
+
+}  // namespace mvpl::scene::gltf

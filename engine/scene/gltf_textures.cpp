@@ -1,0 +1,178 @@
+#include "engine/scene/gltf_textures.h"
+
+#include <stb_image.h>
+
+#include <array>
+#include <climits>
+#include <memory>
+
+#include "engine/core/image.h"
+
+namespace mvpl::scene::gltf {
+namespace {
+
+// 8192² texels per image and eight such in all: Texture stores 16 bytes a texel, so this bounds
+// what an image header claiming enormous dimensions can make us allocate.
+constexpr uint64_t kMaxTexels = uint64_t(1) << 26;
+constexpr uint64_t kMaxTotalTexels = uint64_t(1) << 29;
+
+constexpr int kWrapRepeat = 10497;
+constexpr int kWrapClampToEdge = 33071;
+constexpr int kWrapMirroredRepeat = 33648;
+constexpr int kFilterNearest = 9728;
+constexpr int kFilterLinear = 9729;
+
+struct StbiFree {
+    void operator()(void* p) const { stbi_image_free(p); }
+};
+
+// stb_image quotes raw chunk tags from the file in some reasons.
+std::string stbi_reason() {
+    const char* reason = stbi_failure_reason();
+    std::string text = reason ? reason : "unknown reason";
+    for (char& c : text) {
+        if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7E) c = '?';
+    }
+    return text;
+}
+
+// Value of every possible 8- or 16-bit code, decoded to linear when the texture is a colour.
+std::vector<float> code_table(int bits, ColorSpace space) {
+    const size_t codes = size_t(1) << bits;
+    const float max_code = float(codes - 1);
+    std::vector<float> table(codes);
+    for (size_t i = 0; i < codes; ++i) {
+        const float v = float(i) / max_code;
+        table[i] = space == ColorSpace::Srgb ? srgb_to_linear(v) : v;
+    }
+    return table;
+}
+
+}  // namespace
+
+int TextureCache::get(int index, ColorSpace space, const std::string& usage) {
+    const size_t count = m_doc.model.textures.size();
+    if (index < 0 || size_t(index) >= count) {
+        m_doc.fail(usage + " refers to texture " + std::to_string(index) + ", but the file has " +
+                   std::to_string(count) + " textures");
+    }
+    const auto key = std::make_pair(index, space);
+    const auto it = m_entries.find(key);
+    if (it != m_entries.end()) return it->second;
+    m_textures.push_back(decode(index, space));
+    const int entry = int(m_textures.size()) - 1;
+    m_entries.emplace(key, entry);
+    return entry;
+}
+
+Texture TextureCache::decode(int index, ColorSpace space) {
+    const tinygltf::Model& model = m_doc.model;
+    const tinygltf::Texture& gltf_texture = model.textures[size_t(index)];
+    const std::string texture_name = "texture " + std::to_string(index);
+    Texture texture;
+
+    if (gltf_texture.sampler != -1) {
+        if (gltf_texture.sampler < 0 || size_t(gltf_texture.sampler) >= model.samplers.size()) {
+            m_doc.fail(texture_name + " refers to sampler " + std::to_string(gltf_texture.sampler) +
+                       ", but the file has " + std::to_string(model.samplers.size()) + " samplers");
+        }
+        const tinygltf::Sampler& sampler = model.samplers[size_t(gltf_texture.sampler)];
+        const std::string sampler_name = "sampler " + std::to_string(gltf_texture.sampler);
+        auto wrap = [&](int mode, const char* axis) {
+            switch (mode) {
+                case kWrapRepeat:
+                    return Wrap::Repeat;
+                case kWrapClampToEdge:
+                    return Wrap::ClampToEdge;
+                case kWrapMirroredRepeat:
+                    return Wrap::MirroredRepeat;
+                default:
+                    m_doc.fail(sampler_name + " has an invalid " + axis + " " +
+                               std::to_string(mode));
+            }
+        };
+        texture.wrap_s = wrap(sampler.wrapS, "wrapS");
+        texture.wrap_t = wrap(sampler.wrapT, "wrapT");
+        if (sampler.magFilter == kFilterNearest) {
+            texture.filter = Filter::Nearest;
+        } else if (sampler.magFilter != kFilterLinear && sampler.magFilter != -1) {
+            m_doc.fail(sampler_name + " has an invalid magFilter " +
+                       std::to_string(sampler.magFilter));
+        }
+    }
+
+    const int source = gltf_texture.source;
+    if (source == -1) m_doc.fail(texture_name + " has no image source");
+    if (source < 0 || size_t(source) >= model.images.size()) {
+        m_doc.fail(texture_name + " refers to image " + std::to_string(source) +
+                   ", but the file has " + std::to_string(model.images.size()) + " images");
+    }
+    const tinygltf::Image& image = model.images[size_t(source)];
+    const std::string image_name = "image " + std::to_string(source);
+    if (image.image.empty()) {
+        // tinygltf keeps going (with a warning) when an external image cannot be read.
+        if (!image.uri.empty()) m_doc.fail(image_name + " file '" + image.uri + "' cannot be read");
+        m_doc.fail(image_name + " has no data");
+    }
+    if (image.image.size() > size_t(INT_MAX)) m_doc.fail(image_name + " is larger than 2 GiB");
+    const unsigned char* bytes = image.image.data();
+    const int length = int(image.image.size());
+
+    int width = 0;
+    int height = 0;
+    int channels = 0;
+    if (!stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
+        m_doc.fail(image_name + " cannot be decoded: " + stbi_reason());
+    }
+    const uint64_t texels = uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0));
+    if (width <= 0 || height <= 0 || texels > kMaxTexels) {
+        m_doc.fail(image_name + " is " + std::to_string(width) + "x" + std::to_string(height) +
+                   " texels; at most " + std::to_string(kMaxTexels) + " are allowed");
+    }
+    if (m_total_texels + texels > kMaxTotalTexels) {
+        m_doc.fail("the textures exceed " + std::to_string(kMaxTotalTexels) + " texels in all");
+    }
+
+    const bool sixteen_bits = stbi_is_16_bit_from_memory(bytes, length) != 0;
+    int decoded_width = 0;
+    int decoded_height = 0;
+    std::unique_ptr<void, StbiFree> pixels(
+        sixteen_bits ? static_cast<void*>(stbi_load_16_from_memory(bytes, length, &decoded_width,
+                                                                   &decoded_height, &channels, 0))
+                     : static_cast<void*>(stbi_load_from_memory(bytes, length, &decoded_width,
+                                                                &decoded_height, &channels, 0)));
+    if (!pixels) m_doc.fail(image_name + " cannot be decoded: " + stbi_reason());
+    if (decoded_width != width || decoded_height != height || channels < 1 || channels > 4) {
+        m_doc.fail(image_name + " decodes inconsistently with its header");
+    }
+    m_total_texels += texels;
+
+    const std::vector<float> colour = code_table(sixteen_bits ? 16 : 8, space);
+    const std::vector<float> linear = space == ColorSpace::Linear
+                                          ? colour
+                                          : code_table(sixteen_bits ? 16 : 8, ColorSpace::Linear);
+    auto code = [&](size_t i) -> size_t {
+        return sixteen_bits ? static_cast<const uint16_t*>(pixels.get())[i]
+                            : static_cast<const uint8_t*>(pixels.get())[i];
+    };
+    texture.name = !image.name.empty()                                      ? image.name
+                   : !image.uri.empty() && image.uri.rfind("data:", 0) != 0 ? image.uri
+                                                                            : texture_name;
+    texture.width = width;
+    texture.height = height;
+    texture.texels.resize(size_t(texels));
+    for (size_t t = 0; t < texture.texels.size(); ++t) {
+        const size_t base = t * size_t(channels);
+        Vec4& out = texture.texels[t];
+        // Grey fills R, G and B; a missing alpha is opaque. Alpha is never sRGB-encoded.
+        if (channels <= 2) {
+            out = Vec4(Vec3(colour[code(base)]), channels == 2 ? linear[code(base + 1)] : 1.0f);
+        } else {
+            out = Vec4(colour[code(base)], colour[code(base + 1)], colour[code(base + 2)],
+                       channels == 4 ? linear[code(base + 3)] : 1.0f);
+        }
+    }
+    return texture;
+}
+
+}  // namespace mvpl::scene::gltf

@@ -1,0 +1,62 @@
+#include "engine/scene/gltf_value.h"
+
+#include <climits>
+#include <cmath>
+#include <sstream>
+
+namespace mvpl::scene::gltf {
+
+std::string number_text(double value) {
+    std::ostringstream out;
+    out << value;
+    return out.str();
+}
+
+const tinygltf::Value* find_extension(const Document& doc, const tinygltf::ExtensionMap& extensions,
+                                      const char* name, const std::string& owner) {
+    const auto it = extensions.find(name);
+    if (it == extensions.end()) return nullptr;
+    if (!it->second.IsObject()) doc.fail(owner + " has a " + name + " that is not a JSON object");
+    return &it->second;
+}
+
+const tinygltf::Value* find_member(const tinygltf::Value& object, const char* key) {
+    if (!object.IsObject() || !object.Has(key)) return nullptr;
+    return &object.Get(key);
+}
+
+double read_number(const Document& doc, const tinygltf::Value* value, double fallback,
+                   const std::string& what) {
+    if (value == nullptr) return fallback;
+    if (!value->IsNumber()) doc.fail(what + " is not a number");
+    const double number = value->GetNumberAsDouble();
+    if (!std::isfinite(number)) doc.fail(what + " is not finite");
+    return number;
+}
+
+int read_int(const Document& doc, const tinygltf::Value* value, int fallback,
+             const std::string& what) {
+    if (value == nullptr) return fallback;
+    if (value->IsInt()) return value->GetNumberAsInt();
+    // tinygltf stores integers beyond int as reals; an integral real within range is fine.
+    const double number = value->IsNumber() ? value->GetNumberAsDouble() : 0.5;
+    if (!(number == std::floor(number) && number >= INT_MIN && number <= INT_MAX)) {
+        doc.fail(what + " is not an integer");
+    }
+    return int(number);
+}
+
+std::vector<double> read_numbers(const Document& doc, const tinygltf::Value* value, size_t size,
+                                 const std::vector<double>& fallback, const std::string& what) {
+    if (value == nullptr) return fallback;
+    if (!value->IsArray() || value->ArrayLen() != size) {
+        doc.fail(what + " must be an array of " + std::to_string(size) + " numbers");
+    }
+    std::vector<double> numbers(size);
+    for (size_t i = 0; i < size; ++i) {
+        numbers[i] = read_number(doc, &value->Get(int(i)), 0.0, what);
+    }
+    return numbers;
+}
+
+}  // namespace mvpl::scene::gltf

@@ -1,0 +1,94 @@
+#pragma once
+// The scene model every subsystem reads: world-space triangle meshes, glTF metallic-roughness
+// materials, punctual lights and one camera. Emissive triangles are the area lights; they are
+// found from the materials (Material::emission), not listed separately.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "engine/core/color.h"
+#include "engine/core/math.h"
+#include "engine/scene/bounds.h"
+#include "engine/scene/texture.h"
+
+namespace mvpl::scene {
+
+struct Material {
+    std::string name;
+    // glTF pbrMetallicRoughness; the texture channels are multiplied into the factors.
+    Rgb base_color{1.0f};
+    TextureRef base_color_texture;
+    float metallic = 1.0f;
+    float roughness = 1.0f;
+    TextureRef metallic_roughness_texture;  // G = roughness, B = metallic
+    TextureRef normal_texture;
+    float normal_scale = 1.0f;
+    // Emitted radiance = emissive · emissive_strength (KHR_materials_emissive_strength) · texture.
+    Rgb emissive{0.0f};
+    float emissive_strength = 1.0f;
+    TextureRef emissive_texture;
+    // KHR_materials_specular: specular = 0 removes the dielectric layer (pure Lambertian).
+    float specular = 1.0f;
+    TextureRef specular_texture;  // A channel
+    Rgb specular_color{1.0f};
+    TextureRef specular_color_texture;  // RGB, sRGB-decoded
+    // KHR_materials_ior.
+    float ior = 1.5f;
+    bool double_sided = false;
+
+    Rgb emission() const { return emissive * emissive_strength; }
+    bool is_emissive() const { return max_component(emission()) > 0.0f; }
+};
+
+// One glTF primitive in world space (node transforms applied). Every vertex has a normal: the
+// loader generates flat normals, as glTF requires, where the file has none.
+struct Mesh {
+    std::string name;
+    std::vector<Vec3> positions;
+    std::vector<Vec3> normals;
+    std::vector<Vec2> uv0;          // empty when the primitive has no TEXCOORD_0
+    std::vector<Vec2> uv1;          // empty when the primitive has no TEXCOORD_1
+    std::vector<Vec4> tangents;     // empty unless the file has TANGENT (xyz, w = handedness)
+    std::vector<uint32_t> indices;  // three per triangle
+    int material = 0;
+
+    size_t triangle_count() const { return indices.size() / 3; }
+};
+
+enum class LightType { Point, Spot, Directional };
+
+// KHR_lights_punctual, photometric values taken 1:1 as radiometric: intensity is W/sr for point
+// and spot lights (colour · intensity) and W/m² of irradiance for directional lights.
+struct Light {
+    std::string name;
+    LightType type = LightType::Point;
+    Rgb intensity{0.0f};
+    Vec3 position{0.0f};
+    Vec3 direction{0.0f, 0.0f, -1.0f};  // unit, the way the light travels (the node's -Z)
+    float inner_cone = 0.0f;            // radians, spot only
+    float outer_cone = kPi / 4.0f;      // radians, spot only
+};
+
+// Perspective pinhole camera looking down its local -Z with +Y up (glTF convention).
+struct Camera {
+    Mat4 camera_to_world{1.0f};  // rigid: rotation and translation only
+    float yfov = 0.6911f;        // radians, vertical
+    float znear = 0.01f;
+
+    Vec3 position() const { return Vec3(camera_to_world[3]); }
+};
+
+struct Scene {
+    std::string path;
+    std::vector<Mesh> meshes;
+    std::vector<Material> materials;
+    std::vector<Texture> textures;
+    std::vector<Light> lights;
+    Camera camera;
+    bool has_camera = false;  // false: the camera was made to frame the scene bounds
+
+    Bounds bounds() const;
+    size_t triangle_count() const;
+};
+
+}  // namespace mvpl::scene

@@ -1,0 +1,112 @@
+#include "engine/trace/accel.h"
+
+#include <embree3/rtcore.h>
+
+#include <atomic>
+#include <stdexcept>
+#include <string>
+
+namespace mvpl::trace {
+
+struct Accel::Impl {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    mutable std::atomic<uint64_t> rays{0};
+    std::string error;
+
+    ~Impl() {
+        if (scene) rtcReleaseScene(scene);
+        if (device) rtcReleaseDevice(device);
+    }
+};
+
+// Embree reports allocation failures and API misuse through this callback; exceptions must not
+// cross its C frames, so the message is kept and thrown after the build.
+static void embree_error(void* user, RTCError code, const char* message) {
+    auto* first = static_cast<std::string*>(user);
+    if (first->empty())
+        first->assign("Embree error " + std::to_string(int(code)) + ": " +
+                      (message ? message : ""));
+}
+
+Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()) {
+    m_impl->device = rtcNewDevice(nullptr);
+    if (!m_impl->device) throw std::runtime_error("cannot create an Embree device");
+    rtcSetDeviceErrorFunction(m_impl->device, embree_error, &m_impl->error);
+    m_impl->scene = rtcNewScene(m_impl->device);
+    // Robust mode: watertight traversal, so that rays through shared edges do not leak light.
+    rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
+    for (size_t id = 0; id < scene.meshes.size(); ++id) {
+        const scene::Mesh& mesh = scene.meshes[id];
+        RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* vertices = static_cast<float*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                    sizeof(float) * 3, mesh.positions.size()));
+        for (size_t i = 0; i < mesh.positions.size(); ++i) {
+            vertices[3 * i + 0] = mesh.positions[i].x;
+            vertices[3 * i + 1] = mesh.positions[i].y;
+            vertices[3 * i + 2] = mesh.positions[i].z;
+        }
+        auto* indices = static_cast<uint32_t*>(
+            rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                    sizeof(uint32_t) * 3, mesh.triangle_count()));
+        std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), indices);
+        rtcCommitGeometry(geom);
+        rtcAttachGeometryByID(m_impl->scene, geom, static_cast<unsigned>(id));
+        rtcReleaseGeometry(geom);
+    }
+    rtcCommitScene(m_impl->scene);
+    if (!m_impl->error.empty()) throw std::runtime_error(m_impl->error);
+}
+
+Accel::~Accel() = default;
+
+static RTCRay to_embree(const Ray& ray) {
+    RTCRay r{};
+    r.org_x = ray.origin.x;
+    r.org_y = ray.origin.y;
+    r.org_z = ray.origin.z;
+    r.dir_x = ray.direction.x;
+    r.dir_y = ray.direction.y;
+    r.dir_z = ray.direction.z;
+    r.tnear = 0.0f;
+    r.tfar = ray.tmax;
+    r.mask = 0xFFFFFFFFu;
+    r.flags = 0;
+    return r;
+}
+
+std::optional<Hit> Accel::intersect(const Ray& ray) const {
+    m_impl->rays.fetch_add(1, std::memory_order_relaxed);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRayHit rayhit{};
+    rayhit.ray = to_embree(ray);
+    rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+    rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect1(m_impl->scene, &context, &rayhit);
+    if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
+    Hit hit;
+    hit.t = rayhit.ray.tfar;
+    hit.mesh = static_cast<int>(rayhit.hit.geomID);
+    hit.triangle = static_cast<int>(rayhit.hit.primID);
+    hit.barycentric = Vec2(rayhit.hit.u, rayhit.hit.v);
+    return hit;
+}
+
+bool Accel::occluded(const Ray& ray) const {
+    m_impl->rays.fetch_add(1, std::memory_order_relaxed);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
+    RTCRay r = to_embree(ray);
+    rtcOccluded1(m_impl->scene, &context, &r);
+    // Embree marks an occluded ray by setting tfar to −∞.
+    return r.tfar < 0.0f;
+}
+
+uint64_t Accel::ray_count() const {
+    return m_impl->rays.load(std::memory_order_relaxed);
+}
+
+}  // namespace mvpl::trace

@@ -1,0 +1,38 @@
+#pragma once
+// Embree 3 BVH over every triangle of a scene. Embree's headers stay in accel.cpp.
+#include <cstdint>
+#include <memory>
+#include <optional>
+
+#include "engine/core/math.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/ray.h"
+
+namespace mvpl::trace {
+
+struct Hit {
+    float t = 0.0f;
+    int mesh = -1;
+    int triangle = -1;
+    Vec2 barycentric{0.0f};  // (b1, b2): p = (1 − b1 − b2)·p0 + b1·p1 + b2·p2
+};
+
+class Accel {
+public:
+    explicit Accel(const scene::Scene& scene);
+    ~Accel();
+    Accel(const Accel&) = delete;
+    Accel& operator=(const Accel&) = delete;
+
+    std::optional<Hit> intersect(const Ray& ray) const;
+    bool occluded(const Ray& ray) const;
+
+    // Rays traced so far (closest-hit and shadow), for Mrays/s reports.
+    uint64_t ray_count() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace mvpl::trace

@@ -1,0 +1,18 @@
+#pragma once
+#include <string>
+
+namespace mvpl::test {
+
+struct CommandResult {
+    int exit_code = -1;
+    std::string out;
+    std::string err;
+};
+
+// Runs `mvpl ARGS` (the binary under test) through the shell with stdin closed; captures both
+// output streams.
+CommandResult run_mvpl(const std::string& args);
+// Single-quotes a string for the shell.
+std::string shell_quote(const std::string& s);
+
+}  // namespace mvpl::test

@@ -1,0 +1,109 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "engine/core/image.h"
+#include "tests/cli/run_command.h"
+
+namespace mvpl {
+namespace {
+
+using test::run_mvpl;
+using test::shell_quote;
+
+const std::string kCbox = MVPL_ASSETS_DIR "/cornell-box/cbox.gltf";
+
+std::string temp_file(const std::string& name) {
+    return (std::filesystem::temp_directory_path() /
+            ("mvpl_cli_" + std::to_string(::getpid()) + "_" + name))
+        .string();
+}
+
+// A usage or input error is exit code 2 and exactly one line `mvpl: error: …` on stderr.
+void expect_one_line_error(const test::CommandResult& r, const std::string& must_contain) {
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_EQ(r.err.rfind("mvpl: error: ", 0), 0u) << r.err;
+    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
+}
+
+TEST(Cli, UsageErrors) {
+    EXPECT_EQ(run_mvpl("").exit_code, 2);
+    expect_one_line_error(run_mvpl("frobnicate"), "unknown command");
+    expect_one_line_error(run_mvpl("reference"), "missing SCENE");
+    expect_one_line_error(run_mvpl("reference " + kCbox + " --bogus"), "--bogus");
+    expect_one_line_error(run_mvpl("reference " + kCbox + " --res 0x5"), "--res");
+    expect_one_line_error(run_mvpl("reference " + kCbox + " --res 12"), "--res");
+    expect_one_line_error(run_mvpl("reference " + kCbox + " --spp abc"), "--spp");
+    expect_one_line_error(run_mvpl("reference " + kCbox + " --spp"), "needs a value");
+    expect_one_line_error(run_mvpl("reference " + kCbox + " -o out.bmp"), "out.bmp");
+    expect_one_line_error(run_mvpl("reference /nonexistent/scene.gltf"), "/nonexistent/scene.gltf");
+    const auto help = run_mvpl("reference --help");
+    EXPECT_EQ(help.exit_code, 0);
+    EXPECT_NE(help.out.find("--max-depth"), std::string::npos);
+}
+
+TEST(Cli, ReferenceWritesExrAndPng) {
+    const std::string exr = temp_file("cbox.exr"), png = temp_file("cbox.png");
+    const auto r =
+        run_mvpl("reference " + kCbox + " --spp 2 --res 24x16 --max-depth 3 --quiet -o " +
+                 shell_quote(exr) + " -o " + shell_quote(png));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_TRUE(r.out.empty());  // --quiet
+    EXPECT_TRUE(r.err.empty());
+    const Image image = read_exr(exr);
+    EXPECT_EQ(image.width(), 24);
+    EXPECT_EQ(image.height(), 16);
+    EXPECT_GT(image.mean().r, 0.0f);
+    EXPECT_GT(std::filesystem::file_size(png), 0u);
+
+    // The same seed gives the same image; compare says so.
+    const std::string again = temp_file("cbox2.exr");
+    ASSERT_EQ(run_mvpl("reference " + kCbox + " --spp 2 --res 24x16 --max-depth 3 --quiet -o " +
+                       shell_quote(again))
+                  .exit_code,
+              0);
+    const auto cmp = run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr));
+    ASSERT_EQ(cmp.exit_code, 0) << cmp.err;
+    EXPECT_NE(cmp.out.find("relMSE 0\n"), std::string::npos) << cmp.out;
+    expect_one_line_error(
+        run_mvpl("compare " + shell_quote(exr) + " " +
+                 shell_quote(MVPL_ASSETS_DIR "/cornell-box/ref-cbox-d6-4096.exr")),
+        "differs");
+    for (const auto& f : {exr, png, again})
+        std::filesystem::remove(f);
+}
+
+TEST(Cli, SummaryLineWithoutQuiet) {
+    const std::string exr = temp_file("summary.exr");
+    const auto r = run_mvpl("reference " + kCbox + " --spp 1 --res 8x8 -o " + shell_quote(exr));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("Mrays/s"), std::string::npos) << r.out;
+    // Not a terminal: no progress bar.
+    EXPECT_TRUE(r.err.empty()) << r.err;
+    std::filesystem::remove(exr);
+}
+
+// Every file of the bad-input corpus: exit code 2 and one line naming the file, never a crash.
+TEST(Cli, BadInputCorpus) {
+    const std::filesystem::path dir = MVPL_TEST_DATA_DIR "/bad";
+    ASSERT_TRUE(std::filesystem::is_directory(dir));
+    int files = 0;
+    for (const auto& entry : std::filesystem::directory_iterator(dir)) {
+        if (!entry.is_regular_file()) continue;
+        const std::string ext = entry.path().extension().string();
+        if (ext == ".bin" || ext == ".png" || ext == ".md" || ext == ".py") continue;  // companions
+        ++files;
+        const std::string path = entry.path().string();
+        SCOPED_TRACE(path);
+        const auto r =
+            run_mvpl("reference " + shell_quote(path) + " --spp 1 --res 4x4 --quiet -o " +
+                     shell_quote(temp_file("bad.exr")));
+        expect_one_line_error(r, path);
+    }
+    EXPECT_GE(files, 20);
+}
+
+}  // namespace
+}  // namespace mvpl

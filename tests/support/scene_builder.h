@@ -1,0 +1,21 @@
+#pragma once
+// Programmatic scenes for tests whose answer is known analytically.
+#include "engine/scene/scene.h"
+
+namespace mvpl::test {
+
+// A Lambertian material (metallic 0, no specular layer).
+scene::Material diffuse_material(const Rgb& albedo);
+// A quad p, p+a, p+a+b, p+b; its front face (and normal) is along cross(a, b).
+scene::Mesh make_quad(const Vec3& p, const Vec3& a, const Vec3& b, int material);
+// Icosphere of `subdivisions` levels (20·4^n triangles) with vertices on the sphere; normals
+// point inwards when `inward`, and so do the front faces.
+scene::Mesh make_icosphere(const Vec3& center, float radius, int subdivisions, bool inward,
+                           int material);
+// A camera at `eye` looking at `target` with +Y up.
+scene::Camera look_at(const Vec3& eye, const Vec3& target, float yfov);
+// Scales every length of the scene by s (geometry, lights, camera). Radiance is scale-invariant;
+// point and spot intensities are multiplied by s² so that irradiance stays the same.
+void scale_scene(scene::Scene& scene, float s);
+
+}  // namespace mvpl::test

@@ -1,0 +1,48 @@
+#pragma once
+// A small declarative command-line parser: each command binds its options to variables, then
+// parse() fills them or throws UsageError with one line naming the offending argument.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace mvpl::cli {
+
+class ArgParser {
+public:
+    ArgParser(std::string command, std::string summary);
+
+    void add_flag(const std::string& name, bool* target, const std::string& help);
+    void add_int(const std::string& name, int* target, const std::string& help);
+    void add_uint64(const std::string& name, uint64_t* target, const std::string& help);
+    void add_float(const std::string& name, float* target, const std::string& help);
+    void add_string(const std::string& name, std::string* target, const std::string& help);
+    // Repeatable: each occurrence appends.
+    void add_strings(const std::string& name, std::vector<std::string>* target,
+                     const std::string& help);
+    // "WxH", e.g. 512x512.
+    void add_resolution(const std::string& name, int* width, int* height, const std::string& help);
+    // Positional arguments, in order; all required.
+    void add_positional(const std::string& name, std::string* target, const std::string& help);
+
+    // Returns false when --help was given (usage already printed to stdout).
+    bool parse(const std::vector<std::string>& args);
+    std::string usage() const;
+
+private:
+    struct Option {
+        std::string name;
+        std::string help;
+        bool takes_value = true;
+        std::function<void(const std::string&)> apply;
+    };
+    const Option* find(const std::string& name) const;
+
+    std::string m_command;
+    std::string m_summary;
+    std::vector<Option> m_options;
+    std::vector<std::pair<std::string, std::string*>> m_positionals;
+    std::vector<std::string> m_positional_help;
+};
+
+}  // namespace mvpl::cli

@@ -1,0 +1,15 @@
+#pragma once
+// The `mvpl` subcommands. Each takes the arguments after its name and returns the exit code;
+// errors are thrown (UsageError/InputError → exit 2, anything else → exit 1) and reported by main.
+#include <string>
+#include <vector>
+
+namespace mvpl::cli {
+
+using Args = std::vector<std::string>;
+
+int run_reference(const Args& args);
+int run_compare(const Args& args);
+int run_info(const Args& args);
+
+}  // namespace mvpl::cli

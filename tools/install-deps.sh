@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# Installs exactly the Debian 12 packages that mvpl's build and tests need. Idempotent: does
+# nothing when everything is already installed. Nothing else is downloaded at build or run time.
+set -euo pipefail
+
+packages=(
+  # toolchain
+  cmake g++ make pkg-config clang-format
+  # engine: Embree (brings oneTBB), glTF, EXR, PNG, maths
+  libembree-dev libtbb-dev libtinygltf-dev nlohmann-json3-dev libopenexr-dev libstb-dev libglm-dev
+  # tests
+  libgtest-dev libgmock-dev
+  # GPU renderer (Vulkan on Mesa lavapipe, run-time GLSL compilation, validation in tests)
+  libvulkan-dev mesa-vulkan-drivers glslang-dev vulkan-validationlayers
+)
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -eq 0 ]; then
+  exit 0
+fi
+
+sudo=""
+if [ "$(id -u)" -ne 0 ]; then sudo="sudo"; fi
+echo "install-deps: installing ${missing[*]}" >&2
+$sudo apt-get update -qq
+DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
