@@ -13,6 +13,7 @@ constexpr const char* kUsage =
     "usage: mvpl COMMAND [options]\n"
     "\n"
     "commands:\n"
+    "  render SCENE      render with virtual point lights on the GPU\n"
     "  reference SCENE   render with the CPU reference path tracer\n"
     "  compare A B       error of image A against reference B\n"
     "  info              Vulkan devices and their limits\n"
@@ -39,6 +40,7 @@ int main(int argc, char** argv) {
     const cli::Args args(argv + 2, argv + argc);
     try {
         if (command == "reference") return cli::run_reference(args);
+        if (command == "render") return cli::run_render(args);
         if (command == "compare") return cli::run_compare(args);
         if (command == "info") return cli::run_info(args);
         if (command == "--help" || command == "-h" || command == "help") {

@@ -18,8 +18,7 @@ std::optional<Vec4> lookup(const scene::TextureRef& ref,
 
 }  // namespace
 
-ClosureParams resolve_closure(const scene::Material& material,
-                              const std::vector<scene::Texture>& textures, const SurfaceUv& uv) {
+ClosureParams factor_closure(const scene::Material& material) {
     ClosureParams c;
     c.base_color = material.base_color;
     c.metallic = material.metallic;
@@ -27,6 +26,12 @@ ClosureParams resolve_closure(const scene::Material& material,
     c.specular = material.specular;
     c.specular_color = material.specular_color;
     c.ior = material.ior;
+    return c;
+}
+
+ClosureParams resolve_closure(const scene::Material& material,
+                              const std::vector<scene::Texture>& textures, const SurfaceUv& uv) {
+    ClosureParams c = factor_closure(material);
     // glTF 2.0 §3.9.2: factors multiply the linear texture values; the base colour texture's
     // alpha is coverage, not a BRDF parameter.
     if (const auto t = lookup(material.base_color_texture, textures, uv)) c.base_color *= Rgb(*t);

@@ -13,6 +13,9 @@ struct SurfaceUv {
     Vec2 uv1{0.0f};
 };
 
+// The closure of the material's factors alone (no texture), as uploaded for the GPU's G-buffer
+// until textures are bound there.
+ClosureParams factor_closure(const scene::Material& material);
 ClosureParams resolve_closure(const scene::Material& material,
                               const std::vector<scene::Texture>& textures, const SurfaceUv& uv);
 Rgb resolve_emission(const scene::Material& material, const std::vector<scene::Texture>& textures,

@@ -30,12 +30,16 @@ static std::string slurp(const std::filesystem::path& p) {
 }
 
 CommandResult run_mvpl(const std::string& args) {
+    return run_mvpl_env("", args);
+}
+
+CommandResult run_mvpl_env(const std::string& env, const std::string& args) {
     static int counter = 0;
     const auto dir = std::filesystem::temp_directory_path();
     const std::string tag = std::to_string(::getpid()) + "_" + std::to_string(counter++);
     const auto out = dir / ("mvpl_out_" + tag);
     const auto err = dir / ("mvpl_err_" + tag);
-    const std::string cmd = shell_quote(MVPL_EXE) + " " + args + " </dev/null >" +
+    const std::string cmd = env + " " + shell_quote(MVPL_EXE) + " " + args + " </dev/null >" +
                             shell_quote(out.string()) + " 2>" + shell_quote(err.string());
     const int status = std::system(cmd.c_str());
     CommandResult r;

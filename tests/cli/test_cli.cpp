@@ -85,6 +85,42 @@ TEST(Cli, SummaryLineWithoutQuiet) {
     std::filesystem::remove(exr);
 }
 
+// `mvpl render` on the GPU (lavapipe in CI) with the validation layers on: an image close to the
+// CPU oracle's for the same VPLs, a summary line, no validation message, and one-line usage errors.
+// Sanitizer builds: lavapipe's LLVM JIT leaks blocks that LeakSanitizer cannot attribute or
+// suppress (see tests/gpu/gpu_test.cpp), so runs that create a Vulkan instance skip leak checking.
+const std::string kGpuEnv = "ASAN_OPTIONS=detect_leaks=0";
+test::CommandResult run_gpu(const std::string& args) {
+    return test::run_mvpl_env(kGpuEnv, args);
+}
+
+TEST(Cli, RenderOnTheGpuMatchesTheOracle) {
+    const std::string gpu = temp_file("render_gpu.exr"), cpu = temp_file("render_cpu.exr");
+    const std::string common =
+        "render " + kCbox + " --vpls 16 --res 32x32 --shadow-res 64 --seed 3 ";
+    const auto r = run_gpu(common + "-o " + shell_quote(gpu));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.out.find("VPL/s"), std::string::npos) << r.out;
+    const auto v = test::run_mvpl_env(kGpuEnv + " MVPL_VALIDATION=1",
+                                      common + "--quiet -o " + shell_quote(gpu));
+    ASSERT_EQ(v.exit_code, 0) << v.err;
+    EXPECT_TRUE(v.err.empty()) << v.err;  // the validation layer said nothing
+    ASSERT_EQ(run_gpu(common + "--oracle --quiet -o " + shell_quote(cpu)).exit_code, 0);
+    const auto cmp = run_mvpl("compare " + shell_quote(gpu) + " " + shell_quote(cpu));
+    ASSERT_EQ(cmp.exit_code, 0) << cmp.err;
+    const double rel_mse = std::stod(cmp.out.substr(cmp.out.find("relMSE ") + 7));
+    EXPECT_LT(rel_mse,
+              1.25 * 2.0 / 64.0);  // the shadow-map bound of tests/render/test_vpl_pipeline.cpp
+    EXPECT_GT(read_exr(gpu).mean().r, 0.0f);
+    expect_one_line_error(run_gpu("render " + kCbox + " --sampler magic"), "--sampler");
+    expect_one_line_error(run_gpu("render " + kCbox + " --vpl-per-path some"), "--vpl-per-path");
+    expect_one_line_error(run_gpu("render " + kCbox + " --clamp -1"), "--clamp");
+    expect_one_line_error(run_gpu("render " + kCbox + " --device 99 -o " + shell_quote(gpu)),
+                          "device");
+    for (const auto& f : {gpu, cpu})
+        std::filesystem::remove(f);
+}
+
 // Every file of the bad-input corpus: exit code 2 and one line naming the file, never a crash.
 TEST(Cli, BadInputCorpus) {
     const std::filesystem::path dir = MVPL_TEST_DATA_DIR "/bad";

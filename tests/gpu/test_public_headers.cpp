@@ -9,6 +9,7 @@
 #include "engine/gpu/format.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
+#include "engine/gpu/graphics_pipeline.h"
 #include "engine/gpu/image.h"
 #include "engine/gpu/memory.h"
 #include "engine/gpu/shader_compiler.h"

@@ -12,19 +12,6 @@
 namespace mvpl {
 namespace {
 
-scene::Scene integrating_sphere(float albedo, float radius, float intensity) {
-    scene::Scene s;
-    s.materials.push_back(test::diffuse_material(Rgb(albedo)));
-    s.meshes.push_back(test::make_icosphere(Vec3(0.0f), radius, 5, true, 0));
-    scene::Light light;
-    light.type = scene::LightType::Point;
-    light.intensity = Rgb(intensity);
-    s.lights.push_back(light);
-    s.camera = test::look_at(Vec3(0.0f, 0.0f, 0.5f * radius), Vec3(0.0f, 0.0f, -radius), 1.0f);
-    s.has_camera = true;
-    return s;
-}
-
 double render_mean(const scene::Scene& s, int spp) {
     const trace::Accel accel(s);
     const light::LightSampler lights(s);
@@ -55,7 +42,8 @@ TEST_P(IntegratingSphere, MatchesTheAnalyticRadiance) {
     const SphereCase c = GetParam();
     const float radius = 2.0f, intensity = 5.0f;
     const double expected = c.albedo * intensity / (kPi * radius * radius * (1.0 - c.albedo));
-    const double mean = render_mean(integrating_sphere(c.albedo, radius, intensity), c.spp);
+    const double mean =
+        render_mean(test::make_integrating_sphere(c.albedo, radius, intensity), c.spp);
     EXPECT_NEAR(mean / expected, 1.0, c.tolerance) << "mean " << mean << " expected " << expected;
 }
 

@@ -68,6 +68,19 @@ scene::Mesh make_icosphere(const Vec3& center, float radius, int subdivisions, b
     return mesh;
 }
 
+scene::Scene make_integrating_sphere(float albedo, float radius, float intensity) {
+    scene::Scene s;
+    s.materials.push_back(diffuse_material(Rgb(albedo)));
+    s.meshes.push_back(make_icosphere(Vec3(0.0f), radius, 5, true, 0));
+    scene::Light light;
+    light.type = scene::LightType::Point;
+    light.intensity = Rgb(intensity);
+    s.lights.push_back(light);
+    s.camera = look_at(Vec3(0.0f, 0.0f, 0.5f * radius), Vec3(0.0f, 0.0f, -radius), 1.0f);
+    s.has_camera = true;
+    return s;
+}
+
 scene::Camera look_at(const Vec3& eye, const Vec3& target, float yfov) {
     const Vec3 back = glm::normalize(eye - target);
     Vec3 up(0, 1, 0);

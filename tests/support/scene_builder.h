@@ -12,6 +12,10 @@ scene::Mesh make_quad(const Vec3& p, const Vec3& a, const Vec3& b, int material)
 // point inwards when `inward`, and so do the front faces.
 scene::Mesh make_icosphere(const Vec3& center, float radius, int subdivisions, bool inward,
                            int material);
+// A point light of intensity I at the centre of a closed Lambertian sphere (level-5 icosphere,
+// inward faces) of albedo a and radius R, the camera inside: every visible point has
+// L = a·I / (π R² (1 − a)).
+scene::Scene make_integrating_sphere(float albedo, float radius, float intensity);
 // A camera at `eye` looking at `target` with +Y up.
 scene::Camera look_at(const Vec3& eye, const Vec3& target, float yfov);
 // Scales every length of the scene by s (geometry, lights, camera). Radiance is scale-invariant;

@@ -9,6 +9,7 @@ namespace mvpl::cli {
 using Args = std::vector<std::string>;
 
 int run_reference(const Args& args);
+int run_render(const Args& args);
 int run_compare(const Args& args);
 int run_info(const Args& args);
 

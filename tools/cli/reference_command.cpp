@@ -13,6 +13,7 @@
 #include "engine/trace/accel.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/output_check.h"
 
 namespace mvpl::cli {
 
@@ -41,13 +42,7 @@ int run_reference(const Args& args) {
     if (options.spp < 1) throw UsageError("reference: --spp must be at least 1");
     if (threads < 0) throw UsageError("reference: --threads must not be negative");
     if (outputs.empty()) outputs.push_back("reference.exr");
-    for (const std::string& out : outputs) {
-        // Reject a bad extension before minutes of rendering.
-        if (!(out.ends_with(".exr") || out.ends_with(".png") || out.ends_with(".EXR") ||
-              out.ends_with(".PNG"))) {
-            throw UsageError(out + ": unknown image extension (use .exr or .png)");
-        }
-    }
+    check_output_extensions(outputs);
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0) {
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,

@@ -1,0 +1,40 @@
+#pragma once
+// The CPU VPL gather: the oracle for the GPU renderer (DESIGN.md "Reference and oracle"). It
+// shades the same VPL list with the contribution formulas of engine/light/vpl.h and exact Embree
+// visibility, so that a difference from the GPU image is a shadow-map or shader error, never a
+// sampler error.
+//
+// One camera ray per pixel through the pixel centre (the G-buffer rasterises pixel centres). At
+// its first hit: the emitted radiance seen directly (front face only, when max_depth ≥ 1 or
+// unlimited) plus the sum over VPLs of their contributions, with d_min = clamp · (diagonal of the
+// scene's bounding box); clamp 0 turns clamping off.
+#include <vector>
+
+#include "engine/core/image.h"
+#include "engine/light/vpl.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl::reference {
+
+struct GatherOptions {
+    int width = 256;
+    int height = 256;
+    float clamp = 0.0f;  // d_min as a fraction of the scene's bounding-box diagonal
+    // Mitsuba's max_depth; it only decides whether emitters seen directly are shown (≥ 1 or < 0).
+    // Which VPLs exist for that depth is the sampler's business (LightTracer).
+    int max_depth = 6;
+    bool quiet = true;
+};
+
+struct GatherStats {
+    double seconds = 0.0;
+    uint64_t rays = 0;  // camera and shadow rays
+};
+
+// Deterministic, whatever the thread count.
+Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel,
+                  const std::vector<light::Vpl>& vpls, const GatherOptions& options,
+                  GatherStats* stats = nullptr);
+
+}  // namespace mvpl::reference

@@ -1,0 +1,77 @@
+#pragma once
+// Pass 1 (DESIGN.md, "GPU passes"): rasterises every scene triangle once per view with the scene
+// camera into an RGBA32F 2D array, one layer per attribute, which the shading pass reads.
+// Pixel (x, y) holds the first surface along scene::generate_camera_ray(camera, w, h,
+// (x + 0.5, y + 0.5)), row 0 at the top. Vulkan-free to include.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "engine/core/color.h"
+#include "engine/core/math.h"
+#include "engine/gpu/image.h"
+#include "engine/material/closure.h"
+#include "engine/scene/scene.h"
+
+namespace mvpl::gpu {
+class CommandList;
+class Context;
+class GraphicsPipeline;
+}  // namespace mvpl::gpu
+
+namespace mvpl::render {
+
+class SceneGeometry;
+
+// Layers of the G-buffer array (see shaders/render/g_buffer.frag for the packing).
+enum GBufferLayer : uint32_t {
+    kGBufferPosition = 0,
+    kGBufferShadingNormal = 1,
+    kGBufferGeometricNormal = 2,
+    kGBufferBaseColor = 3,
+    kGBufferSpecular = 4,
+    kGBufferEmission = 5,
+    kGBufferLayerCount = 6,
+};
+
+// One pixel of the G-buffer, unpacked on the host (tests, debugging).
+struct GBufferTexel {
+    bool covered = false;
+    Vec3 position{0.0f};
+    Vec3 shading_normal{0.0f};    // interpolated vertex normal on the winding normal's side
+    Vec3 geometric_normal{0.0f};  // the triangle's winding normal
+    bool front_face = false;      // the camera sees the side the winding normal points to
+    bool double_sided = false;
+    material::ClosureParams closure;
+    Rgb emission{0.0f};  // zero on back faces
+};
+
+// The camera's reversed infinite perspective in Vulkan clip space: x right, y down (row 0 at the
+// top), z_ndc = znear / view depth. aspect = width / height, as generate_camera_ray.
+Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_t height);
+
+class GBufferPass {
+public:
+    GBufferPass(gpu::Context& context, const SceneGeometry& geometry, uint32_t width,
+                uint32_t height);
+    ~GBufferPass();
+    GBufferPass(const GBufferPass&) = delete;
+    GBufferPass& operator=(const GBufferPass&) = delete;
+
+    void record(gpu::CommandList& cmd, const scene::Camera& camera);
+
+    const gpu::Image& image() const { return m_image; }
+    uint32_t width() const { return m_image.width(); }
+    uint32_t height() const { return m_image.height(); }
+
+    // Reads the G-buffer back (after the recording was submitted), row-major, row 0 at the top.
+    std::vector<GBufferTexel> download() const;
+
+private:
+    const SceneGeometry* m_geometry;
+    gpu::Image m_image;
+    gpu::Image m_depth;
+    std::unique_ptr<gpu::GraphicsPipeline> m_pipeline;
+};
+
+}  // namespace mvpl::render

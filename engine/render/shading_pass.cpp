@@ -1,0 +1,110 @@
+#include "engine/render/shading_pass.h"
+
+#include <cstring>
+
+#include "engine/gpu/command_list.h"
+#include "engine/gpu/compute_pipeline.h"
+#include "engine/gpu/gpu_error.h"
+#include "engine/gpu/shader_compiler.h"
+#include "engine/render/gpu_vpl.h"
+
+namespace mvpl::render {
+namespace {
+
+// Mirrors ShadingPush in shaders/render/shading.comp.
+struct ShadingPush {
+    float camera_position[4];
+    float d_min2;
+    float texel_angle;
+    uint32_t vpl_count;
+    uint32_t flags;
+    uint32_t size[2];
+};
+constexpr uint32_t kAddEmission = 1u;
+constexpr uint32_t kShadows = 2u;
+constexpr uint32_t kGroupSize = 8;
+// The VPL array of shading.comp, a uniform buffer (lavapipe reads it ~1.5–2× faster than a
+// storage buffer): 512 × 128 bytes = 64 KiB, the maxUniformBufferRange of lavapipe and desktop
+// GPUs. A device with the spec's minimum of 16 KiB would need a smaller constant here.
+constexpr uint32_t kMaxShadingBatch = 512;
+
+gpu::ComputeLayout shading_layout() {
+    return {{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
+             gpu::BindingType::uniform_buffer, gpu::BindingType::sampled_image,
+             gpu::BindingType::sampled_image},
+            sizeof(ShadingPush)};
+}
+
+}  // namespace
+
+ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height, uint32_t max_batch)
+    : m_context(&context),
+      m_accumulation(context,
+                     {width, height, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
+                     "accumulation"),
+      m_vpls(context, uint64_t(kMaxShadingBatch) * sizeof(GpuVpl), gpu::BufferUsage::uniform,
+             gpu::MemoryLocation::upload, "vpl batch"),
+      m_no_shadows(context, {1, 1, 6, gpu::Format::r32_float, gpu::ImageUsage::sampled, true},
+                   "no shadows"),
+      m_no_ortho_shadows(context,
+                         {1, 1, 2, gpu::Format::r32_float, gpu::ImageUsage::sampled, false},
+                         "no directional shadows"),
+      m_pipeline(std::make_unique<gpu::ComputePipeline>(
+          context, gpu::compile_embedded_shader("render/shading.comp"), shading_layout(),
+          "shading")),
+      m_max_batch(std::max(max_batch, 1u)) {
+    if (m_max_batch > kMaxShadingBatch) {
+        throw gpu::GpuError("shading pass: batches of at most " + std::to_string(kMaxShadingBatch) +
+                            " VPLs");
+    }
+}
+
+ShadingPass::~ShadingPass() = default;
+
+void ShadingPass::upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds) {
+    if (batch.size() > m_max_batch) {
+        throw gpu::GpuError("shading pass: a batch of " + std::to_string(batch.size()) +
+                            " VPLs for room for " + std::to_string(m_max_batch));
+    }
+    const std::vector<GpuVpl> gpu_vpls = to_gpu_vpls(batch, bounds);
+    if (!gpu_vpls.empty()) {
+        std::memcpy(m_vpls.mapped(), gpu_vpls.data(), gpu_vpls.size() * sizeof(GpuVpl));
+    }
+    m_count = uint32_t(batch.size());
+}
+
+void ShadingPass::record_clear(gpu::CommandList& cmd) {
+    cmd.clear_color(m_accumulation, {0.0f, 0.0f, 0.0f, 0.0f});
+}
+
+void ShadingPass::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
+                         const ShadingBatch& batch) {
+    const uint32_t width = m_accumulation.width();
+    const uint32_t height = m_accumulation.height();
+    if (g_buffer.width() != width || g_buffer.height() != height) {
+        throw gpu::GpuError("shading pass: the G-buffer and the accumulation differ in size");
+    }
+    const gpu::Image* shadows = batch.shadows ? batch.shadows : &m_no_shadows;
+    const gpu::Image* ortho = batch.ortho_shadows ? batch.ortho_shadows : &m_no_ortho_shadows;
+    if (bool(batch.shadows) != bool(batch.ortho_shadows)) {
+        throw gpu::GpuError("shading pass: cube and directional shadow maps come together");
+    }
+    if (batch.shadows && batch.shadows->layers() < 6 * m_count) {
+        throw gpu::GpuError("shading pass: fewer shadow cubes than VPLs in the batch");
+    }
+    ShadingPush push{};
+    push.camera_position[0] = batch.camera_position.x;
+    push.camera_position[1] = batch.camera_position.y;
+    push.camera_position[2] = batch.camera_position.z;
+    push.d_min2 = batch.d_min * batch.d_min;
+    push.texel_angle = 2.0f / float(shadows->width());
+    push.vpl_count = m_count;
+    push.flags = (batch.add_emission ? kAddEmission : 0u) | (batch.shadows ? kShadows : 0u);
+    push.size[0] = width;
+    push.size[1] = height;
+    cmd.dispatch(*m_pipeline, {&g_buffer, &m_accumulation, &m_vpls, shadows, ortho},
+                 gpu::push_bytes(push), (width + kGroupSize - 1) / kGroupSize,
+                 (height + kGroupSize - 1) / kGroupSize);
+}
+
+}  // namespace mvpl::render

@@ -1,0 +1,148 @@
+#include "engine/render/shadow_pass.h"
+
+#include <array>
+
+#include "engine/gpu/command_list.h"
+#include "engine/gpu/gpu_error.h"
+#include "engine/gpu/graphics_pipeline.h"
+#include "engine/gpu/shader_compiler.h"
+#include "engine/render/directional_frame.h"
+#include "engine/render/scene_geometry.h"
+
+namespace mvpl::render {
+namespace {
+
+// Mirrors ShadowPush in shaders/render/shadow_push.glsl.
+struct ShadowPush {
+    float vpl_near[4];
+    uint32_t face[4];
+};
+
+// Mirrors OrthoPush in shaders/render/shadow_ortho.vert.
+struct OrthoPush {
+    float u_origin[4];
+    float v_origin[4];
+    float dir_origin[4];
+    float extents[4];
+};
+
+// The near plane as a fraction of the scene diagonal: scale-free, and small enough that only
+// the surface a VPL lies on (distance 0) falls in front of it in practice.
+constexpr float kNearFraction = 1e-5f;
+
+// Whether every direction through cube face `face` lies strictly below the plane of normal n, so
+// that an Area or Surface VPL (whose factor max(0, n·ω) is then 0) never looks the face up: the
+// "hemicube" of DESIGN.md, one face fewer for axis-aligned normals. n·ω is linear over the face
+// before normalisation, so its maximum is at a corner; the margin keeps the shader's rounded
+// n·ω from reaching 0 on the face.
+bool face_behind(const Vec3& n, uint32_t face) {
+    const int axis = int(face / 2);
+    Vec3 a(0.0f);
+    a[axis] = face % 2 == 0 ? 1.0f : -1.0f;
+    Vec3 u(0.0f);
+    Vec3 v(0.0f);
+    u[(axis + 1) % 3] = 1.0f;
+    v[(axis + 2) % 3] = 1.0f;
+    for (const float su : {-1.0f, 1.0f}) {
+        for (const float sv : {-1.0f, 1.0f}) {
+            if (glm::dot(n, a + su * u + sv * v) > -1e-3f) return false;
+        }
+    }
+    return true;
+}
+
+gpu::GraphicsLayout shadow_layout(uint32_t push_constant_bytes) {
+    gpu::GraphicsLayout layout;
+    layout.vertex_stride = sizeof(GeometryVertex);
+    layout.attributes = {{gpu::VertexFormat::float3, offsetof(GeometryVertex, position)}};
+    layout.color_formats = {gpu::Format::r32_float};
+    layout.depth = true;
+    layout.push_constant_bytes = push_constant_bytes;
+    return layout;
+}
+
+}  // namespace
+
+ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry, uint32_t resolution,
+                       uint32_t max_batch)
+    : m_geometry(&geometry),
+      m_cubes(context,
+              {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
+               gpu::ImageUsage::color_attachment | gpu::ImageUsage::sampled, true},
+              "shadow cubes"),
+      m_depth(context,
+              {resolution, resolution, 6, gpu::Format::d32_float, gpu::ImageUsage::depth_attachment,
+               false},
+              "shadow depth"),
+      m_ortho(context,
+              {resolution, resolution, std::max(max_batch, 2u), gpu::Format::r32_float,
+               gpu::ImageUsage::color_attachment | gpu::ImageUsage::sampled, false},
+              "directional shadow maps"),
+      m_ortho_depth(context,
+                    {resolution, resolution, 1, gpu::Format::d32_float,
+                     gpu::ImageUsage::depth_attachment, false},
+                    "directional shadow depth"),
+      m_pipeline(std::make_unique<gpu::GraphicsPipeline>(
+          context, gpu::compile_embedded_shader("render/shadow.vert"),
+          gpu::compile_embedded_shader("render/shadow.frag"), shadow_layout(sizeof(ShadowPush)),
+          "shadow")),
+      m_ortho_pipeline(std::make_unique<gpu::GraphicsPipeline>(
+          context, gpu::compile_embedded_shader("render/shadow_ortho.vert"),
+          gpu::compile_embedded_shader("render/shadow.frag"), shadow_layout(sizeof(OrthoPush)),
+          "directional shadow")),
+      m_near(kNearFraction * std::max(geometry.bounds().diagonal(), 1e-30f)) {}
+
+ShadowPass::~ShadowPass() = default;
+
+void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch) {
+    if (batch.size() > max_batch()) {
+        throw gpu::GpuError("shadow pass: a batch of " + std::to_string(batch.size()) +
+                            " VPLs for " + std::to_string(max_batch()) + " cubes");
+    }
+    bool depth_in_use = false;
+    bool ortho_depth_in_use = false;
+    for (uint32_t i = 0; i < batch.size(); ++i) {
+        const light::Vpl& vpl = batch[i];
+        if (vpl.type == light::VplType::Directional) {
+            if (ortho_depth_in_use) cmd.barrier();
+            ortho_depth_in_use = true;
+            record_directional(cmd, vpl, i);
+            continue;
+        }
+        // The six depth layers are reused by every cube: the previous cube's depth tests must be
+        // done before this cube's clears.
+        if (depth_in_use) cmd.barrier();
+        depth_in_use = true;
+        const bool hemisphere =
+            vpl.type == light::VplType::Area || vpl.type == light::VplType::Surface;
+        for (uint32_t face = 0; face < 6; ++face) {
+            if (hemisphere && face_behind(vpl.normal, face)) continue;
+            const gpu::ColorTarget color{
+                &m_cubes, 6 * i + face, {kShadowNoOccluder, 0.0f, 0.0f, 0.0f}};
+            const gpu::DepthTarget depth{&m_depth, face, 0.0f};
+            gpu::begin_rendering(cmd, std::span(&color, 1), &depth);
+            const ShadowPush push{{vpl.position.x, vpl.position.y, vpl.position.z, m_near},
+                                  {face, 0u, 0u, 0u}};
+            // One draw for the whole scene: materials do not matter for distances.
+            gpu::draw(cmd, *m_pipeline, m_geometry->vertices(), gpu::push_bytes(push), 0,
+                      m_geometry->vertex_count());
+            gpu::end_rendering(cmd);
+        }
+    }
+}
+
+void ShadowPass::record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer) {
+    const DirectionalFrame f = directional_frame(vpl.normal, m_geometry->bounds());
+    const gpu::ColorTarget color{&m_ortho, layer, {kShadowNoOccluder, 0.0f, 0.0f, 0.0f}};
+    const gpu::DepthTarget depth{&m_ortho_depth, 0, 0.0f};
+    gpu::begin_rendering(cmd, std::span(&color, 1), &depth);
+    const OrthoPush push{{f.u.x, f.u.y, f.u.z, f.origin.x},
+                         {f.v.x, f.v.y, f.v.z, f.origin.y},
+                         {f.dir.x, f.dir.y, f.dir.z, f.origin.z},
+                         {f.extent, f.depth, 0.0f, 0.0f}};
+    gpu::draw(cmd, *m_ortho_pipeline, m_geometry->vertices(), gpu::push_bytes(push), 0,
+              m_geometry->vertex_count());
+    gpu::end_rendering(cmd);
+}
+
+}  // namespace mvpl::render

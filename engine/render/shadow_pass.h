@@ -1,0 +1,67 @@
+#pragma once
+// Pass 2 (DESIGN.md, "GPU passes"): the distance from each VPL of a batch to the nearest surface
+// in every direction, in an R32F cube-map array (cube i = batch[i], layers 6i … 6i + 5 in the
+// order +X −X +Y −Y +Z −Z). Six single-layer passes per cube (the fastest on lavapipe; multiview
+// writes wrong layers there). Area and Surface VPLs skip the faces that lie wholly behind their
+// normal (they never light those directions; the texels keep stale values that are never read).
+// Vulkan-free to include.
+//
+// Directional VPLs get no cube but an orthographic map instead: layer i of an R32F 2D array
+// holds, for batch[i], the distance along the direction of travel from the map's near plane
+// (directional_frame.h) to the first surface.
+#include <cstdint>
+#include <memory>
+#include <span>
+
+#include "engine/gpu/image.h"
+#include "engine/light/vpl.h"
+
+namespace mvpl::gpu {
+class CommandList;
+class Context;
+class GraphicsPipeline;
+}  // namespace mvpl::gpu
+
+namespace mvpl::render {
+
+class SceneGeometry;
+
+// The distance a shadow texel holds where no surface was rendered.
+inline constexpr float kShadowNoOccluder = 3.0e38f;
+
+class ShadowPass {
+public:
+    // resolution: the side of a cube face in texels; max_batch: cubes in the array.
+    ShadowPass(gpu::Context& context, const SceneGeometry& geometry, uint32_t resolution,
+               uint32_t max_batch);
+    ~ShadowPass();
+    ShadowPass(const ShadowPass&) = delete;
+    ShadowPass& operator=(const ShadowPass&) = delete;
+
+    // Renders the cubes (and the orthographic maps of directional VPLs) of batch, at most
+    // max_batch VPLs, into cubes() and ortho_maps().
+    void record(gpu::CommandList& cmd, std::span<const light::Vpl> batch);
+
+    const gpu::Image& cubes() const { return m_cubes; }
+    // Orthographic maps of the directional VPLs (layer = index in the batch; at least 2 layers,
+    // so that the view is always a 2D array).
+    const gpu::Image& ortho_maps() const { return m_ortho; }
+    uint32_t resolution() const { return m_cubes.width(); }
+    uint32_t max_batch() const { return m_cubes.layers() / 6; }
+    // Surfaces closer than this to a VPL do not shadow (the near plane), relative to the scene.
+    float near_distance() const { return m_near; }
+
+private:
+    void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
+
+    const SceneGeometry* m_geometry;
+    gpu::Image m_cubes;
+    gpu::Image m_depth;  // six layers, reused by every cube
+    gpu::Image m_ortho;
+    gpu::Image m_ortho_depth;
+    std::unique_ptr<gpu::GraphicsPipeline> m_pipeline;
+    std::unique_ptr<gpu::GraphicsPipeline> m_ortho_pipeline;
+    float m_near = 0.0f;
+};
+
+}  // namespace mvpl::render

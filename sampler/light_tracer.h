@@ -1,0 +1,57 @@
+#pragma once
+// Light paths traced on Embree from primary samples, leaving virtual point lights
+// (DESIGN.md "The algorithm"; Keller 1997, Segovia et al. 2007).
+//
+// A path x_0 (on a light), x_1, …, x_k leaves an emitter VPL at x_0 (path_length 0: direct light)
+// and a surface VPL at every x_j, j ≥ 1 (all our closures are non-specular). The VPL's power is
+// the path throughput at x_j divided by the number of light paths N:
+//   β_0 = Le·|cos θ_0| / (pick · pdf_pos · pdf_dir)                 (LightSampler::sample_le)
+//   β_j = β_{j−1} · f_{j−1} · |n_g,{j−1}·ω_out| / pdf  ·  |n_s,j·ω_in| / |n_g,j·ω_in|
+// The cosines at x_{j−1} towards x_j are geometric and the cosine at x_j towards x_{j−1} is the
+// shading one: the path tracer's integrand read from the light's end (it uses the shading cosine
+// towards the light and the area-measure change uses the geometric one), and the vpl.h formula
+// uses the geometric max(0, n_j·ω) at the VPL — so the VPL estimator and the path tracer agree
+// with shading normals too (the same factor as pbrt-v3's adjoint shading-normal correction).
+//
+// Depth: a VPL with path_length k lights a camera-visible point through a camera-to-light path of
+// k + 2 segments (Mitsuba's max_depth), so only k ≤ max_depth − 2 is kept; max_depth < 0 is
+// unlimited and Russian roulette ends the paths.
+#include <cstdint>
+#include <vector>
+
+#include "engine/light/light_sampler.h"
+#include "engine/light/vpl.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+#include "sampler/sample_stream.h"
+
+namespace mvpl::sampler {
+
+struct LightTracerOptions {
+    int max_depth = 6;  // Mitsuba's max_depth of the whole camera-to-light path; < 0 unlimited
+    // Russian roulette once the camera-to-light path through the next VPL would have at least
+    // this many segments (the path tracer's rr_depth, counted the same way).
+    int rr_depth = 5;
+};
+
+class LightTracer {
+public:
+    LightTracer(const scene::Scene& scene, const trace::Accel& accel,
+                const light::LightSampler& lights, const LightTracerOptions& options = {});
+
+    // Traces one light path from `u` and appends its VPLs, powers scaled by `scale` (1/N), in
+    // path order (emitter VPL first). Returns the number of VPLs appended.
+    size_t trace(SampleStream& u, float scale, std::vector<light::Vpl>& out) const;
+
+    // Largest path_length a VPL may have for the options' max_depth (−1: none at all).
+    int max_path_length() const;
+    const LightTracerOptions& options() const { return m_options; }
+
+private:
+    const scene::Scene& m_scene;
+    const trace::Accel& m_accel;
+    const light::LightSampler& m_lights;
+    LightTracerOptions m_options;
+};
+
+}  // namespace mvpl::sampler

@@ -1,0 +1,20 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// G-buffer: world-space attributes for the fragment shader; the winding normal is per triangle
+// (the same at its three de-indexed vertices), hence flat.
+#include "g_buffer_push.glsl"
+
+layout(location = 0) in vec3 in_position;
+layout(location = 1) in vec3 in_normal;
+layout(location = 2) in vec3 in_face_normal;
+
+layout(location = 0) out vec3 out_position;
+layout(location = 1) out vec3 out_normal;
+layout(location = 2) flat out vec3 out_face_normal;
+
+void main() {
+    out_position = in_position;
+    out_normal = in_normal;
+    out_face_normal = in_face_normal;
+    gl_Position = pc.view_proj * vec4(in_position, 1.0);
+}

@@ -1,0 +1,169 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Pass 3 (DESIGN.md, "GPU passes"): adds the contribution of one batch of VPLs to every pixel's
+// accumulated radiance, with the formulas of engine/light/vpl.h. One invocation per pixel; each
+// pixel is read and written by its own invocation only.
+#include "bsdf.glsl"
+#include "vpl.glsl"
+
+// kMaxShadingBatch in shading_pass.cpp: 64 KiB, the maxUniformBufferRange of lavapipe and of
+// desktop GPUs.
+const uint kMaxShadingBatch = 512u;
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(set = 0, binding = 0, rgba32f) uniform readonly image2DArray g_buffer;
+layout(set = 0, binding = 1, rgba32f) uniform image2D accumulation;
+// A uniform buffer: the index is the same in every invocation, and lavapipe reads uniform
+// buffers as scalar constant loads (measured faster than a storage buffer's per-lane gathers).
+layout(std140, set = 0, binding = 2) uniform Vpls { GpuVpl vpls[kMaxShadingBatch]; };
+layout(set = 0, binding = 3) uniform samplerCubeArray shadow_cubes;
+layout(set = 0, binding = 4) uniform sampler2DArray ortho_shadows;
+
+const uint kAddEmission = 1u;
+const uint kShadows = 2u;
+
+layout(push_constant) uniform ShadingPush {
+    vec4 camera_position;  // xyz
+    float d_min2;          // squared clamping distance of the geometric term
+    float texel_angle;     // angle of a shadow texel at the centre of a face: 2 / resolution
+    uint vpl_count;
+    uint flags;
+    uvec2 size;
+} pc;
+
+// Shadow test against the VPL's distance cube. Nearest sampling reads the texel that contains
+// the direction w to the receiver; what that texel stores is the distance rasterised along its
+// CENTRE direction w_c. Instead of a slope-scaled bias (which, at grazing angles, must grow to
+// d · tan θ · texel size and then reaches through thin walls: measured as light leaking between
+// the two rooms), the receiver's own plane is intersected along w_c: d_c = n·(p − x)/(n·w_c) is the
+// distance the texel would store if nothing stood in front of the receiver's plane, so the
+// receiver is lit when stored ≥ d_c, up to kConstantBias for the rounding of interpolated
+// distances (~1e-6 relative) and kFootprintBias texel footprints (d · texel_angle) so that a
+// surface meeting the receiver in a concave corner does not shadow it — scale-free and without
+// a slope term ("receiver plane" depth test). An occluder thinner than one footprint in front of
+// the receiver's plane can leak: 0.8% of d at 256² faces. Where w_c runs nearly parallel to the plane, d_c is unreliable and
+// the receiver's own distance d with a bounded slope bias is used instead.
+const float kConstantBias = 2e-4;
+const float kFootprintBias = 1.0;
+const float kSlopeBias = 1.0;
+const float kMaxSlope = 4.0;
+
+// Centre direction of the cube texel that contains w (res texels across [−1, 1] on each face; the
+// grid is symmetric, so the faces' orientation conventions do not matter).
+vec3 cube_texel_centre(vec3 w, float res) {
+    const vec3 a = abs(w);
+    vec3 c;
+    if (a.x >= a.y && a.x >= a.z) {
+        c = vec3(sign(w.x), w.yz / a.x);
+        c.yz = (floor((c.yz * 0.5 + 0.5) * res) + 0.5) / res * 2.0 - 1.0;
+    } else if (a.y >= a.z) {
+        c = vec3(w.x / a.y, sign(w.y), w.z / a.y);
+        c.xz = (floor((c.xz * 0.5 + 0.5) * res) + 0.5) / res * 2.0 - 1.0;
+    } else {
+        c = vec3(w.xy / a.z, sign(w.z));
+        c.xy = (floor((c.xy * 0.5 + 0.5) * res) + 0.5) / res * 2.0 - 1.0;
+    }
+    return normalize(c);
+}
+
+float visibility(uint cube, vec3 to_receiver, float d, vec3 ng) {
+    const vec3 w = to_receiver / d;
+    const float stored = textureLod(shadow_cubes, vec4(w, float(cube)), 0.0).r;
+    const float res = float(textureSize(shadow_cubes, 0).x);
+    const vec3 wc = cube_texel_centre(w, res);
+    const float along = dot(ng, wc);
+    const float d_plane = dot(ng, to_receiver) / along;
+    const float cos_r = abs(dot(ng, w));
+    if (abs(along) > 0.05 * cos_r && d_plane > 0.5 * d && d_plane < 2.0 * d) {
+        return stored >= d_plane - d * (kConstantBias + kFootprintBias * pc.texel_angle) ? 1.0 : 0.0;
+    }
+    const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
+    const float bias = d * (kConstantBias + kSlopeBias * pc.texel_angle * tan_r);
+    return stored >= d - bias ? 1.0 : 0.0;
+}
+
+// The same test against a directional VPL's orthographic map (directional_frame.h): w is the
+// receiver's distance along the direction of travel from the map's near plane, and a texel is
+// extent / resolution wide (in place of d · texel_angle).
+float directional_visibility(uint layer, GpuVpl v, vec3 p, vec3 ng) {
+    const vec3 map = vec3(dot(p, v.shading_normal), dot(p, v.wi), dot(p, v.normal)) - v.position;
+    const float stored = textureLod(ortho_shadows, vec3(map.xy / v.map_extent, float(layer)), 0.0).r;
+    const float cos_r = abs(dot(ng, v.normal));
+    const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
+    const float texel = v.map_extent / float(textureSize(ortho_shadows, 0).x);
+    const float bias = kConstantBias * map.z + kSlopeBias * texel * tan_r;
+    return stored >= map.z - bias ? 1.0 : 0.0;
+}
+
+float spot_falloff(GpuVpl v, float cos_angle) {
+    // light::spot_attenuation
+    const float scale = 1.0 / max(1e-3, v.cos_inner - v.cos_outer);
+    const float t = clamp((cos_angle - v.cos_outer) * scale, 0.0, 1.0);
+    return t * t;
+}
+
+void main() {
+    const ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    if (any(greaterThanEqual(uvec2(px), pc.size))) return;
+    const vec4 position = imageLoad(g_buffer, ivec3(px, 0));
+    if (position.w <= 0.0) return;
+    const vec4 ns_flags = imageLoad(g_buffer, ivec3(px, 1));
+    const vec4 ng_metallic = imageLoad(g_buffer, ivec3(px, 2));
+    const vec4 base_roughness = imageLoad(g_buffer, ivec3(px, 3));
+    const vec4 specular = imageLoad(g_buffer, ivec3(px, 4));
+    const vec4 emission_ior = imageLoad(g_buffer, ivec3(px, 5));
+
+    const vec3 p = position.xyz;
+    const uint flags = uint(ns_flags.w);
+    // reference::make_shading_point: a back face of a double-sided material shades with the
+    // flipped normals; of a one-sided one with the unflipped ones (black from behind).
+    const float side = (flags & 1u) == 0u && (flags & 2u) != 0u ? -1.0 : 1.0;
+    const vec3 n = side * ns_flags.xyz;
+    const vec3 ng = side * ng_metallic.xyz;
+    const vec3 wo = normalize(pc.camera_position.xyz - p);
+    const Closure receiver = Closure(base_roughness.rgb, ng_metallic.w, specular.rgb, specular.w,
+                                     base_roughness.w, emission_ior.w);
+
+    vec3 sum = (pc.flags & kAddEmission) != 0u ? emission_ior.rgb : vec3(0.0);
+    for (uint i = 0u; i < pc.vpl_count; ++i) {
+        const GpuVpl v = vpls[i];
+        if (v.type == kVplDirectional) {
+            const vec3 to_light = -v.normal;
+            const float cos_r = max(0.0, dot(n, to_light));
+            if (cos_r <= 0.0) continue;
+            const vec3 f_r = bsdf_eval(receiver, n, wo, to_light);
+            if (max_component(f_r) <= 0.0) continue;
+            const float vis =
+                (pc.flags & kShadows) != 0u ? directional_visibility(i, v, p, ng) : 1.0;
+            sum += v.power * vis * f_r * cos_r;
+            continue;
+        }
+        const vec3 r = p - v.position;
+        const float d2 = dot(r, r);
+        if (!(d2 > 0.0)) continue;
+        const float d = sqrt(d2);
+        const vec3 w = r / d;  // VPL → receiver
+        const float cos_r = max(0.0, dot(n, -w));
+        if (cos_r <= 0.0) continue;
+        float emitter = 1.0;  // the VPL's own factor: spot falloff or max(0, n_j·ω)
+        vec3 f_vpl = vec3(1.0);
+        if (v.type == kVplSpot) {
+            emitter = spot_falloff(v, dot(v.normal, w));
+        } else if (v.type == kVplArea || v.type == kVplSurface) {
+            emitter = max(0.0, dot(v.normal, w));
+        }
+        if (v.type == kVplSurface) {
+            const Closure c = Closure(v.base_color, v.metallic, v.specular_color, v.specular,
+                                      v.roughness, v.ior);
+            f_vpl = bsdf_eval(c, v.shading_normal, v.wi, w);
+        }
+        if (emitter <= 0.0 || max_component(f_vpl) <= 0.0) continue;
+        const vec3 f_r = bsdf_eval(receiver, n, wo, -w);
+        if (max_component(f_r) <= 0.0) continue;
+        const float vis = (pc.flags & kShadows) != 0u ? visibility(i, r, d, ng) : 1.0;
+        sum += v.power * vis * f_r * cos_r * f_vpl * emitter / max(d2, pc.d_min2);
+    }
+    const vec4 accumulated = imageLoad(accumulation, px);
+    imageStore(accumulation, px, vec4(accumulated.rgb + sum, 1.0));
+}

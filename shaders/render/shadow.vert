@@ -1,0 +1,25 @@
+#version 460
+#extension GL_GOOGLE_include_directive : require
+// Shadow cube face: projects r = p − vpl onto face pc.face.x exactly as Vulkan's cube sampling
+// maps a direction to a texel (spec, "Cube Map Face Selection": s_c, t_c and the major axis m_a),
+// so that the texel a direction is rendered into is the texel textureLod reads for it:
+// clip = (s_c, t_c, near, m_a), i.e. ndc = (s_c, t_c) / |m_a| and reversed depth near / m_a.
+#include "shadow_push.glsl"
+
+layout(location = 0) in vec3 in_position;
+layout(location = 0) out vec3 out_offset;
+
+void main() {
+    const vec3 r = in_position - pc.vpl_near.xyz;
+    vec3 m;  // (s_c, t_c, m_a)
+    switch (pc.face.x) {
+        case 0u: m = vec3(-r.z, -r.y, r.x); break;
+        case 1u: m = vec3(r.z, -r.y, -r.x); break;
+        case 2u: m = vec3(r.x, r.z, r.y); break;
+        case 3u: m = vec3(r.x, -r.z, -r.y); break;
+        case 4u: m = vec3(r.x, -r.y, r.z); break;
+        default: m = vec3(-r.x, -r.y, -r.z); break;
+    }
+    out_offset = r;
+    gl_Position = vec4(m.x, m.y, pc.vpl_near.w, m.z);
+}

@@ -1,0 +1,23 @@
+#version 460
+// Orthographic shadow map of a directional VPL (engine/render/directional_frame.h): map
+// coordinates (u, v) / extent → ndc, reversed depth 1 − w / depth so that the surface nearest to
+// the light wins, and w (the distance along the direction of travel from the map's near plane)
+// handed to shadow.frag as the length of a vector.
+layout(push_constant) uniform OrthoPush {
+    vec4 u_origin;    // xyz: map x axis, w: its origin
+    vec4 v_origin;    // map y axis and origin
+    vec4 dir_origin;  // direction of travel and the near plane's w
+    vec4 extents;     // x: window side, y: depth range
+} pc;
+
+layout(location = 0) in vec3 in_position;
+layout(location = 0) out vec3 out_offset;
+
+void main() {
+    const float u = dot(in_position, pc.u_origin.xyz) - pc.u_origin.w;
+    const float v = dot(in_position, pc.v_origin.xyz) - pc.v_origin.w;
+    const float w = dot(in_position, pc.dir_origin.xyz) - pc.dir_origin.w;
+    out_offset = vec3(w, 0.0, 0.0);
+    gl_Position = vec4(2.0 * u / pc.extents.x - 1.0, 2.0 * v / pc.extents.x - 1.0,
+                       1.0 - w / pc.extents.y, 1.0);
+}

@@ -1,0 +1,128 @@
+#include "tests/render/render_test_util.h"
+
+#include "engine/material/material_eval.h"
+
+#include <glm/glm.hpp>
+
+#include "engine/material/bsdf.h"
+#include "engine/scene/camera.h"
+
+namespace mvpl::render::testing {
+namespace {
+
+using DVec3 = glm::dvec3;
+
+// Möller–Trumbore in double: the reference must be more accurate than the rasteriser.
+struct TriangleHit {
+    double t, u, v;  // distance and the barycentrics of p1 and p2
+};
+
+std::optional<TriangleHit> intersect(const DVec3& o, const DVec3& d, const DVec3& p0,
+                                     const DVec3& p1, const DVec3& p2) {
+    const DVec3 e1 = p1 - p0;
+    const DVec3 e2 = p2 - p0;
+    const DVec3 pv = glm::cross(d, e2);
+    const double det = glm::dot(e1, pv);
+    if (std::abs(det) < 1e-300) return std::nullopt;
+    const DVec3 tv = o - p0;
+    const double u = glm::dot(tv, pv) / det;
+    if (u < 0.0 || u > 1.0) return std::nullopt;
+    const DVec3 qv = glm::cross(tv, e1);
+    const double v = glm::dot(d, qv) / det;
+    if (v < 0.0 || u + v > 1.0) return std::nullopt;
+    const double t = glm::dot(e2, qv) / det;
+    return t > 0.0 ? std::optional<TriangleHit>(TriangleHit{t, u, v}) : std::nullopt;
+}
+
+}  // namespace
+
+std::optional<CpuHit> cast_camera_ray(const scene::Scene& scene, int width, int height, int x,
+                                      int y) {
+    const scene::CameraRay ray =
+        scene::generate_camera_ray(scene.camera, width, height, Vec2(x + 0.5f, y + 0.5f));
+    const DVec3 o(ray.origin);
+    const DVec3 d(ray.direction);
+    std::optional<CpuHit> best;
+    double best_t = 1e300;
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const scene::Mesh& mesh = scene.meshes[m];
+        for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+            const DVec3 p0(mesh.positions[mesh.indices[3 * t]]);
+            const DVec3 p1(mesh.positions[mesh.indices[3 * t + 1]]);
+            const DVec3 p2(mesh.positions[mesh.indices[3 * t + 2]]);
+            const std::optional<TriangleHit> hit = intersect(o, d, p0, p1, p2);
+            if (!hit || hit->t >= best_t) continue;
+            best_t = hit->t;
+            const DVec3 ng = glm::normalize(glm::cross(p1 - p0, p2 - p0));
+            // As trace::make_interaction: the interpolated normal on the winding normal's side.
+            DVec3 ns = ng;
+            if (!mesh.normals.empty()) {
+                const DVec3 n = (1.0 - hit->u - hit->v) * DVec3(mesh.normals[mesh.indices[3 * t]]) +
+                                hit->u * DVec3(mesh.normals[mesh.indices[3 * t + 1]]) +
+                                hit->v * DVec3(mesh.normals[mesh.indices[3 * t + 2]]);
+                ns = glm::normalize(n);
+                if (glm::dot(ns, ng) < 0.0) ns = -ns;
+            }
+            best = CpuHit{Vec3(o + hit->t * d), Vec3(ng), Vec3(ns), int(m), glm::dot(d, ng) < 0.0};
+        }
+    }
+    return best;
+}
+
+bool segment_hits_mesh(const scene::Mesh& mesh, const Vec3& a, const Vec3& b) {
+    const DVec3 o(a);
+    const DVec3 d = DVec3(b) - o;
+    for (size_t t = 0; t < mesh.triangle_count(); ++t) {
+        const std::optional<TriangleHit> hit =
+            intersect(o, d, DVec3(mesh.positions[mesh.indices[3 * t]]),
+                      DVec3(mesh.positions[mesh.indices[3 * t + 1]]),
+                      DVec3(mesh.positions[mesh.indices[3 * t + 2]]));
+        if (hit && hit->t < 1.0) return true;
+    }
+    return false;
+}
+
+Rgb cpu_contribution(const light::Vpl& vpl, const Vec3& p, const Vec3& n,
+                     const material::ClosureParams& receiver, const Vec3& camera, float d_min) {
+    const material::Bsdf f_r(receiver);
+    const Frame frame(n);
+    const Vec3 wo = frame.to_local(glm::normalize(camera - p));
+    if (vpl.type == light::VplType::Directional) {
+        const Vec3 to_light = -vpl.normal;
+        const float cos_r = std::max(0.0f, glm::dot(n, to_light));
+        return vpl.power * f_r.eval(wo, frame.to_local(to_light)) * cos_r;
+    }
+    const Vec3 r = p - vpl.position;
+    const float d2 = glm::dot(r, r);
+    const Vec3 w = r / std::sqrt(d2);
+    const float cos_r = std::max(0.0f, glm::dot(n, -w));
+    Rgb value = vpl.power * f_r.eval(wo, frame.to_local(-w)) * cos_r / std::max(d2, d_min * d_min);
+    switch (vpl.type) {
+        case light::VplType::Spot: {
+            const float scale = 1.0f / std::max(1e-3f, vpl.cos_inner - vpl.cos_outer);
+            const float t =
+                std::clamp((glm::dot(vpl.normal, w) - vpl.cos_outer) * scale, 0.0f, 1.0f);
+            value *= t * t;
+            break;
+        }
+        case light::VplType::Area:
+            value *= std::max(0.0f, glm::dot(vpl.normal, w));
+            break;
+        case light::VplType::Surface: {
+            const Frame vpl_frame(vpl.shading_normal);
+            const material::Bsdf f_j(vpl.closure);
+            value *= f_j.eval(vpl_frame.to_local(vpl.wi), vpl_frame.to_local(w)) *
+                     std::max(0.0f, glm::dot(vpl.normal, w));
+            break;
+        }
+        default:
+            break;
+    }
+    return value;
+}
+
+material::ClosureParams closure_of(const scene::Material& m) {
+    return material::clamp_to_valid_ranges(material::factor_closure(m));
+}
+
+}  // namespace mvpl::render::testing

@@ -1,0 +1,182 @@
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "engine/core/image.h"
+#include "engine/gpu/context.h"
+#include "engine/render/vpl_renderer.h"
+#include "tests/gpu/gpu_test.h"
+#include "tests/render/render_test_util.h"
+#include "tests/support/scene_builder.h"
+
+namespace mvpl::render {
+namespace {
+
+using ShadingTest = gpu::testing::GpuTest;
+
+constexpr int kSize = 48;
+
+scene::Scene floor_scene(const scene::Material& material) {
+    scene::Scene s;
+    s.materials = {material};
+    s.meshes.push_back(test::make_quad(Vec3(-2, 0, -2), Vec3(0, 0, 4), Vec3(4, 0, 0), 0));
+    s.camera = test::look_at(Vec3(0.3f, 2.0f, 2.5f), Vec3(0, 0, -0.2f), 0.9f);
+    s.has_camera = true;
+    return s;
+}
+
+float relative_error(const Rgb& got, const Rgb& want) {
+    const float scale = std::max(max_component(want), 1e-30f);
+    return max_component(glm::abs(got - want)) / scale;
+}
+
+TEST_F(ShadingTest, APointVplOverADiffusePlaneGivesTheAnalyticDirectLight) {
+    const Rgb albedo(0.3f, 0.6f, 0.9f);
+    const scene::Scene scene = floor_scene(test::diffuse_material(albedo));
+    light::Vpl vpl;
+    vpl.type = light::VplType::Point;
+    vpl.position = Vec3(0.4f, 1.2f, -0.3f);
+    vpl.power = Rgb(5.0f, 4.0f, 3.0f);
+
+    VplRenderer renderer(context(), scene);
+    RenderOptions options;
+    options.width = options.height = kSize;
+    options.shadow_resolution = 32;
+    options.batch = 4;
+    const Image image = renderer.render({vpl}, options);
+
+    int lit = 0;
+    float worst = 0.0f;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const std::optional<testing::CpuHit> hit =
+                testing::cast_camera_ray(scene, kSize, kSize, x, y);
+            if (!hit) {
+                EXPECT_EQ(image.at(x, y), Rgb(0.0f));
+                continue;
+            }
+            // E = I cos θ / d², L = ρ/π · E (the plane's normal is +y).
+            const Vec3 to_light = vpl.position - hit->p;
+            const float d2 = glm::dot(to_light, to_light);
+            const float cos_theta = to_light.y / std::sqrt(d2);
+            const Rgb expected = albedo * kInvPi * vpl.power * cos_theta / d2;
+            ++lit;
+            worst = std::max(worst, relative_error(image.at(x, y), expected));
+        }
+    }
+    EXPECT_GT(lit, kSize * kSize / 2);
+    EXPECT_LT(worst, 1e-3f);
+    RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
+TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) {
+    scene::Material glossy;
+    glossy.base_color = Rgb(0.7f, 0.5f, 0.3f);
+    glossy.metallic = 0.3f;
+    glossy.roughness = 0.35f;
+    glossy.specular = 0.8f;
+    glossy.specular_color = Rgb(1.0f, 0.9f, 0.95f);
+    glossy.ior = 1.6f;
+    const scene::Scene scene = floor_scene(glossy);
+
+    std::vector<light::Vpl> vpls(4);
+    light::Vpl& surface = vpls[0];
+    surface.type = light::VplType::Surface;
+    surface.position = Vec3(-0.5f, 0.8f, -0.6f);
+    surface.normal = glm::normalize(Vec3(0.3f, -1.0f, 0.4f));
+    surface.shading_normal = glm::normalize(Vec3(0.35f, -1.0f, 0.3f));
+    surface.wi = glm::normalize(Vec3(-0.4f, -0.5f, -0.2f));
+    surface.power = Rgb(1.5f, 1.2f, 1.0f);
+    surface.closure.base_color = Rgb(0.2f, 0.8f, 0.4f);
+    surface.closure.metallic = 0.6f;
+    surface.closure.roughness = 0.3f;
+    surface.closure.specular = 1.0f;
+    surface.closure.specular_color = Rgb(1.0f);
+    surface.closure.ior = 1.45f;
+    surface.path_length = 1;
+    light::Vpl& area = vpls[1];
+    area.type = light::VplType::Area;
+    area.position = Vec3(0.6f, 1.1f, 0.2f);
+    area.normal = glm::normalize(Vec3(-0.2f, -1.0f, -0.1f));
+    area.power = Rgb(2.0f, 2.5f, 3.0f);
+    light::Vpl& spot = vpls[2];
+    spot.type = light::VplType::Spot;
+    spot.position = Vec3(0.0f, 1.5f, 0.5f);
+    spot.normal = glm::normalize(Vec3(0.1f, -1.0f, -0.3f));
+    spot.cos_inner = std::cos(0.3f);
+    spot.cos_outer = std::cos(0.6f);
+    spot.power = Rgb(3.0f);
+    light::Vpl& directional = vpls[3];
+    directional.type = light::VplType::Directional;
+    directional.normal = glm::normalize(Vec3(0.5f, -1.0f, 0.2f));
+    directional.power = Rgb(0.3f, 0.2f, 0.1f);
+
+    VplRenderer renderer(context(), scene);
+    RenderOptions options;
+    options.width = options.height = kSize;
+    options.shadow_resolution = 32;
+    options.batch = 3;      // two batches: accumulation across batches is part of the test
+    options.clamp = 0.05f;  // d_min = 0.05 · diagonal ≈ 0.28: active for the nearby pixels
+    const Image image = renderer.render(vpls, options);
+
+    const float d_min = options.clamp * std::sqrt(32.0f);  // the floor's diagonal
+    const material::ClosureParams receiver = testing::closure_of(glossy);
+    int compared = 0;
+    int lit = 0;
+    float worst = 0.0f;
+    for (int y = 0; y < kSize; ++y) {
+        for (int x = 0; x < kSize; ++x) {
+            const std::optional<testing::CpuHit> hit =
+                testing::cast_camera_ray(scene, kSize, kSize, x, y);
+            if (!hit) continue;
+            Rgb expected(0.0f);
+            for (const light::Vpl& v : vpls) {
+                expected += testing::cpu_contribution(v, hit->p, hit->ng, receiver,
+                                                      scene.camera.position(), d_min);
+            }
+            ++compared;
+            if (max_component(expected) > 1e-4f) ++lit;
+            worst = std::max(worst, relative_error(image.at(x, y), expected));
+        }
+    }
+    EXPECT_GT(compared, kSize * kSize / 2);
+    EXPECT_GT(lit, compared * 9 / 10) << "the comparison must not be of zeros";
+    EXPECT_LT(worst, 1e-3f);
+    RecordProperty("worst_relative_error", std::to_string(worst));
+}
+
+TEST_F(ShadingTest, EmittedRadianceIsAddedOnceWhateverTheNumberOfBatches) {
+    scene::Material lamp = test::diffuse_material(Rgb(0.5f));
+    lamp.emissive = Rgb(0.25f, 0.5f, 1.0f);
+    lamp.emissive_strength = 3.0f;
+    const scene::Scene scene = floor_scene(lamp);
+    // VPLs under the floor: they light nothing the camera sees, but make three batches.
+    std::vector<light::Vpl> vpls(3);
+    for (light::Vpl& v : vpls) {
+        v.type = light::VplType::Point;
+        v.position = Vec3(0.0f, -1.0f, 0.0f);
+        v.power = Rgb(10.0f);
+    }
+    VplRenderer renderer(context(), scene);
+    RenderOptions options;
+    options.width = options.height = 16;
+    options.shadow_resolution = 16;
+    options.batch = 1;
+    RenderTimings timings;
+    for (const std::vector<light::Vpl>& list : {std::vector<light::Vpl>{}, vpls}) {
+        const Image image = renderer.render(list, options, &timings);
+        EXPECT_EQ(timings.batches, uint32_t(list.size()));
+        int covered = 0;
+        for (int y = 0; y < 16; ++y) {
+            for (int x = 0; x < 16; ++x) {
+                if (!testing::cast_camera_ray(scene, 16, 16, x, y)) continue;
+                ++covered;
+                EXPECT_EQ(image.at(x, y), lamp.emission()) << x << "," << y;
+            }
+        }
+        EXPECT_GT(covered, 100);
+    }
+}
+
+}  // namespace
+}  // namespace mvpl::render
