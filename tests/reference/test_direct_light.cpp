@@ -11,43 +11,13 @@
 #include "engine/reference/path_tracer.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
+#include "tests/support/lit_plane.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl {
 namespace {
 
-constexpr float kAlbedo = 0.6f;
 constexpr int kRes = 24;
-
-scene::Scene lit_plane(const scene::Light& light) {
-    scene::Scene s;
-    s.materials.push_back(test::diffuse_material(Rgb(kAlbedo)));
-    s.meshes.push_back(test::make_quad(Vec3(-2, 0, -2), Vec3(0, 0, 4), Vec3(4, 0, 0), 0));
-    s.lights.push_back(light);
-    s.camera = test::look_at(Vec3(0.3f, 3.0f, 0.2f), Vec3(0.3f, 0.0f, 0.0f), 0.9f);
-    s.has_camera = true;
-    return s;
-}
-
-Rgb analytic_radiance(const scene::Light& light, const Vec3& p) {
-    const Vec3 n(0, 1, 0);
-    if (light.type == scene::LightType::Directional) {
-        return kAlbedo * kInvPi * light.intensity * std::max(0.0f, glm::dot(n, -light.direction));
-    }
-    const Vec3 d = light.position - p;
-    const float dist2 = glm::dot(d, d);
-    const Vec3 wi = d / std::sqrt(dist2);
-    float falloff = 1.0f;
-    if (light.type == scene::LightType::Spot) {
-        // KHR_lights_punctual's reference falloff, written out independently of the renderer.
-        const float scale =
-            1.0f / std::max(0.001f, std::cos(light.inner_cone) - std::cos(light.outer_cone));
-        const float offset = -std::cos(light.outer_cone) * scale;
-        const float a = std::clamp(glm::dot(light.direction, -wi) * scale + offset, 0.0f, 1.0f);
-        falloff = a * a;
-    }
-    return kAlbedo * kInvPi * light.intensity * falloff * std::max(0.0f, glm::dot(n, wi)) / dist2;
-}
 
 struct PixelExpectation {
     float mean = 0.0f;    // green channel
@@ -62,7 +32,7 @@ PixelExpectation expected_pixel(const scene::Scene& s, int x, int y) {
             const Vec2 film(x + (i + 0.5f) / kGrid, y + (j + 0.5f) / kGrid);
             const scene::CameraRay r = scene::generate_camera_ray(s.camera, kRes, kRes, film);
             const float t = -r.origin.y / r.direction.y;
-            const double v = analytic_radiance(s.lights[0], r.origin + t * r.direction).g;
+            const double v = test::lit_plane_radiance(s.lights[0], r.origin + t * r.direction).g;
             sum += v;
             sum2 += v * v;
         }
@@ -104,30 +74,15 @@ void expect_matches_analytic(const scene::Scene& s) {
 }
 
 TEST(DirectLight, PointLight) {
-    scene::Light l;
-    l.type = scene::LightType::Point;
-    l.position = Vec3(-0.4f, 1.2f, 0.3f);
-    l.intensity = Rgb(3.0f, 2.0f, 1.0f);
-    expect_matches_analytic(lit_plane(l));
+    expect_matches_analytic(test::make_lit_plane(test::example_point_light()));
 }
 
 TEST(DirectLight, SpotLight) {
-    scene::Light l;
-    l.type = scene::LightType::Spot;
-    l.position = Vec3(0.3f, 1.0f, 0.0f);
-    l.direction = glm::normalize(Vec3(0.2f, -1.0f, 0.1f));
-    l.inner_cone = 0.3f;
-    l.outer_cone = 0.6f;
-    l.intensity = Rgb(4.0f);
-    expect_matches_analytic(lit_plane(l));
+    expect_matches_analytic(test::make_lit_plane(test::example_spot_light()));
 }
 
 TEST(DirectLight, DirectionalLight) {
-    scene::Light l;
-    l.type = scene::LightType::Directional;
-    l.direction = glm::normalize(Vec3(0.5f, -1.0f, 0.25f));
-    l.intensity = Rgb(2.0f);
-    expect_matches_analytic(lit_plane(l));
+    expect_matches_analytic(test::make_lit_plane(test::example_directional_light()));
 }
 
 // Max depth 1 shows emitters only: a scene lit by punctual lights is black.
@@ -136,7 +91,7 @@ TEST(DirectLight, DepthOneIsBlackWithoutVisibleEmitters) {
     l.type = scene::LightType::Point;
     l.position = Vec3(0, 1, 0);
     l.intensity = Rgb(1.0f);
-    const scene::Scene s = lit_plane(l);
+    const scene::Scene s = test::make_lit_plane(l);
     const trace::Accel accel(s);
     const light::LightSampler lights(s);
     reference::PathTracerOptions o;

@@ -13,6 +13,7 @@
 #include "engine/trace/accel.h"
 #include "sampler/monte_carlo_sampler.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/support/lit_plane.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl::render {
@@ -104,15 +105,8 @@ TEST_F(VplPipelineTest, CornellBoxMatchesMitsubaWithClampingOff) {
 // Point lights only, max depth 2: the sampler leaves Point VPLs whose powers sum to the intensity,
 // and the GPU image equals the analytic direct light at pixel centres.
 TEST_F(VplPipelineTest, PointLightDirectLightIsAnalytic) {
-    scene::Scene s;
-    s.materials.push_back(test::diffuse_material(Rgb(0.6f)));
-    s.meshes.push_back(test::make_quad(Vec3(-2, 0, -2), Vec3(0, 0, 4), Vec3(4, 0, 0), 0));
-    scene::Light l;
-    l.position = Vec3(-0.4f, 1.2f, 0.3f);
-    l.intensity = Rgb(3.0f, 2.0f, 1.0f);
-    s.lights.push_back(l);
-    s.camera = test::look_at(Vec3(0.3f, 3.0f, 0.2f), Vec3(0.3f, 0.0f, 0.0f), 0.9f);
-    s.has_camera = true;
+    const scene::Light l = test::example_point_light();
+    const scene::Scene s = test::make_lit_plane(l);
     const std::vector<light::Vpl> vpls = monte_carlo_vpls(s, 16, 2, 0);
     ASSERT_FALSE(vpls.empty());
     const Image image = gpu_render(context(), s, vpls, 32, 64, 0.0f);
@@ -122,9 +116,7 @@ TEST_F(VplPipelineTest, PointLightDirectLightIsAnalytic) {
             const scene::CameraRay r =
                 scene::generate_camera_ray(s.camera, 32, 32, Vec2(x + 0.5f, y + 0.5f));
             const Vec3 p = r.origin + (-r.origin.y / r.direction.y) * r.direction;
-            const Vec3 d = l.position - p;
-            const float expected =
-                0.6f * kInvPi * l.intensity.g * d.y / std::pow(glm::dot(d, d), 1.5f);
+            const float expected = test::lit_plane_radiance(l, p).g;
             worst = std::max(worst, double(std::abs(image.at(x, y).g - expected) / expected));
         }
     }
