@@ -21,6 +21,55 @@ MonteCarloSampler::MonteCarloSampler(const scene::Scene& scene, const trace::Acc
                                      const light::LightSampler& lights)
     : m_scene(scene), m_accel(accel), m_lights(lights) {}
 
+void trace_paths(const LightTracer& tracer, const MonteCarloOptions& options, uint64_t begin,
+                 uint64_t end, float scale, std::vector<light::Vpl>& out, Progress* progress) {
+    if (end <= begin) return;
+    const uint64_t seed = mix_bits(options.seed);
+    // Streams: 2i for the path's primary samples, 2i + 1 for the One-mode pick.
+    const std::vector<float> shifts =
+        options.qmc ? halton_shifts(options.seed, options.qmc_dimensions) : std::vector<float>{};
+    // Blocks aligned to multiples of kBlock from path 0, so that the split does not depend on
+    // where a progressive call starts (only the concatenation order matters, and it is by path).
+    const uint64_t first_block = begin / kBlock;
+    const uint64_t blocks = (end + kBlock - 1) / kBlock - first_block;
+    std::vector<std::vector<light::Vpl>> per_block(blocks);
+    parallel_for(int64_t(blocks), 1, [&](int64_t b0, int64_t b1) {
+        std::vector<light::Vpl> path;
+        for (int64_t b = b0; b < b1; ++b) {
+            std::vector<light::Vpl>& block = per_block[size_t(b)];
+            const uint64_t lo = std::max(begin, (first_block + uint64_t(b)) * kBlock);
+            const uint64_t hi = std::min(end, (first_block + uint64_t(b) + 1) * kBlock);
+            for (uint64_t i = lo; i < hi; ++i) {
+                path.clear();
+                if (options.qmc) {
+                    HaltonStream u(i, shifts, seed, 2 * i);
+                    tracer.trace(u, scale, path);
+                } else {
+                    RandomStream u(seed, 2 * i);
+                    tracer.trace(u, scale, path);
+                }
+                if (path.empty()) continue;
+                if (options.per_path == VplsPerPath::All) {
+                    block.insert(block.end(), path.begin(), path.end());
+                } else {
+                    Rng pick(seed, 2 * i + 1);
+                    const size_t m = path.size();
+                    light::Vpl v = path[std::min(m - 1, size_t(pick.next_float() * float(m)))];
+                    v.power *= float(m);  // divided by the pick probability 1/m
+                    block.push_back(v);
+                }
+            }
+            if (progress) progress->advance();
+        }
+    });
+    size_t total = out.size();
+    for (const auto& block : per_block)
+        total += block.size();
+    out.reserve(total);
+    for (auto& block : per_block)
+        out.insert(out.end(), block.begin(), block.end());
+}
+
 std::vector<light::Vpl> MonteCarloSampler::generate(const MonteCarloOptions& options,
                                                     SamplerStats* stats) const {
     Timer timer;
@@ -28,51 +77,10 @@ std::vector<light::Vpl> MonteCarloSampler::generate(const MonteCarloOptions& opt
     const LightTracer tracer(m_scene, m_accel, m_lights, options.tracer);
     const uint64_t n = options.paths;
     const float scale = n > 0 ? float(1.0 / double(n)) : 0.0f;
-    const uint64_t seed = mix_bits(options.seed);
-    // Streams: 2i for the path's primary samples, 2i + 1 for the One-mode pick.
-    const std::vector<float> shifts =
-        options.qmc ? halton_shifts(options.seed, options.qmc_dimensions) : std::vector<float>{};
-    const uint64_t blocks = (n + kBlock - 1) / kBlock;
-    std::vector<std::vector<light::Vpl>> per_block(blocks);
-    Progress progress("light paths", int64_t(blocks), options.quiet);
-    if (!m_lights.empty()) {
-        parallel_for(int64_t(blocks), 1, [&](int64_t b0, int64_t b1) {
-            std::vector<light::Vpl> path;
-            for (int64_t b = b0; b < b1; ++b) {
-                std::vector<light::Vpl>& out = per_block[size_t(b)];
-                const uint64_t end = std::min(n, uint64_t(b + 1) * kBlock);
-                for (uint64_t i = uint64_t(b) * kBlock; i < end; ++i) {
-                    path.clear();
-                    if (options.qmc) {
-                        HaltonStream u(i, shifts, seed, 2 * i);
-                        tracer.trace(u, scale, path);
-                    } else {
-                        RandomStream u(seed, 2 * i);
-                        tracer.trace(u, scale, path);
-                    }
-                    if (path.empty()) continue;
-                    if (options.per_path == VplsPerPath::All) {
-                        out.insert(out.end(), path.begin(), path.end());
-                    } else {
-                        Rng pick(seed, 2 * i + 1);
-                        const size_t m = path.size();
-                        light::Vpl v = path[std::min(m - 1, size_t(pick.next_float() * float(m)))];
-                        v.power *= float(m);  // divided by the pick probability 1/m
-                        out.push_back(v);
-                    }
-                }
-                progress.advance();
-            }
-        });
-    }
-    progress.finish();
-    size_t total = 0;
-    for (const auto& block : per_block)
-        total += block.size();
+    Progress progress("light paths", int64_t((n + kBlock - 1) / kBlock), options.quiet);
     std::vector<light::Vpl> vpls;
-    vpls.reserve(total);
-    for (auto& block : per_block)
-        vpls.insert(vpls.end(), block.begin(), block.end());
+    if (!m_lights.empty()) trace_paths(tracer, options, 0, n, scale, vpls, &progress);
+    progress.finish();
     if (stats) {
         stats->paths = n;
         stats->vpls = vpls.size();

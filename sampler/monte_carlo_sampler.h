@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/core/progress.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
@@ -54,5 +55,12 @@ private:
     const trace::Accel& m_accel;
     const light::LightSampler& m_lights;
 };
+
+// Appends the VPLs of paths [begin, end) of the sequence that `options` defines (seed, qmc,
+// per_path), powers scaled by `scale`, in path order: generate() and the progressive
+// MonteCarloStream produce the same VPLs. Parallel over blocks of paths, deterministic.
+void trace_paths(const LightTracer& tracer, const MonteCarloOptions& options, uint64_t begin,
+                 uint64_t end, float scale, std::vector<light::Vpl>& out,
+                 Progress* progress = nullptr);
 
 }  // namespace mvpl::sampler

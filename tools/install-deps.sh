@@ -12,6 +12,12 @@ packages=(
   libgtest-dev libgmock-dev
   # GPU renderer (Vulkan on Mesa lavapipe, run-time GLSL compilation, validation in tests)
   libvulkan-dev mesa-vulkan-drivers glslang-dev vulkan-validationlayers
+  # mesh formats: OBJ (PLY is read by our own loader)
+  libtinyobjloader-dev
+  # interactive preview, and its tests under a virtual X server
+  libglfw3-dev libimgui-dev xvfb xauth
+  # convergence plots (tools/plot_convergence.py)
+  python3-matplotlib
 )
 
 missing=()

@@ -17,6 +17,10 @@ constexpr const char* kUsage =
     "  reference SCENE   render with the CPU reference path tracer\n"
     "  compare A B       error of image A against reference B\n"
     "  info              Vulkan devices and their limits\n"
+    "  preview SCENE     interactive window, refining while the camera rests\n"
+    "  vpls SCENE        where a sampler puts its VPLs, drawn over the scene\n"
+    "  bench SCENE       VPL throughput: light paths, shadow and shading passes, memory\n"
+    "  convergence SCENE error against run time: path tracer and VPL samplers vs --ref\n"
     "\n"
     "`mvpl COMMAND --help` describes a command's options.\n";
 
@@ -43,6 +47,10 @@ int main(int argc, char** argv) {
         if (command == "render") return cli::run_render(args);
         if (command == "compare") return cli::run_compare(args);
         if (command == "info") return cli::run_info(args);
+        if (command == "preview") return cli::run_preview(args);
+        if (command == "vpls") return cli::run_vpls(args);
+        if (command == "bench") return cli::run_bench(args);
+        if (command == "convergence") return cli::run_convergence(args);
         if (command == "--help" || command == "-h" || command == "help") {
             std::fputs(kUsage, stdout);
             return 0;

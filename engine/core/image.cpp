@@ -1,5 +1,7 @@
 #include "engine/core/image.h"
 
+#include "engine/core/finite_check.h"
+
 #include <ImfChannelList.h>
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
@@ -42,6 +44,8 @@ static std::string extension_of(const std::string& path) {
 
 void write_image(const Image& image, const std::string& path, float exposure) {
     const std::string ext = extension_of(path);
+    // The last guard: a non-finite value is never written silently (finite_check.h).
+    require_finite(image, path + " not written");
     if (ext == ".exr") {
         write_exr(image, path);
     } else if (ext == ".png") {

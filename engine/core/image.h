@@ -29,8 +29,9 @@ private:
 };
 
 // Writes by the extension of `path`: .exr (32-bit float linear) or .png (8-bit sRGB after
-// multiplying by 2^exposure). Throws UsageError for another extension, std::runtime_error when
-// the file cannot be written.
+// multiplying by 2^exposure). Throws UsageError for another extension, NonFiniteError
+// (finite_check.h) for an image with a NaN or an infinity, std::runtime_error when the file
+// cannot be written.
 void write_image(const Image& image, const std::string& path, float exposure = 0.0f);
 void write_exr(const Image& image, const std::string& path);
 void write_png(const Image& image, const std::string& path, float exposure = 0.0f);

@@ -43,7 +43,8 @@ Context::Context(ContextOptions options)
         validation_source = "the caller (ContextOptions::validation)";
     else if (validation_requested_by_environment())
         validation_source = "MVPL_VALIDATION=1";
-    m_instance = std::make_unique<Instance>(validation_source, m_log.get());
+    m_instance =
+        std::make_unique<Instance>(validation_source, m_log.get(), options.instance_extensions);
 
     const std::vector<VkPhysicalDevice> physical = m_instance->physical_devices();
     std::vector<DeviceInfo> devices;
@@ -68,6 +69,13 @@ Context::Context(ContextOptions options)
     m_device_info = devices[size_t(index)];
     m_physical_device = physical[size_t(index)];
     m_queue_family = uint32_t(m_device_info.queue_family);
+    if (options.can_present) {
+        if (!options.can_present(m_instance->handle(), m_physical_device, m_queue_family)) {
+            throw GpuError(m_device_info.name + ": its graphics+compute queue family " +
+                           std::to_string(m_queue_family) + " cannot present to the window system");
+        }
+        m_presentable = true;
+    }
 
     // What the device offers, then the subset mvpl turns on: required ones are checked, optional
     // ones are enabled when present so that the passes can rely on a fixed baseline on desktops.
@@ -121,6 +129,11 @@ Context::Context(ContextOptions options)
     device_info.pNext = &use;
     device_info.queueCreateInfoCount = 1;
     device_info.pQueueCreateInfos = &queue_info;
+    const char* swapchain_extension = VK_KHR_SWAPCHAIN_EXTENSION_NAME;
+    if (m_presentable) {
+        device_info.enabledExtensionCount = 1;
+        device_info.ppEnabledExtensionNames = &swapchain_extension;
+    }
     vk_check(vkCreateDevice(m_physical_device, &device_info, nullptr, &m_device),
              "vkCreateDevice(" + m_device_info.name + ")");
 

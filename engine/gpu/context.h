@@ -36,6 +36,13 @@ struct ContextOptions {
     // Where validation messages go. Pass your own to see what is reported while the context is
     // destroyed (leaked objects); by default the context makes one.
     std::shared_ptr<ValidationLog> validation_log;
+    // Presenting to a window (mvpl preview); both empty for the headless context. The instance
+    // extensions the window system needs (glfwGetRequiredInstanceExtensions), and a test whether
+    // a queue family of a physical device can present to it (glfwGetPhysicalDevicePresentation-
+    // Support). When can_present is set the device gets VK_KHR_swapchain, and a device whose
+    // graphics+compute queue cannot present is an error: one queue does everything.
+    std::vector<std::string> instance_extensions;
+    std::function<bool(VkInstance, VkPhysicalDevice, uint32_t queue_family)> can_present;
 };
 
 class Context {
@@ -49,6 +56,8 @@ public:
     const DeviceInfo& device_info() const { return m_device_info; }
 
     bool validation_enabled() const;
+    // Whether the device was created with VK_KHR_swapchain (ContextOptions::can_present).
+    bool presentable() const { return m_presentable; }
     size_t validation_message_count() const { return m_log->count(); }
     std::vector<std::string> validation_messages() const { return m_log->messages(); }
     ValidationLog& validation_log() const { return *m_log; }
@@ -88,6 +97,7 @@ private:
     VkDevice m_device = nullptr;
     VkQueue m_queue = nullptr;
     uint32_t m_queue_family = 0;
+    bool m_presentable = false;
     std::unique_ptr<MemoryAllocator> m_allocator;
 
     std::mutex m_submit_mutex;

@@ -28,7 +28,8 @@ std::vector<VkExtensionProperties> instance_extensions(const char* layer) {
 
 }  // namespace
 
-Instance::Instance(const std::string& validation_source, ValidationLog* log) {
+Instance::Instance(const std::string& validation_source, ValidationLog* log,
+                   const std::vector<std::string>& extra_extensions) {
     const bool validation = !validation_source.empty();
     if (validation && !validation_layer_available()) {
         throw GpuError(validation_source + " asks for Vulkan validation, but the layer " +
@@ -45,6 +46,13 @@ Instance::Instance(const std::string& validation_source, ValidationLog* log) {
     if (has_extension(available, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
         extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
         flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+    }
+    for (const std::string& name : extra_extensions) {
+        if (!has_extension(available, name.c_str())) {
+            throw GpuError("the Vulkan loader lacks the instance extension " + name +
+                           ", which presenting to a window needs");
+        }
+        extensions.push_back(name.c_str());
     }
     VkDebugUtilsMessengerCreateInfoEXT messenger_info{};
     bool validation_features = false;

@@ -15,7 +15,10 @@ class Instance {
 public:
     // validation_source says who asked for validation ("MVPL_VALIDATION=1", "the caller"), for
     // the error when the layer is missing; empty: no validation. log receives the messages.
-    Instance(const std::string& validation_source, ValidationLog* log);
+    // extra_extensions: instance extensions a window system needs to present (GLFW's list);
+    // a missing one is an error naming it.
+    Instance(const std::string& validation_source, ValidationLog* log,
+             const std::vector<std::string>& extra_extensions = {});
     ~Instance();
     Instance(const Instance&) = delete;
     Instance& operator=(const Instance&) = delete;

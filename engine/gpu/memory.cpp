@@ -108,7 +108,11 @@ Allocation MemoryAllocator::allocate(uint64_t size, uint32_t memory_type_bits,
         }
         allocation.mapped = static_cast<std::byte*>(mapped);
     }
-    m_bytes += size;
+    const uint64_t now = m_bytes += size;
+    // Lock-free maximum: retry while another thread raised the peak below our value.
+    uint64_t peak = m_peak.load();
+    while (now > peak && !m_peak.compare_exchange_weak(peak, now)) {
+    }
     ++m_count;
     return allocation;
 }

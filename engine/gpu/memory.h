@@ -45,12 +45,17 @@ public:
 
     uint64_t allocated_bytes() const { return m_bytes.load(); }
     uint32_t allocation_count() const { return m_count.load(); }
+    // High-water mark of allocated_bytes() since construction or the last reset_peak() (mvpl
+    // bench reports it as the peak device memory; Vulkan has no portable per-process query).
+    uint64_t peak_bytes() const { return m_peak.load(); }
+    void reset_peak() { m_peak.store(m_bytes.load()); }
 
 private:
     VkDevice m_device = nullptr;
     std::vector<uint32_t> m_type_flags;  // VkMemoryPropertyFlags per memory type
     std::atomic<uint64_t> m_bytes{0};
     std::atomic<uint32_t> m_count{0};
+    std::atomic<uint64_t> m_peak{0};
 };
 
 }  // namespace mvpl::gpu

@@ -3,6 +3,7 @@
 #include <glslang/Public/ResourceLimits.h>
 #include <glslang/Public/ShaderLang.h>
 #include <glslang/SPIRV/GlslangToSpv.h>
+#include <glslang/build_info.h>
 
 #include <memory>
 #include <regex>
@@ -143,6 +144,12 @@ ShaderStage stage_from_name(std::string_view name) {
     if (name.ends_with(".geom")) return ShaderStage::geometry;
     throw GpuError("shader '" + std::string(name) +
                    "': no stage for its extension (use .vert, .frag, .comp or .geom)");
+}
+
+std::string glslang_identity() {
+    return "glslang " + std::to_string(GLSLANG_VERSION_MAJOR) + "." +
+           std::to_string(GLSLANG_VERSION_MINOR) + "." + std::to_string(GLSLANG_VERSION_PATCH) +
+           GLSLANG_VERSION_FLAVOR + " vulkan1.3 spv1.6 no-optimizer no-debug-info";
 }
 
 std::vector<uint32_t> compile_embedded_shader(std::string_view name) {

@@ -4,9 +4,11 @@
 #include <array>
 
 #include "engine/gpu/command_list.h"
+#include "engine/gpu/compute_pipeline.h"
 #include "engine/gpu/graphics_pipeline.h"
 #include "engine/gpu/shader_compiler.h"
 #include "engine/render/scene_geometry.h"
+#include "engine/render/shader_program.h"
 
 namespace mvpl::render {
 namespace {
@@ -14,24 +16,49 @@ namespace {
 // Mirrors GBufferPush in shaders/render/g_buffer_push.glsl.
 struct GBufferPush {
     float view_proj[16];
-    float base_color_metallic[4];
-    float specular_color_specular[4];
-    float emission_roughness[4];
-    float ior;
     uint32_t material_flags;
+    uint32_t material;
 };
-static_assert(sizeof(GBufferPush) == 120);
+static_assert(sizeof(GBufferPush) == 72);
+
+// Mirrors MaterialPush in shaders/render/material_template.glsl.
+struct MaterialPush {
+    uint32_t size[2];
+};
 
 gpu::GraphicsLayout g_buffer_layout() {
     gpu::GraphicsLayout layout;
     layout.vertex_stride = sizeof(GeometryVertex);
     layout.attributes = {{gpu::VertexFormat::float3, offsetof(GeometryVertex, position)},
                          {gpu::VertexFormat::float3, offsetof(GeometryVertex, normal)},
-                         {gpu::VertexFormat::float3, offsetof(GeometryVertex, face_normal)}};
+                         {gpu::VertexFormat::float3, offsetof(GeometryVertex, face_normal)},
+                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, uv)},
+                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, tangent)}};
     layout.color_formats.assign(kGBufferLayerCount, gpu::Format::rgba32_float);
     layout.depth = true;
     layout.push_constant_bytes = sizeof(GBufferPush);
     return layout;
+}
+
+std::vector<uint32_t> compile_stage(const StageSource& stage, const gpu::SpirvCacheOptions& cache) {
+    return gpu::compile_glsl_cached(gpu::stage_from_name(stage.name), stage.source,
+                                    "render/" + stage.name, cache);
+}
+
+std::unique_ptr<gpu::GraphicsPipeline> make_pipeline(gpu::Context& context,
+                                                     const SceneGeometry& geometry,
+                                                     const StageSource* vert,
+                                                     const StageSource* frag,
+                                                     const gpu::SpirvCacheOptions& cache) {
+    GBufferSources generated;
+    if (!vert || !frag) {
+        generated = generate_g_buffer_sources(geometry.graphs(), geometry.textures());
+        vert = &generated.vert;
+        frag = &generated.frag;
+    }
+    return std::make_unique<gpu::GraphicsPipeline>(context, compile_stage(*vert, cache),
+                                                   compile_stage(*frag, cache), g_buffer_layout(),
+                                                   "g-buffer");
 }
 
 }  // namespace
@@ -51,7 +78,8 @@ Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_
 }
 
 GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, uint32_t width,
-                         uint32_t height)
+                         uint32_t height, const StageSource* vert, const StageSource* frag,
+                         const gpu::SpirvCacheOptions& cache)
     : m_geometry(&geometry),
       m_image(context,
               {width, height, kGBufferLayerCount, gpu::Format::rgba32_float,
@@ -60,9 +88,27 @@ GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, u
       m_depth(context,
               {width, height, 1, gpu::Format::d32_float, gpu::ImageUsage::depth_attachment, false},
               "g-buffer depth"),
-      m_pipeline(std::make_unique<gpu::GraphicsPipeline>(
-          context, gpu::compile_embedded_shader("render/g_buffer.vert"),
-          gpu::compile_embedded_shader("render/g_buffer.frag"), g_buffer_layout(), "g-buffer")) {}
+      m_pipeline(make_pipeline(context, geometry, vert, frag, cache)) {
+    const GBufferSources sources =
+        generate_g_buffer_sources(geometry.graphs(), geometry.textures());
+    if (!sources.has_material_pass()) return;
+    gpu::ComputeLayout layout{{gpu::BindingType::storage_image}, sizeof(MaterialPush)};
+    for (const int index : sources.textures) {
+        const scene::Texture& t = geometry.textures()[size_t(index)];
+        gpu::Image image(context,
+                         {uint32_t(t.width), uint32_t(t.height), 1, gpu::Format::rgba32_float,
+                          gpu::ImageUsage::sampled, false},
+                         "texture " + t.name);
+        image.upload(t.texels);
+        m_textures.push_back(std::move(image));
+        layout.bindings.push_back(gpu::BindingType::sampled_image);
+    }
+    m_material_pipeline = std::make_unique<gpu::ComputePipeline>(
+        context,
+        gpu::compile_glsl_cached(gpu::ShaderStage::compute, sources.material.source,
+                                 "render/material.comp", cache),
+        layout, "material pass");
+}
 
 GBufferPass::~GBufferPass() = default;
 
@@ -77,25 +123,21 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera) {
     std::copy_n(&view_proj[0][0], 16, push.view_proj);
     for (const GeometryDraw& draw : m_geometry->draws()) {
         const GeometryMaterial& m = m_geometry->materials()[draw.material];
-        const material::ClosureParams& c = m.closure;
-        push.base_color_metallic[0] = c.base_color.r;
-        push.base_color_metallic[1] = c.base_color.g;
-        push.base_color_metallic[2] = c.base_color.b;
-        push.base_color_metallic[3] = c.metallic;
-        push.specular_color_specular[0] = c.specular_color.r;
-        push.specular_color_specular[1] = c.specular_color.g;
-        push.specular_color_specular[2] = c.specular_color.b;
-        push.specular_color_specular[3] = c.specular;
-        push.emission_roughness[0] = m.emission.r;
-        push.emission_roughness[1] = m.emission.g;
-        push.emission_roughness[2] = m.emission.b;
-        push.emission_roughness[3] = c.roughness;
-        push.ior = c.ior;
         push.material_flags = m.double_sided ? 1u : 0u;
+        push.material = draw.material;
         gpu::draw(cmd, *m_pipeline, m_geometry->vertices(), gpu::push_bytes(push),
                   draw.first_vertex, draw.vertex_count);
     }
     gpu::end_rendering(cmd);
+    if (m_material_pipeline) {
+        cmd.barrier();
+        std::vector<gpu::Resource> resources{&m_image};
+        for (const gpu::Image& t : m_textures)
+            resources.push_back(&t);
+        const MaterialPush push{width(), height()};
+        cmd.dispatch(*m_material_pipeline, resources, gpu::push_bytes(push), (width() + 7) / 8,
+                     (height() + 7) / 8);
+    }
 }
 
 std::vector<GBufferTexel> GBufferPass::download() const {
@@ -112,11 +154,13 @@ std::vector<GBufferTexel> GBufferPass::download() const {
         const float* spec = at(kGBufferSpecular, i);
         const float* emission = at(kGBufferEmission, i);
         t.covered = p[3] > 0.0f;
+        t.material = t.covered ? uint32_t(p[3] + 0.5f) - 1u : 0u;
         t.position = Vec3(p[0], p[1], p[2]);
         t.shading_normal = Vec3(ns[0], ns[1], ns[2]);
         const uint32_t flags = uint32_t(ns[3]);
         t.front_face = (flags & 1u) != 0;
         t.double_sided = (flags & 2u) != 0;
+        t.closure_type = flags >> 2u;
         t.geometric_normal = Vec3(ng[0], ng[1], ng[2]);
         t.closure.metallic = ng[3];
         t.closure.base_color = Rgb(base[0], base[1], base[2]);

@@ -10,18 +10,21 @@
 #include "engine/core/color.h"
 #include "engine/core/math.h"
 #include "engine/gpu/image.h"
+#include "engine/gpu/spirv_cache.h"
 #include "engine/material/closure.h"
 #include "engine/scene/scene.h"
 
 namespace mvpl::gpu {
 class CommandList;
 class Context;
+class ComputePipeline;
 class GraphicsPipeline;
 }  // namespace mvpl::gpu
 
 namespace mvpl::render {
 
 class SceneGeometry;
+struct StageSource;
 
 // Layers of the G-buffer array (see shaders/render/g_buffer.frag for the packing).
 enum GBufferLayer : uint32_t {
@@ -31,19 +34,23 @@ enum GBufferLayer : uint32_t {
     kGBufferBaseColor = 3,
     kGBufferSpecular = 4,
     kGBufferEmission = 5,
-    kGBufferLayerCount = 6,
+    kGBufferUv = 6,       // uv0, uv1
+    kGBufferTangent = 7,  // unit tangent ⟂ the interpolated normal, w = bitangent sign
+    kGBufferLayerCount = 8,
 };
 
 // One pixel of the G-buffer, unpacked on the host (tests, debugging).
 struct GBufferTexel {
     bool covered = false;
+    uint32_t material = 0;  // scene material index
     Vec3 position{0.0f};
     Vec3 shading_normal{0.0f};    // interpolated vertex normal on the winding normal's side
     Vec3 geometric_normal{0.0f};  // the triangle's winding normal
     bool front_face = false;      // the camera sees the side the winding normal points to
     bool double_sided = false;
     material::ClosureParams closure;
-    Rgb emission{0.0f};  // zero on back faces
+    uint32_t closure_type = 0;  // material::ClosureType
+    Rgb emission{0.0f};         // zero on back faces
 };
 
 // The camera's reversed infinite perspective in Vulkan clip space: x right, y down (row 0 at the
@@ -52,8 +59,11 @@ Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_
 
 class GBufferPass {
 public:
+    // vert/frag: the generated stages (shader_program.h); nullptr: generated here from the
+    // geometry's material graphs.
     GBufferPass(gpu::Context& context, const SceneGeometry& geometry, uint32_t width,
-                uint32_t height);
+                uint32_t height, const StageSource* vert = nullptr,
+                const StageSource* frag = nullptr, const gpu::SpirvCacheOptions& cache = {});
     ~GBufferPass();
     GBufferPass(const GBufferPass&) = delete;
     GBufferPass& operator=(const GBufferPass&) = delete;
@@ -72,6 +82,9 @@ private:
     gpu::Image m_image;
     gpu::Image m_depth;
     std::unique_ptr<gpu::GraphicsPipeline> m_pipeline;
+    // The material pass (shader_program.h, GBufferSources): only for graphs with image textures.
+    std::unique_ptr<gpu::ComputePipeline> m_material_pipeline;
+    std::vector<gpu::Image> m_textures;
 };
 
 }  // namespace mvpl::render

@@ -1,5 +1,6 @@
 #include "engine/render/gpu_vpl.h"
 
+#include "engine/material/node_eval.h"
 #include "engine/render/directional_frame.h"
 
 namespace mvpl::render {
@@ -30,6 +31,7 @@ GpuVpl to_gpu_vpl(const light::Vpl& vpl, const scene::Bounds& bounds) {
     g.specular = c.specular;
     g.roughness = c.roughness;
     g.ior = c.ior;
+    g.closure_type = uint32_t(material::closure_type(c));
     if (vpl.type == light::VplType::Directional) {
         const DirectionalFrame f = directional_frame(vpl.normal, bounds);
         store(g.normal, f.dir);

@@ -30,7 +30,7 @@ struct GpuVpl {
     float specular;
     float roughness;
     float ior;
-    float pad2;
+    uint32_t closure_type;  // material::ClosureType of the closure
     float pad3;
 };
 static_assert(sizeof(GpuVpl) == 128);

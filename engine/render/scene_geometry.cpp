@@ -14,12 +14,23 @@ void store(float out[3], const Vec3& v) {
 
 }  // namespace
 
-SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene) {
+SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
+    : m_features(scene_features(scene, ShaderOptions{})), m_textures(scene.textures) {
     for (const scene::Material& m : scene.materials) {
         m_materials.push_back({material::clamp_to_valid_ranges(material::factor_closure(m)),
                                m.emission(), m.double_sided});
+        m_graphs.push_back(material::graph_from_gltf(m));
     }
-    if (m_materials.empty()) m_materials.push_back({});
+    if (m_materials.empty()) {
+        m_materials.push_back({});
+        // The same closure as GeometryMaterial's default ClosureParams.
+        scene::Material fallback;
+        const material::ClosureParams c;
+        fallback.base_color = c.base_color;
+        fallback.metallic = c.metallic;
+        fallback.roughness = c.roughness;
+        m_graphs.push_back(material::graph_from_gltf(fallback));
+    }
 
     std::vector<GeometryVertex> vertices;
     vertices.reserve(scene.triangle_count() * 3);
@@ -39,11 +50,31 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene) {
             const Vec3 cross = glm::cross(p1 - p0, p2 - p0);
             const float len = glm::length(cross);
             const Vec3 face = len > 0.0f ? cross / len : Vec3(0.0f);
+            // ∂p/∂u of the uv parametrisation (pbrt-v3 §3.6.2), as trace::make_interaction.
+            Vec3 dpdu(0.0f);
+            float sign = 1.0f;
+            if (!mesh.tangents.empty()) {
+                sign = mesh.tangents[idx[0]].w < 0.0f ? -1.0f : 1.0f;
+            } else if (!mesh.uv0.empty()) {
+                const Vec2 duv02 = mesh.uv0[idx[0]] - mesh.uv0[idx[2]];
+                const Vec2 duv12 = mesh.uv0[idx[1]] - mesh.uv0[idx[2]];
+                const float det = duv02.x * duv12.y - duv02.y * duv12.x;
+                if (std::abs(det) > 1e-12f)
+                    dpdu = ((p0 - p2) * duv12.y - (p1 - p2) * duv02.y) / det;
+            }
             for (int k = 0; k < 3; ++k) {
                 GeometryVertex v{};
                 store(v.position, mesh.positions[idx[k]]);
                 store(v.normal, mesh.normals.empty() ? face : mesh.normals[idx[k]]);
                 store(v.face_normal, face);
+                const Vec2 uv0 = mesh.uv0.empty() ? Vec2(0.0f) : mesh.uv0[idx[k]];
+                const Vec2 uv1 = mesh.uv1.empty() ? Vec2(0.0f) : mesh.uv1[idx[k]];
+                v.uv[0] = uv0.x;
+                v.uv[1] = uv0.y;
+                v.uv[2] = uv1.x;
+                v.uv[3] = uv1.y;
+                store(v.tangent, mesh.tangents.empty() ? dpdu : Vec3(mesh.tangents[idx[k]]));
+                v.tangent[3] = sign;
                 vertices.push_back(v);
                 m_bounds.extend(mesh.positions[idx[k]]);
             }
@@ -57,6 +88,15 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene) {
         gpu::Buffer(context, vertices.size() * sizeof(GeometryVertex), gpu::BufferUsage::vertex,
                     gpu::MemoryLocation::device, "scene vertices");
     m_vertices.upload(vertices);
+}
+
+void dump_scene_shaders(const std::string& dir, const SceneGeometry& geometry, bool surface_vpls) {
+    // The same generators as GBufferPass and ShadingPass use when given no sources.
+    const GBufferSources g = generate_g_buffer_sources(geometry.graphs(), geometry.textures());
+    const StageSource shading = generate_shading_source(geometry.features(surface_vpls));
+    std::vector<const StageSource*> stages{&g.vert, &g.frag, &shading};
+    if (g.has_material_pass()) stages.push_back(&g.material);
+    dump_shaders(dir, stages);
 }
 
 }  // namespace mvpl::render

@@ -10,6 +10,8 @@
 
 #include "engine/gpu/buffer.h"
 #include "engine/material/closure.h"
+#include "engine/material/node_graph.h"
+#include "engine/render/shader_program.h"
 #include "engine/scene/bounds.h"
 #include "engine/scene/scene.h"
 
@@ -20,10 +22,14 @@ struct GeometryVertex {
     float position[3];
     float normal[3];       // interpolated vertex normal (the shading normal)
     float face_normal[3];  // the triangle's winding normal, the same at its three vertices
+    float uv[4];           // TEXCOORD_0, TEXCOORD_1 (0 where the mesh has none)
+    // As trace::make_interaction: TANGENT.xyz, else the triangle's ∂p/∂u from TEXCOORD_0, else
+    // 0 (the fragment shader orthonormalises it); w = the tangent sign of the first vertex.
+    float tangent[4];
 };
-static_assert(sizeof(GeometryVertex) == 36);
+static_assert(sizeof(GeometryVertex) == 68);
 
-// What the G-buffer stores of a material (textures are not applied yet: factors only).
+// A material's factors (textures not applied), for tests and the host side.
 struct GeometryMaterial {
     material::ClosureParams closure;  // clamped to the glTF ranges, as Bsdf does
     Rgb emission{0.0f};
@@ -44,6 +50,16 @@ public:
     const gpu::Buffer& vertices() const { return m_vertices; }
     const std::vector<GeometryDraw>& draws() const { return m_draws; }
     const std::vector<GeometryMaterial>& materials() const { return m_materials; }
+    // The scene's material graphs, in material order (what the G-buffer shader resolves).
+    const std::vector<material::MaterialGraph>& graphs() const { return m_graphs; }
+    // The scene's decoded textures (what the graphs' image-texture nodes read).
+    const std::vector<scene::Texture>& textures() const { return m_textures; }
+    // What the scene can produce (scene_features), with or without surface VPLs.
+    ShaderFeatures features(bool surface_vpls) const {
+        ShaderFeatures f = m_features;
+        f.vpl_types[size_t(light::VplType::Surface)] = surface_vpls;
+        return f;
+    }
     uint32_t vertex_count() const { return m_vertex_count; }
     const scene::Bounds& bounds() const { return m_bounds; }
 
@@ -51,8 +67,15 @@ private:
     gpu::Buffer m_vertices;
     std::vector<GeometryDraw> m_draws;
     std::vector<GeometryMaterial> m_materials;
+    std::vector<material::MaterialGraph> m_graphs;
+    ShaderFeatures m_features;
+    std::vector<scene::Texture> m_textures;
     uint32_t m_vertex_count = 0;
     scene::Bounds m_bounds;
 };
+
+// Writes the generated GLSL of every stage that the renderer builds for this geometry
+// (g_buffer.vert, g_buffer.frag, shading.comp) into dir; InputError when it cannot.
+void dump_scene_shaders(const std::string& dir, const SceneGeometry& geometry, bool surface_vpls);
 
 }  // namespace mvpl::render

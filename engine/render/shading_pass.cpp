@@ -6,6 +6,7 @@
 #include "engine/gpu/compute_pipeline.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/shader_compiler.h"
+#include "engine/gpu/spirv_cache.h"
 #include "engine/render/gpu_vpl.h"
 
 namespace mvpl::render {
@@ -28,16 +29,36 @@ constexpr uint32_t kGroupSize = 8;
 // GPUs. A device with the spec's minimum of 16 KiB would need a smaller constant here.
 constexpr uint32_t kMaxShadingBatch = 512;
 
-gpu::ComputeLayout shading_layout() {
-    return {{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
-             gpu::BindingType::uniform_buffer, gpu::BindingType::sampled_image,
-             gpu::BindingType::sampled_image},
-            sizeof(ShadingPush)};
+// Binding 4 (the directional maps) exists only in programs with directional VPLs.
+gpu::ComputeLayout shading_layout(const ShaderFeatures& features) {
+    gpu::ComputeLayout layout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
+                               gpu::BindingType::uniform_buffer, gpu::BindingType::sampled_image},
+                              sizeof(ShadingPush)};
+    if (features.has_directional()) layout.bindings.push_back(gpu::BindingType::sampled_image);
+    return layout;
+}
+
+std::unique_ptr<gpu::ComputePipeline> make_pipeline(gpu::Context& context,
+                                                    const ShaderFeatures& features,
+                                                    const StageSource* source,
+                                                    const gpu::SpirvCacheOptions& cache) {
+    StageSource generated;
+    if (!source) {
+        generated = generate_shading_source(features);
+        source = &generated;
+    }
+    return std::make_unique<gpu::ComputePipeline>(
+        context,
+        gpu::compile_glsl_cached(gpu::ShaderStage::compute, source->source,
+                                 "render/" + source->name, cache),
+        shading_layout(features), "shading");
 }
 
 }  // namespace
 
-ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height, uint32_t max_batch)
+ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height, uint32_t max_batch,
+                         const ShaderFeatures& features, const StageSource* source,
+                         const gpu::SpirvCacheOptions& cache)
     : m_context(&context),
       m_accumulation(context,
                      {width, height, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
@@ -49,9 +70,9 @@ ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height,
       m_no_ortho_shadows(context,
                          {1, 1, 2, gpu::Format::r32_float, gpu::ImageUsage::sampled, false},
                          "no directional shadows"),
-      m_pipeline(std::make_unique<gpu::ComputePipeline>(
-          context, gpu::compile_embedded_shader("render/shading.comp"), shading_layout(),
-          "shading")),
+      m_features(features),
+      m_cache(cache),
+      m_pipeline(make_pipeline(context, features, source, cache)),
       m_max_batch(std::max(max_batch, 1u)) {
     if (m_max_batch > kMaxShadingBatch) {
         throw gpu::GpuError("shading pass: batches of at most " + std::to_string(kMaxShadingBatch) +
@@ -67,6 +88,20 @@ void ShadingPass::upload(std::span<const light::Vpl> batch, const scene::Bounds&
                             " VPLs for room for " + std::to_string(m_max_batch));
     }
     const std::vector<GpuVpl> gpu_vpls = to_gpu_vpls(batch, bounds);
+    ShaderFeatures needed = m_features;
+    for (const GpuVpl& g : gpu_vpls) {
+        if (g.type >= uint32_t(kVplTypeCount)) {
+            throw gpu::GpuError("shading pass: VPL type " + std::to_string(g.type) + " is unknown");
+        }
+        needed.vpl_types[g.type] = true;
+        if (g.type == uint32_t(light::VplType::Surface))
+            needed.closure_types[g.closure_type] = true;
+    }
+    if (needed.vpl_types != m_features.vpl_types ||
+        needed.closure_types != m_features.closure_types) {
+        m_features = needed;
+        m_pipeline = make_pipeline(*m_context, m_features, nullptr, m_cache);
+    }
     if (!gpu_vpls.empty()) {
         std::memcpy(m_vpls.mapped(), gpu_vpls.data(), gpu_vpls.size() * sizeof(GpuVpl));
     }
@@ -102,9 +137,10 @@ void ShadingPass::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
     push.flags = (batch.add_emission ? kAddEmission : 0u) | (batch.shadows ? kShadows : 0u);
     push.size[0] = width;
     push.size[1] = height;
-    cmd.dispatch(*m_pipeline, {&g_buffer, &m_accumulation, &m_vpls, shadows, ortho},
-                 gpu::push_bytes(push), (width + kGroupSize - 1) / kGroupSize,
-                 (height + kGroupSize - 1) / kGroupSize);
+    std::vector<gpu::Resource> resources{&g_buffer, &m_accumulation, &m_vpls, shadows};
+    if (m_features.has_directional()) resources.push_back(ortho);
+    cmd.dispatch(*m_pipeline, resources, gpu::push_bytes(push),
+                 (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
 }
 
 }  // namespace mvpl::render

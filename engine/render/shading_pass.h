@@ -9,7 +9,9 @@
 #include "engine/core/math.h"
 #include "engine/gpu/buffer.h"
 #include "engine/gpu/image.h"
+#include "engine/gpu/spirv_cache.h"
 #include "engine/light/vpl.h"
+#include "engine/render/shader_program.h"
 #include "engine/scene/bounds.h"
 
 namespace mvpl::gpu {
@@ -31,7 +33,13 @@ struct ShadingBatch {
 
 class ShadingPass {
 public:
-    ShadingPass(gpu::Context& context, uint32_t width, uint32_t height, uint32_t max_batch);
+    // source: the generated shading shader for `features` (shader_program.h); nullptr: generated
+    // here for `features`. A batch with a VPL or closure type that the features leave out (a VPL
+    // the scene cannot produce, e.g. hand-made in a test) makes upload() regenerate the program
+    // with that type added, once.
+    ShadingPass(gpu::Context& context, uint32_t width, uint32_t height, uint32_t max_batch,
+                const ShaderFeatures& features = ShaderFeatures::all(),
+                const StageSource* source = nullptr, const gpu::SpirvCacheOptions& cache = {});
     ~ShadingPass();
     ShadingPass(const ShadingPass&) = delete;
     ShadingPass& operator=(const ShadingPass&) = delete;
@@ -46,6 +54,7 @@ public:
     void record(gpu::CommandList& cmd, const gpu::Image& g_buffer, const ShadingBatch& batch);
 
     const gpu::Image& accumulation() const { return m_accumulation; }
+    const ShaderFeatures& features() const { return m_features; }
 
 private:
     gpu::Context* m_context;
@@ -54,6 +63,8 @@ private:
     // Bound when a batch has no shadow maps (never read then).
     gpu::Image m_no_shadows;
     gpu::Image m_no_ortho_shadows;
+    ShaderFeatures m_features;
+    gpu::SpirvCacheOptions m_cache;
     std::unique_ptr<gpu::ComputePipeline> m_pipeline;
     uint32_t m_max_batch;
     uint32_t m_count = 0;

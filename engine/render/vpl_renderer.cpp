@@ -4,6 +4,7 @@
 #include <chrono>
 #include <span>
 
+#include "engine/core/finite_check.h"
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/gpu_error.h"
@@ -14,6 +15,15 @@
 #include "engine/render/shadow_pass.h"
 
 namespace mvpl::render {
+
+namespace {
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+        .count();
+}
+
+}  // namespace
 
 struct VplRenderer::Impl {
     Impl(gpu::Context& c, const scene::Scene& s) : context(&c), camera(s.camera), geometry(c, s) {}
@@ -26,6 +36,19 @@ struct VplRenderer::Impl {
     std::unique_ptr<ShadowPass> shadow;
     std::unique_ptr<ShadingPass> shading;
     RenderOptions built_for = unbuilt();
+    // The progressive state: what begin() set up.
+    RenderOptions options;
+    scene::Camera view_camera;
+    RenderTimings timings;
+    bool begun = false;
+
+    void add_timing(std::chrono::steady_clock::time_point start, double shadow_ms,
+                    double shading_ms) {
+        timings.shadow_ms += shadow_ms;
+        timings.shading_ms += shading_ms;
+        timings.total_ms = timings.g_buffer_ms + timings.shadow_ms + timings.shading_ms;
+        timings.wall_ms += milliseconds_since(start);
+    }
 
     static RenderOptions unbuilt() {
         RenderOptions o;
@@ -34,8 +57,11 @@ struct VplRenderer::Impl {
     }
 
     void prepare(const RenderOptions& o) {
+        // The program is generated for this scene (shader_program.h); SPIR-V from the disk cache.
+        const gpu::SpirvCacheOptions cache{o.shader_cache, {}};
         if (!g_buffer || o.width != built_for.width || o.height != built_for.height) {
-            g_buffer = std::make_unique<GBufferPass>(*context, geometry, o.width, o.height);
+            g_buffer = std::make_unique<GBufferPass>(*context, geometry, o.width, o.height, nullptr,
+                                                     nullptr, cache);
             shading.reset();
         }
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
@@ -43,7 +69,13 @@ struct VplRenderer::Impl {
             shadow = std::make_unique<ShadowPass>(*context, geometry, o.shadow_resolution, o.batch);
             shading.reset();
         }
-        if (!shading) shading = std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch);
+        if (o.surface_vpls != built_for.surface_vpls) shading.reset();
+        if (!shading) {
+            shading = std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch,
+                                                    geometry.features(o.surface_vpls), nullptr,
+                                                    cache);
+        }
+        if (!o.dump_shaders.empty()) dump_scene_shaders(o.dump_shaders, geometry, o.surface_vpls);
         built_for = o;
     }
 };
@@ -55,36 +87,62 @@ VplRenderer::~VplRenderer() = default;
 
 Image VplRenderer::render(const std::vector<light::Vpl>& vpls, const RenderOptions& options,
                           RenderTimings* timings) {
+    const auto start = std::chrono::steady_clock::now();
+    begin(m_impl->camera, options);
+    accumulate(vpls);
+    Image image = resolve(1.0);
+    if (timings) {
+        *timings = m_impl->timings;
+        timings->wall_ms = milliseconds_since(start);
+    }
+    return image;
+}
+
+void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& options) {
     if (options.width == 0 || options.height == 0 || options.batch == 0 ||
         options.shadow_resolution == 0) {
-        throw gpu::GpuError("VplRenderer::render: zero width, height, batch or shadow resolution");
+        throw gpu::GpuError("VplRenderer::begin: zero width, height, batch or shadow resolution");
     }
     const auto start = std::chrono::steady_clock::now();
     Impl& m = *m_impl;
     m.prepare(options);
-    const uint32_t batches = uint32_t((vpls.size() + options.batch - 1) / options.batch);
-    gpu::GpuTimer timer(*m.context, 1 + 2 * std::max(batches, 1u));
+    m.options = options;
+    m.view_camera = camera;
+    m.timings = RenderTimings{};
+    gpu::GpuTimer timer(*m.context, 1);
     m.context->submit_and_wait([&](gpu::CommandList& cmd) {
         const uint32_t scope = timer.begin(cmd, "g-buffer");
-        m.g_buffer->record(cmd, m.camera);
+        m.g_buffer->record(cmd, camera);
         m.shading->record_clear(cmd);
         timer.end(cmd, scope);
         cmd.barrier();
     });
+    m.timings.g_buffer_ms = timer.milliseconds("g-buffer");
+    m.begun = true;
+    m.add_timing(start, 0.0, 0.0);
+}
+
+void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
+    Impl& m = *m_impl;
+    if (!m.begun) throw gpu::GpuError("VplRenderer::accumulate before begin");
+    if (vpls.empty()) return;
+    const auto start = std::chrono::steady_clock::now();
+    const RenderOptions& options = m.options;
+    const uint32_t batches = uint32_t((vpls.size() + options.batch - 1) / options.batch);
+    gpu::GpuTimer timer(*m.context, 2 * batches);
 
     ShadingBatch batch;
-    batch.camera_position = m.camera.position();
+    batch.camera_position = m.view_camera.position();
     batch.d_min = options.clamp * m.geometry.bounds().diagonal();
     batch.shadows = options.shadows ? &m.shadow->cubes() : nullptr;
     batch.ortho_shadows = options.shadows ? &m.shadow->ortho_maps() : nullptr;
-    // At least one shading dispatch, so that the emitted radiance is added without VPLs too.
-    for (uint32_t b = 0; b < std::max(batches, 1u); ++b) {
+    // Emitted radiance is added by resolve(), unscaled, so the accumulation holds VPLs only.
+    batch.add_emission = false;
+    for (uint32_t b = 0; b < batches; ++b) {
         const size_t first = size_t(b) * options.batch;
-        const size_t count =
-            std::min<size_t>(options.batch, vpls.size() - std::min(first, vpls.size()));
-        const std::span<const light::Vpl> slice(vpls.data() + std::min(first, vpls.size()), count);
+        const std::span<const light::Vpl> slice =
+            vpls.subspan(first, std::min<size_t>(options.batch, vpls.size() - first));
         m.shading->upload(slice, m.geometry.bounds());
-        batch.add_emission = b == 0;
         m.context->submit_and_wait([&](gpu::CommandList& cmd) {
             if (options.shadows) {
                 const uint32_t scope = timer.begin(cmd, "shadow");
@@ -96,25 +154,47 @@ Image VplRenderer::render(const std::vector<light::Vpl>& vpls, const RenderOptio
             m.shading->record(cmd, m.g_buffer->image(), batch);
             timer.end(cmd, scope);
         });
-        if (options.on_batch) options.on_batch(count);
+        if (options.on_batch) options.on_batch(slice.size());
     }
+    m.timings.batches += batches;
+    m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
+}
 
+Image VplRenderer::resolve(double scale) {
+    Impl& m = *m_impl;
+    if (!m.begun) throw gpu::GpuError("VplRenderer::resolve before begin");
+    const auto start = std::chrono::steady_clock::now();
     const std::vector<float> rgba = m.shading->accumulation().download_as<float>();
-    Image image(int(options.width), int(options.height));
-    for (size_t i = 0; i < image.pixels().size(); ++i)
-        image.pixels()[i] = Rgb(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]);
-
-    if (timings) {
-        timings->g_buffer_ms = timer.milliseconds("g-buffer");
-        timings->shadow_ms = timer.milliseconds("shadow");
-        timings->shading_ms = timer.milliseconds("shading");
-        timings->total_ms = timings->g_buffer_ms + timings->shadow_ms + timings->shading_ms;
-        timings->wall_ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                .count();
-        timings->batches = batches;
+    const std::vector<float> emission = m.g_buffer->image().download_as<float>(kGBufferEmission, 1);
+    Image image(int(m.options.width), int(m.options.height));
+    for (size_t i = 0; i < image.pixels().size(); ++i) {
+        const float* a = &rgba[4 * i];
+        const float* e = &emission[4 * i];
+        // In double, so that a huge 1/N or a tiny one does not round the sum twice.
+        image.pixels()[i] =
+            Rgb(float(scale * a[0] + e[0]), float(scale * a[1] + e[1]), float(scale * a[2] + e[2]));
     }
+    m.add_timing(start, 0.0, 0.0);
+    require_finite(image, "VplRenderer::resolve");
     return image;
+}
+
+const RenderTimings& VplRenderer::timings() const {
+    return m_impl->timings;
+}
+
+const gpu::Image& VplRenderer::accumulation() const {
+    if (!m_impl->shading) throw gpu::GpuError("VplRenderer::accumulation before begin");
+    return m_impl->shading->accumulation();
+}
+
+const gpu::Image& VplRenderer::g_buffer() const {
+    if (!m_impl->g_buffer) throw gpu::GpuError("VplRenderer::g_buffer before begin");
+    return m_impl->g_buffer->image();
+}
+
+gpu::Context& VplRenderer::context() const {
+    return *m_impl->context;
 }
 
 }  // namespace mvpl::render

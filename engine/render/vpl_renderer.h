@@ -1,11 +1,14 @@
 #pragma once
 // The GPU VPL renderer: G-buffer once per view, then per batch of VPLs the shadow cubes and the
-// shading, accumulated into one linear radiance image (DESIGN.md, "GPU passes"). Each VPL's
-// `power` is already divided by the number of light paths (vpl.h), so the resolve is a plain
-// read-back; tonemapping happens when a PNG is written. Vulkan-free to include (pimpl).
+// shading, accumulated into one linear radiance image (DESIGN.md, "GPU passes"). render() takes
+// VPLs whose `power` is already divided by the number of light paths (vpl.h), so its resolve is
+// a plain read-back; the progressive interface (begin/accumulate/resolve) takes any VPL powers and
+// a scale at the end (sampler/vpl_stream.h), for time budgets and the interactive preview.
+// Tonemapping happens when a PNG is written. Vulkan-free to include (pimpl).
 #include <cstdint>
 #include <functional>
 #include <memory>
+#include <span>
 #include <vector>
 
 #include "engine/core/image.h"
@@ -14,7 +17,8 @@
 
 namespace mvpl::gpu {
 class Context;
-}
+class Image;
+}  // namespace mvpl::gpu
 
 namespace mvpl::render {
 
@@ -26,6 +30,11 @@ struct RenderOptions {
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.
     float clamp = 0.0f;
     bool shadows = true;  // false: every VPL unshadowed (tests, debugging)
+    // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
+    // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
+    bool surface_vpls = true;
+    std::string dump_shaders;
+    bool shader_cache = true;
     // Called after each batch with the number of VPLs it shaded (progress bars).
     std::function<void(size_t)> on_batch;
 };
@@ -52,6 +61,26 @@ public:
     // seen directly is included once.
     Image render(const std::vector<light::Vpl>& vpls, const RenderOptions& options,
                  RenderTimings* timings = nullptr);
+
+    // Progressive rendering. begin() renders the G-buffer seen by `camera` and clears the
+    // accumulation; accumulate() shades VPLs into it, options.batch per shadow/shading batch (any
+    // number of calls, any number of VPLs each); resolve(scale) reads back
+    // scale · Σ contributions + the emitted radiance of surfaces seen directly (not scaled).
+    // Throws GpuError if accumulate() or resolve() come before begin(), and NonFiniteError
+    // (engine/core/finite_check.h) naming the first pixel if the image holds a NaN or an
+    // infinity: it is never returned silently.
+    void begin(const scene::Camera& camera, const RenderOptions& options);
+    void accumulate(std::span<const light::Vpl> vpls);
+    Image resolve(double scale);
+    // Since the last begin(); batches counts shading dispatches.
+    const RenderTimings& timings() const;
+
+    // For presenting on the GPU (mvpl preview), valid after begin(): the RGBA32F accumulation of
+    // Σ VPL contributions (no emission, unscaled) and the G-buffer array (GBufferLayer), whose
+    // layer kGBufferEmission holds the emitted radiance.
+    const gpu::Image& accumulation() const;
+    const gpu::Image& g_buffer() const;
+    gpu::Context& context() const;
 
 private:
     struct Impl;

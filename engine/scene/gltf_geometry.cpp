@@ -129,6 +129,7 @@ struct Attributes {
     std::vector<Vec2> uv0;
     std::vector<Vec2> uv1;
     std::vector<Vec4> tangents;
+    std::vector<Vec4> colors;
 };
 
 Attributes read_attributes(const Document& doc, const tinygltf::Primitive& primitive,
@@ -165,6 +166,21 @@ Attributes read_attributes(const Document& doc, const tinygltf::Primitive& primi
     if (auto v = view("TANGENT", TINYGLTF_TYPE_VEC4, {kFloat}, false)) {
         out.tangents = v->read_vec4();
         check_finite(doc, out.tangents, *v);
+    }
+    // COLOR_0: VEC3 or VEC4 of float or normalized unsigned byte/short; alpha 1 for VEC3.
+    if (const std::optional<int> index = attribute(primitive, "COLOR_0")) {
+        const bool rgb = *index >= 0 && size_t(*index) < doc.model.accessors.size() &&
+                         doc.model.accessors[size_t(*index)].type == TINYGLTF_TYPE_VEC3;
+        if (auto v = view("COLOR_0", rgb ? TINYGLTF_TYPE_VEC3 : TINYGLTF_TYPE_VEC4, texcoord_types,
+                          true)) {
+            if (rgb) {
+                for (const Vec3& c : v->read_vec3())
+                    out.colors.emplace_back(c, 1.0f);
+            } else {
+                out.colors = v->read_vec4();
+            }
+            check_finite(doc, out.colors, *v);
+        }
     }
     return out;
 }
@@ -280,6 +296,7 @@ bool build_primitive_mesh(const Document& doc, int mesh_index, int primitive_ind
         out.uv0 = std::move(attributes.uv0);
         out.uv1 = std::move(attributes.uv1);
         out.tangents = std::move(attributes.tangents);
+        out.colors = std::move(attributes.colors);
         out.indices = std::move(triangles);
     } else {
         // glTF: without normals the primitive is flat shaded, so every triangle gets its own
@@ -288,6 +305,7 @@ bool build_primitive_mesh(const Document& doc, int mesh_index, int primitive_ind
         out.uv0 = unweld(attributes.uv0, triangles);
         out.uv1 = unweld(attributes.uv1, triangles);
         out.tangents = unweld(attributes.tangents, triangles);
+        out.colors = unweld(attributes.colors, triangles);
         out.normals.resize(out.positions.size());
         out.indices.resize(out.positions.size());
         std::iota(out.indices.begin(), out.indices.end(), 0u);

@@ -166,6 +166,14 @@ void MaterialReader::read_extensions(Material& out) const {
         }
         out.ior = float(ior);
     }
+    if (const tinygltf::Value* ext =
+            find_extension(m_doc, extensions, "KHR_materials_transmission", m_name)) {
+        out.transmission = fraction(read_number(m_doc, find_member(*ext, "transmissionFactor"), 0.0,
+                                                m_name + " transmissionFactor"),
+                                    "transmissionFactor");
+        out.transmission_texture = texture(find_member(*ext, "transmissionTexture"),
+                                           ColorSpace::Linear, "transmissionTexture");
+    }
 }
 
 }  // namespace

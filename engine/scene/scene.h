@@ -34,6 +34,10 @@ struct Material {
     TextureRef specular_color_texture;  // RGB, sRGB-decoded
     // KHR_materials_ior.
     float ior = 1.5f;
+    // KHR_materials_transmission (factor · texture R). Not refracted: material::graph_from_gltf
+    // keeps the reflection lobe and scales the diffuse base by (1 − transmission).
+    float transmission = 0.0f;
+    TextureRef transmission_texture;
     bool double_sided = false;
 
     Rgb emission() const { return emissive * emissive_strength; }
@@ -49,6 +53,7 @@ struct Mesh {
     std::vector<Vec2> uv0;          // empty when the primitive has no TEXCOORD_0
     std::vector<Vec2> uv1;          // empty when the primitive has no TEXCOORD_1
     std::vector<Vec4> tangents;     // empty unless the file has TANGENT (xyz, w = handedness)
+    std::vector<Vec4> colors;       // empty unless the file has COLOR_0 (linear RGBA)
     std::vector<uint32_t> indices;  // three per triangle
     int material = 0;
 

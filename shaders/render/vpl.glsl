@@ -25,6 +25,6 @@ struct GpuVpl {
     float specular;
     float roughness;
     float ior;
-    float pad2;
+    uint closure_type;  // engine/material/node_eval.h, ClosureType
     float pad3;
 };

@@ -1,6 +1,6 @@
 // The whole VPL pipeline — Monte Carlo light paths on the CPU, shading on the GPU — against
-// independent answers: the CPU oracle with exact visibility (same VPLs), the Mitsuba 2 Cornell box,
-// the analytic direct light of a point light, and the same scene at other scales.
+// independent answers: the CPU oracle with exact visibility (same VPLs), the Mitsuba 2 Cornell box
+// and the analytic direct light of a point light (other scales: tests/stability).
 #include <gtest/gtest.h>
 
 #include "engine/core/image_metrics.h"
@@ -11,45 +11,26 @@
 #include "engine/scene/camera.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_sampler.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/support/lit_plane.h"
 #include "tests/support/scene_builder.h"
+#include "tests/support/vpl_render.h"
 
 namespace mvpl::render {
 namespace {
 
 using VplPipelineTest = gpu::testing::GpuTest;
-
-std::vector<light::Vpl> monte_carlo_vpls(const scene::Scene& s, uint64_t paths, int max_depth,
-                                         uint64_t seed) {
-    const trace::Accel accel(s);
-    const light::LightSampler lights(s);
-    sampler::MonteCarloOptions o;
-    o.paths = paths;
-    o.seed = seed;
-    o.tracer.max_depth = max_depth;
-    return sampler::MonteCarloSampler(s, accel, lights).generate(o);
-}
+using test::monte_carlo_vpls;
 
 Image gpu_render(gpu::Context& context, const scene::Scene& s, const std::vector<light::Vpl>& vpls,
                  int res, int shadow_res, float clamp) {
-    VplRenderer renderer(context, s);
-    RenderOptions o;
-    o.width = o.height = uint32_t(res);
-    o.shadow_resolution = uint32_t(shadow_res);
-    o.batch = 32;
-    o.clamp = clamp;
-    return renderer.render(vpls, o);
+    return test::gpu_render(context, s, vpls,
+                            {.res = res, .shadow_res = shadow_res, .clamp = clamp});
 }
 
 Image oracle_render(const scene::Scene& s, const std::vector<light::Vpl>& vpls, int res,
                     float clamp) {
-    const trace::Accel accel(s);
-    reference::GatherOptions o;
-    o.width = o.height = res;
-    o.clamp = clamp;
-    return reference::gather_vpls(s, accel, vpls, o);
+    return test::oracle_render(s, vpls, {.res = res, .clamp = clamp});
 }
 
 // GPU against the oracle with the same VPLs: they differ only where the shadow cube's nearest
@@ -121,25 +102,6 @@ TEST_F(VplPipelineTest, PointLightDirectLightIsAnalytic) {
         }
     }
     EXPECT_LT(worst, 1e-3);
-}
-
-// Shadow bias and clamping are relative: the same light paths at 10⁻³ and 10⁴ times the size give
-// the same image, to far below the noise between two seeds.
-TEST_F(VplPipelineTest, SameImageAtAnyScale) {
-    const scene::Scene unit = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
-    const Image base =
-        gpu_render(context(), unit, monte_carlo_vpls(unit, 32, 6, 4), 48, 128, 0.05f);
-    const double noise =
-        compare_images(
-            gpu_render(context(), unit, monte_carlo_vpls(unit, 32, 6, 5), 48, 128, 0.05f), base)
-            .rel_mse;
-    for (float scale : {1e-3f, 1e4f}) {
-        scene::Scene s = unit;
-        test::scale_scene(s, scale);
-        const Image scaled =
-            gpu_render(context(), s, monte_carlo_vpls(s, 32, 6, 4), 48, 128, 0.05f);
-        EXPECT_LT(compare_images(scaled, base).rel_mse, 0.01 * noise) << "scale " << scale;
-    }
 }
 
 }  // namespace

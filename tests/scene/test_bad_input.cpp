@@ -93,7 +93,7 @@ const std::map<std::string, std::string> kExpected = {
      "the GLB JSON chunk (2147483632 bytes at offset 20) runs past the end"},
     {"glb-bin-chunk-past-end.glb", "the GLB BIN chunk (52 bytes at offset 524) runs past the end"},
     {"glb-without-bin-chunk.glb", "the GLB has no BIN chunk"},
-    {"unknown-extension.obj", "unsupported scene format"},
+    {"unknown-extension.xyz", "unsupported scene format"},
     {"no-file-extension", "unsupported scene format"},
 };
 

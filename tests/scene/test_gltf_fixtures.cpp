@@ -80,7 +80,7 @@ TEST(CornellBox, GeometryMaterialsAndCamera) {
 }
 
 TEST(LoadScene, RefusesOtherFormatsByExtension) {
-    const std::string path = std::string(MVPL_TEST_DATA_DIR) + "/bad/unknown-extension.obj";
+    const std::string path = std::string(MVPL_TEST_DATA_DIR) + "/bad/unknown-extension.xyz";
     try {
         load_scene(path);
         FAIL() << "no error";

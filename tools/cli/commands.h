@@ -12,5 +12,9 @@ int run_reference(const Args& args);
 int run_render(const Args& args);
 int run_compare(const Args& args);
 int run_info(const Args& args);
+int run_preview(const Args& args);
+int run_vpls(const Args& args);
+int run_bench(const Args& args);
+int run_convergence(const Args& args);
 
 }  // namespace mvpl::cli

@@ -506,7 +506,7 @@ def bad_corpus():
     doc, b = base()
     del doc["buffers"][0]["uri"]
     files["glb-without-bin-chunk.glb"] = glb(doc, None)
-    files["unknown-extension.obj"] = "o triangle\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
+    files["unknown-extension.xyz"] = "o triangle\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n"
     files["no-file-extension"] = text(base()[0])
     return files
 

@@ -1,10 +1,14 @@
 #version 460
-#extension GL_GOOGLE_include_directive : require
 // Pass 3 (DESIGN.md, "GPU passes"): adds the contribution of one batch of VPLs to every pixel's
 // accumulated radiance, with the formulas of engine/light/vpl.h. One invocation per pixel; each
 // pixel is read and written by its own invocation only.
-#include "bsdf.glsl"
-#include "vpl.glsl"
+//
+// Generated per scene by engine/render/shader_program.cpp from shaders/render/shading_template.glsl:
+// `//@insert X` lines are replaced by generated code and `//@if a|b` … `//@endif` blocks are kept
+// only when the scene has one of the named VPL types, so that the program holds only the closure
+// types and light types that occur.
+//@insert vpl
+//@insert closures
 
 // kMaxShadingBatch in shading_pass.cpp: 64 KiB, the maxUniformBufferRange of lavapipe and of
 // desktop GPUs.
@@ -18,7 +22,9 @@ layout(set = 0, binding = 1, rgba32f) uniform image2D accumulation;
 // buffers as scalar constant loads (measured faster than a storage buffer's per-lane gathers).
 layout(std140, set = 0, binding = 2) uniform Vpls { GpuVpl vpls[kMaxShadingBatch]; };
 layout(set = 0, binding = 3) uniform samplerCubeArray shadow_cubes;
+//@if directional
 layout(set = 0, binding = 4) uniform sampler2DArray ortho_shadows;
+//@endif
 
 const uint kAddEmission = 1u;
 const uint kShadows = 2u;
@@ -83,6 +89,7 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng) {
     return stored >= d - bias ? 1.0 : 0.0;
 }
 
+//@if directional
 // The same test against a directional VPL's orthographic map (directional_frame.h): w is the
 // receiver's distance along the direction of travel from the map's near plane, and a texel is
 // extent / resolution wide (in place of d · texel_angle).
@@ -95,13 +102,16 @@ float directional_visibility(uint layer, GpuVpl v, vec3 p, vec3 ng) {
     const float bias = kConstantBias * map.z + kSlopeBias * texel * tan_r;
     return stored >= map.z - bias ? 1.0 : 0.0;
 }
+//@endif
 
+//@if spot
 float spot_falloff(GpuVpl v, float cos_angle) {
     // light::spot_attenuation
     const float scale = 1.0 / max(1e-3, v.cos_inner - v.cos_outer);
     const float t = clamp((cos_angle - v.cos_outer) * scale, 0.0, 1.0);
     return t * t;
 }
+//@endif
 
 void main() {
     const ivec2 px = ivec2(gl_GlobalInvocationID.xy);
@@ -122,23 +132,26 @@ void main() {
     const vec3 n = side * ns_flags.xyz;
     const vec3 ng = side * ng_metallic.xyz;
     const vec3 wo = normalize(pc.camera_position.xyz - p);
-    const Closure receiver = Closure(base_roughness.rgb, ng_metallic.w, specular.rgb, specular.w,
-                                     base_roughness.w, emission_ior.w);
+    const Closure receiver = Closure(flags >> 2u, base_roughness.rgb, ng_metallic.w, specular.rgb,
+                                     specular.w, base_roughness.w, emission_ior.w);
 
     vec3 sum = (pc.flags & kAddEmission) != 0u ? emission_ior.rgb : vec3(0.0);
     for (uint i = 0u; i < pc.vpl_count; ++i) {
         const GpuVpl v = vpls[i];
+//@if directional
         if (v.type == kVplDirectional) {
             const vec3 to_light = -v.normal;
             const float cos_r = max(0.0, dot(n, to_light));
             if (cos_r <= 0.0) continue;
-            const vec3 f_r = bsdf_eval(receiver, n, wo, to_light);
+            const vec3 f_r = closure_eval(receiver, n, wo, to_light);
             if (max_component(f_r) <= 0.0) continue;
             const float vis =
                 (pc.flags & kShadows) != 0u ? directional_visibility(i, v, p, ng) : 1.0;
             sum += v.power * vis * f_r * cos_r;
             continue;
         }
+//@endif
+//@if point|spot|area|surface
         const vec3 r = p - v.position;
         const float d2 = dot(r, r);
         if (!(d2 > 0.0)) continue;
@@ -148,21 +161,25 @@ void main() {
         if (cos_r <= 0.0) continue;
         float emitter = 1.0;  // the VPL's own factor: spot falloff or max(0, n_j·ω)
         vec3 f_vpl = vec3(1.0);
-        if (v.type == kVplSpot) {
-            emitter = spot_falloff(v, dot(v.normal, w));
-        } else if (v.type == kVplArea || v.type == kVplSurface) {
-            emitter = max(0.0, dot(v.normal, w));
-        }
+//@if spot
+        if (v.type == kVplSpot) emitter = spot_falloff(v, dot(v.normal, w));
+//@endif
+//@if area|surface
+        if (v.type == kVplArea || v.type == kVplSurface) emitter = max(0.0, dot(v.normal, w));
+//@endif
+//@if surface
         if (v.type == kVplSurface) {
-            const Closure c = Closure(v.base_color, v.metallic, v.specular_color, v.specular,
-                                      v.roughness, v.ior);
-            f_vpl = bsdf_eval(c, v.shading_normal, v.wi, w);
+            const Closure c = Closure(v.closure_type, v.base_color, v.metallic, v.specular_color,
+                                      v.specular, v.roughness, v.ior);
+            f_vpl = closure_eval(c, v.shading_normal, v.wi, w);
         }
+//@endif
         if (emitter <= 0.0 || max_component(f_vpl) <= 0.0) continue;
-        const vec3 f_r = bsdf_eval(receiver, n, wo, -w);
+        const vec3 f_r = closure_eval(receiver, n, wo, -w);
         if (max_component(f_r) <= 0.0) continue;
         const float vis = (pc.flags & kShadows) != 0u ? visibility(i, r, d, ng) : 1.0;
         sum += v.power * vis * f_r * cos_r * f_vpl * emitter / max(d2, pc.d_min2);
+//@endif
     }
     const vec4 accumulated = imageLoad(accumulation, px);
     imageStore(accumulation, px, vec4(accumulated.rgb + sum, 1.0));

@@ -1,0 +1,184 @@
+#include "engine/render/shader_program.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "engine/core/error.h"
+#include "engine/gpu/embedded_shaders.h"
+#include "engine/gpu/gpu_error.h"
+#include "engine/material/material_codegen.h"
+
+namespace mvpl::render {
+namespace {
+
+const char* const kVplTypeNames[kVplTypeCount] = {"point", "spot", "area", "surface",
+                                                  "directional"};
+
+std::string trim(std::string_view s) {
+    const size_t a = s.find_first_not_of(" \t\r");
+    if (a == std::string_view::npos) return {};
+    const size_t b = s.find_last_not_of(" \t\r");
+    return std::string(s.substr(a, b - a + 1));
+}
+
+bool any_enabled(const std::string& names, const std::vector<std::string>& enabled) {
+    std::istringstream in(names);
+    std::string name;
+    while (std::getline(in, name, '|')) {
+        if (std::find(enabled.begin(), enabled.end(), trim(name)) != enabled.end()) return true;
+    }
+    return false;
+}
+
+std::vector<std::string> enabled_names(const ShaderFeatures& f) {
+    std::vector<std::string> out;
+    for (int i = 0; i < kVplTypeCount; ++i)
+        if (f.vpl_types[size_t(i)]) out.emplace_back(kVplTypeNames[i]);
+    return out;
+}
+
+}  // namespace
+
+ShaderFeatures ShaderFeatures::all() {
+    ShaderFeatures f;
+    f.vpl_types.fill(true);
+    f.closure_types.fill(true);
+    return f;
+}
+
+std::string expand_template(std::string_view text, const std::vector<std::string>& enabled,
+                            const std::vector<std::pair<std::string, std::string>>& inserts) {
+    std::istringstream in{std::string(text)};
+    std::string out;
+    std::string line;
+    std::vector<bool> keep{true};
+    while (std::getline(in, line)) {
+        const std::string t = trim(line);
+        if (t.starts_with("//@if ")) {
+            keep.push_back(keep.back() && any_enabled(t.substr(6), enabled));
+            continue;
+        }
+        if (t == "//@endif") {
+            if (keep.size() > 1) keep.pop_back();
+            continue;
+        }
+        if (!keep.back()) continue;
+        if (t.starts_with("//@insert ")) {
+            const std::string name = trim(t.substr(10));
+            const auto it = std::find_if(inserts.begin(), inserts.end(),
+                                         [&](const auto& kv) { return kv.first == name; });
+            if (it == inserts.end())
+                throw gpu::GpuError("shader template: nothing to insert for '" + name + "'");
+            out += it->second;
+            continue;
+        }
+        if (t.starts_with("#extension GL_GOOGLE_include_directive")) continue;
+        if (t.starts_with("#include \"")) {
+            const std::string file = t.substr(10, t.size() - 11);
+            out += expand_template(gpu::embedded_shader("render/" + file), enabled, inserts);
+            continue;
+        }
+        out += line;
+        out += '\n';
+    }
+    return out;
+}
+
+ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& options) {
+    ShaderFeatures f;
+    for (const scene::Light& l : scene.lights) {
+        switch (l.type) {
+            case scene::LightType::Point:
+                f.vpl_types[size_t(light::VplType::Point)] = true;
+                break;
+            case scene::LightType::Spot:
+                f.vpl_types[size_t(light::VplType::Spot)] = true;
+                break;
+            case scene::LightType::Directional:
+                f.vpl_types[size_t(light::VplType::Directional)] = true;
+                break;
+        }
+    }
+    for (const scene::Mesh& m : scene.meshes) {
+        if (m.material >= 0 && size_t(m.material) < scene.materials.size() &&
+            scene.materials[size_t(m.material)].is_emissive() && m.triangle_count() > 0) {
+            f.vpl_types[size_t(light::VplType::Area)] = true;
+        }
+    }
+    f.vpl_types[size_t(light::VplType::Surface)] = options.surface_vpls;
+    std::vector<material::MaterialGraph> graphs;
+    for (const scene::Material& m : scene.materials)
+        graphs.push_back(material::graph_from_gltf(m));
+    f.closure_types = material::scene_closure_types(graphs);
+    return f;
+}
+
+StageSource generate_shading_source(const ShaderFeatures& features,
+                                    std::vector<std::string>* functions) {
+    const std::string closures = material::generate_closure_eval(features.closure_types, functions);
+    const std::string vpl = expand_template(gpu::embedded_shader("render/vpl.glsl"), {}, {});
+    return {"shading.comp",
+            expand_template(gpu::embedded_shader("render/shading_template.glsl"),
+                            enabled_names(features), {{"vpl", vpl}, {"closures", closures}})};
+}
+
+GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
+                                         const std::vector<scene::Texture>& textures) {
+    // The G-buffer pipeline has no descriptor sets yet (gpu::GraphicsPipeline): image textures
+    // read as their factors there; the CPU path tracer and the VPLs apply them.
+    const material::MaterialCode code =
+        material::generate_material_code(graphs, textures, 0, false);
+    GBufferSources out;
+    out.functions = code.node_functions;
+    const std::string push =
+        expand_template(gpu::embedded_shader("render/g_buffer_push.glsl"), {}, {});
+    out.vert = {"g_buffer.vert",
+                expand_template(gpu::embedded_shader("render/g_buffer.vert"), {}, {})};
+    out.frag = {"g_buffer.frag",
+                expand_template(
+                    gpu::embedded_shader("render/g_buffer.frag"), {},
+                    {{"push", push}, {"bindings", code.bindings}, {"materials", code.functions}})};
+    const material::MaterialCode textured =
+        material::generate_material_code(graphs, textures, 1, true);
+    if (!textured.textures.empty()) {
+        out.textures = textured.textures;
+        out.material_functions = textured.node_functions;
+        out.material = {
+            "material.comp",
+            expand_template(gpu::embedded_shader("render/material_template.glsl"), {},
+                            {{"bindings", textured.bindings}, {"materials", textured.functions}})};
+    }
+    return out;
+}
+
+SceneShaders generate_scene_shaders(const scene::Scene& scene, const ShaderOptions& options) {
+    SceneShaders out;
+    out.features = scene_features(scene, options);
+    std::vector<material::MaterialGraph> graphs;
+    for (const scene::Material& m : scene.materials)
+        graphs.push_back(material::graph_from_gltf(m));
+    GBufferSources g = generate_g_buffer_sources(graphs, scene.textures);
+    out.g_buffer_vert = std::move(g.vert);
+    out.g_buffer_frag = std::move(g.frag);
+    out.g_buffer_functions = std::move(g.functions);
+    out.material_comp = std::move(g.material);
+    out.material_functions = std::move(g.material_functions);
+    out.shading_comp = generate_shading_source(out.features, &out.shading_functions);
+    return out;
+}
+
+void dump_shaders(const std::string& dir, const std::vector<const StageSource*>& stages) {
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    if (ec) throw InputError(dir, "cannot create the shader dump directory: " + ec.message());
+    for (const StageSource* stage : stages) {
+        const std::filesystem::path path = std::filesystem::path(dir) / stage->name;
+        std::ofstream out(path, std::ios::binary | std::ios::trunc);
+        out << stage->source;
+        if (!out.flush()) throw InputError(path.string(), "cannot write the generated shader");
+    }
+}
+
+}  // namespace mvpl::render

@@ -1,0 +1,88 @@
+#pragma once
+// The GLSL of every stage, generated for one scene (DESIGN.md, "Shader chain"): the scene's
+// material graphs resolved in the G-buffer fragment shader, and a shading shader with only the
+// closure types and VPL types the scene can produce. Vulkan-free.
+#include <array>
+#include <string>
+#include <vector>
+
+#include "engine/light/vpl.h"
+#include "engine/material/node_eval.h"
+#include "engine/material/node_graph.h"
+#include "engine/scene/scene.h"
+
+namespace mvpl::render {
+
+inline constexpr int kVplTypeCount = 5;
+
+struct ShaderFeatures {
+    std::array<bool, kVplTypeCount> vpl_types{};  // indexed by light::VplType
+    std::array<bool, material::kClosureTypeCount> closure_types{};
+
+    bool has(light::VplType t) const { return vpl_types[size_t(t)]; }
+    bool has_directional() const { return has(light::VplType::Directional); }
+    // Every VPL and closure type: for callers that shade VPLs of unknown origin (tests).
+    static ShaderFeatures all();
+};
+
+struct ShaderOptions {
+    // Surface VPLs (path length ≥ 1) exist when the sampler's maximum depth is ≥ 3.
+    bool surface_vpls = true;
+};
+
+// What a scene can produce: point/spot/directional VPLs from its punctual lights, area VPLs if
+// a mesh uses an emissive material, surface VPLs if options.surface_vpls; the closure types of
+// its material graphs.
+ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& options);
+
+struct StageSource {
+    std::string name;    // "g_buffer.vert", "g_buffer.frag", "shading.comp"
+    std::string source;  // self-contained GLSL (no #include)
+};
+
+struct SceneShaders {
+    ShaderFeatures features;
+    StageSource g_buffer_vert;
+    StageSource g_buffer_frag;
+    StageSource shading_comp;
+    StageSource material_comp;                    // empty name: the scene needs no material pass
+    std::vector<std::string> g_buffer_functions;  // node functions, in emission order
+    std::vector<std::string> material_functions;
+    std::vector<std::string> shading_functions;
+
+    std::vector<const StageSource*> stages() const {
+        std::vector<const StageSource*> out{&g_buffer_vert, &g_buffer_frag, &shading_comp};
+        if (!material_comp.name.empty()) out.push_back(&material_comp);
+        return out;
+    }
+};
+
+SceneShaders generate_scene_shaders(const scene::Scene& scene, const ShaderOptions& options);
+
+struct GBufferSources {
+    StageSource vert;
+    StageSource frag;
+    std::vector<std::string> functions;  // node functions of the fragment stage, in order
+    // The material pass (material_template.glsl), only when a graph reads an image texture:
+    // binding 0 the G-buffer, binding 1 + i the scene texture textures[i].
+    StageSource material;
+    std::vector<int> textures;
+    std::vector<std::string> material_functions;
+    bool has_material_pass() const { return !textures.empty(); }
+};
+// The G-buffer stages for material graphs (textures: the scene's, for the bump-map step).
+GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
+                                         const std::vector<scene::Texture>& textures);
+// The shading shader for `features`.
+StageSource generate_shading_source(const ShaderFeatures& features,
+                                    std::vector<std::string>* functions = nullptr);
+
+// Writes each stage to dir/NAME (creating dir); throws InputError naming the path on failure.
+void dump_shaders(const std::string& dir, const std::vector<const StageSource*>& stages);
+
+// Expands the template markers of shaders/render (`//@insert NAME`, `//@if a|b` … `//@endif`)
+// and `#include "x.glsl"` of embedded shaders. Exposed for tests.
+std::string expand_template(std::string_view text, const std::vector<std::string>& enabled,
+                            const std::vector<std::pair<std::string, std::string>>& inserts);
+
+}  // namespace mvpl::render

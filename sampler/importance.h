@@ -1,0 +1,73 @@
+#pragma once
+// The Metropolis target I(x̄) (DESIGN.md "The algorithm"; the seed's §3): the luminance that the
+// VPLs of a light path add to a fixed set of K camera-visible points — the first hits of
+// stratified camera rays — averaged over the K rays, so that I estimates the path's share of the
+// image's mean luminance. Each point uses the oracle's per-point code (reference::vpl_contribution:
+// the vpl.h formula, Embree visibility, d_min = clamp · scene diagonal), so the target sees what
+// the renderer shows.
+//
+// A finite point set misses VPLs that light only other pixels; the sampler therefore samples the
+// defensive target I + ε·mean(I)·[the path has a VPL] (defensive_target below).
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/light/vpl.h"
+#include "engine/reference/vpl_gather.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl::sampler {
+
+struct ImportanceOptions {
+    int points = 256;  // K camera rays (fewer points where rays miss the scene)
+    // The image the points are spread over (its aspect decides the field of view).
+    int width = 256;
+    int height = 256;
+    float clamp = 0.05f;  // d_min as a fraction of the scene diagonal, as the renderer's
+    uint64_t seed = 0;    // jitter inside the strata
+    // Relative target: point k's luminance is weighted by 1 / (L_k + 0.1·mean L), L_k the radiance
+    // there as estimated by the bootstrap (set_point_radiance), so that dim points (indirectly
+    // lit walls) count as much as the errors measured relative to the pixel (relMSE) make them
+    // count, rather than in proportion to their brightness. False: plain luminance (the seed).
+    bool relative = true;
+};
+
+class Importance {
+public:
+    Importance(const scene::Scene& scene, const trace::Accel& accel, const scene::Camera& camera,
+               const ImportanceOptions& options);
+
+    // I(x̄) for the VPLs of one path (powers as traced): Σ_VPL Σ_points w_k · luminance / K.
+    double evaluate(std::span<const light::Vpl> vpls) const;
+    // The unweighted luminance that the VPLs add to each point (point_count() values, added to
+    // `per_point`), and I from such a vector.
+    void evaluate_points(std::span<const light::Vpl> vpls, std::span<float> per_point) const;
+    double evaluate(std::span<const float> per_point) const;
+    // Sets the weights w_k = 1 / (L_k + 0.1·mean L) (normalised to mean 1) from radiance estimates
+    // per point; without relative, or when all L_k are 0, every weight stays 1.
+    void set_point_radiance(std::span<const double> radiance);
+    // Receivers found (≤ K): 0 when the camera sees nothing.
+    size_t point_count() const { return m_points.size(); }
+    int rays() const { return m_rays; }
+
+private:
+    const trace::Accel& m_accel;
+    std::vector<reference::Receiver> m_points;
+    std::vector<double> m_weights;  // per point, 1 unless relative
+    bool m_relative = true;
+    int m_rays = 0;
+    float m_d_min2 = 0.0f;
+};
+
+// The defensive target. Why [the path has a VPL] is the right indicator: a path's contribution
+// to any pixel is a sum over its VPLs, so a path without VPLs contributes nowhere, and every path
+// that can contribute anywhere has one; with ε > 0 and mean_i > 0 the target is then positive
+// wherever the integrand is, which is all that unbiasedness needs (the estimate weights each
+// state by b / target, b the target's mean over independent paths).
+inline double defensive_target(double importance, double mean_importance, double epsilon,
+                               bool has_vpl) {
+    return importance + (has_vpl ? epsilon * mean_importance : 0.0);
+}
+
+}  // namespace mvpl::sampler

@@ -1,0 +1,254 @@
+#include "sampler/metropolis_sampler.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <span>
+
+#include "engine/core/parallel.h"
+#include "engine/core/rng.h"
+#include "engine/core/timer.h"
+#include "sampler/primary_sample_vector.h"
+
+namespace mvpl::sampler {
+
+namespace {
+
+// Independent PCG32 seeds for the four uses of randomness, from the user's seed.
+uint64_t bootstrap_seed(uint64_t seed) {
+    return mix_bits(seed ^ 0x626f6f74ULL);
+}
+uint64_t chain_value_seed(uint64_t seed) {
+    return mix_bits(seed ^ 0x76616c75ULL);
+}
+uint64_t chain_step_seed(uint64_t seed) {
+    return mix_bits(seed ^ 0x73746570ULL);
+}
+uint64_t chain_start_seed(uint64_t seed) {
+    return mix_bits(seed ^ 0x73746172ULL);
+}
+
+// Appends `vpls` with their powers times `factor` (weight · b / I').
+void emit(const std::vector<light::Vpl>& vpls, double factor, std::vector<light::Vpl>& out,
+          MetropolisStats& stats) {
+    if (!(factor > 0.0) || !std::isfinite(factor)) return;
+    for (light::Vpl v : vpls) {
+        v.power *= float(factor);
+        out.push_back(v);
+    }
+    stats.emitted += vpls.size();
+}
+
+}  // namespace
+
+struct MetropolisStream::Chain {
+    Chain(uint64_t value_seed, uint64_t stream, float sigma) : u(value_seed, stream, sigma) {}
+    PrimarySampleVector u;
+    Rng rng;
+    std::vector<light::Vpl> current;  // VPLs of the current state, powers as traced
+    double current_target = 0.0;      // I'(current) > 0
+    double pending = 0.0;             // Σ weight / I' collected by the current state, not emitted
+    std::vector<light::Vpl> proposal;
+};
+
+MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel& accel,
+                                   const light::LightSampler& lights, const scene::Camera& camera,
+                                   const MetropolisOptions& options)
+    : m_options(options),
+      m_tracer(scene, accel, lights, options.tracer),
+      m_importance(scene, accel, camera, options.importance) {
+    Timer timer;
+    m_options.chains = std::max(m_options.chains, 1);
+    m_options.large_step = std::clamp(m_options.large_step, 0.0f, 1.0f);
+    m_options.defensive = std::max(m_options.defensive, 0.0);
+    const uint64_t n = std::max<uint64_t>(m_options.bootstrap, 1);
+
+    // Bootstrap: I of n independent paths; path i is what a PrimarySampleVector on stream i
+    // reads at iteration 0, so a chain can restart from it exactly.
+    // The luminance each path adds to each point is kept, so that the relative target's point
+    // weights (from the bootstrap's radiance per point) apply without tracing twice.
+    const size_t k = m_importance.point_count();
+    std::vector<float> per_point(size_t(n) * k, 0.0f);
+    std::vector<uint8_t> has_vpl(n, 0);
+    if (!lights.empty() && k > 0) {
+        parallel_for(int64_t(n), 16, [&](int64_t i0, int64_t i1) {
+            std::vector<light::Vpl> path;
+            for (int64_t i = i0; i < i1; ++i) {
+                PrimarySampleVector u(bootstrap_seed(m_options.seed), uint64_t(i), m_options.sigma);
+                trace_state(u, path);
+                has_vpl[size_t(i)] = !path.empty();
+                m_importance.evaluate_points(path,
+                                             std::span<float>(per_point.data() + size_t(i) * k, k));
+            }
+        });
+    }
+    std::vector<double> radiance(k, 0.0);
+    for (uint64_t i = 0; i < n; ++i) {
+        for (size_t p = 0; p < k; ++p)
+            radiance[p] += double(per_point[size_t(i) * k + p]) / double(n);
+    }
+    m_importance.set_point_radiance(radiance);
+    std::vector<double> importance(n, 0.0);
+    for (uint64_t i = 0; i < n; ++i) {
+        importance[i] =
+            m_importance.evaluate(std::span<const float>(per_point.data() + size_t(i) * k, k));
+    }
+    double sum = 0.0;
+    uint64_t lit = 0;
+    for (uint64_t i = 0; i < n; ++i) {
+        sum += importance[i];
+        lit += importance[i] > 0.0 ? 1 : 0;
+    }
+    m_stats.mean_importance = sum / double(n);
+    m_stats.bootstrap_lit = lit;
+    if (!(m_stats.mean_importance > 0.0) || !std::isfinite(m_stats.mean_importance)) {
+        m_no_visible_light = true;
+        m_stats.bootstrap_seconds = timer.seconds();
+        return;
+    }
+    // b = E[I'] and the start distribution ∝ I' (prefix sums for the chains' picks).
+    std::vector<double> cdf(n + 1, 0.0);
+    for (uint64_t i = 0; i < n; ++i) {
+        const double t = defensive_target(importance[i], m_stats.mean_importance,
+                                          m_options.defensive, has_vpl[i] != 0);
+        cdf[i + 1] = cdf[i] + t;
+    }
+    m_stats.target_sum = cdf[n];
+    m_stats.target_count = n;
+    m_stats.b = cdf[n] / double(n);
+
+    for (int c = 0; c < m_options.chains; ++c) {
+        Rng pick(chain_start_seed(m_options.seed), uint64_t(c));
+        const double x = double(pick.next_float()) * cdf[n];
+        // The first path whose interval [cdf[i], cdf[i+1]) holds x (empty intervals never do).
+        uint64_t start = uint64_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin()) - 1;
+        start = std::min(start, n - 1);
+        while (start > 0 && !(cdf[start + 1] > cdf[start]))
+            --start;
+        auto chain =
+            std::make_unique<Chain>(bootstrap_seed(m_options.seed), start, m_options.sigma);
+        trace_state(chain->u, chain->current);
+        chain->current_target = target(chain->current);
+        chain->u.reseed(chain_value_seed(m_options.seed), uint64_t(c));
+        chain->rng.seed(chain_step_seed(m_options.seed), uint64_t(c));
+        m_chains.push_back(std::move(chain));
+    }
+    m_stats.bootstrap_seconds = timer.seconds();
+}
+
+MetropolisStream::~MetropolisStream() = default;
+
+void MetropolisStream::trace_state(SampleStream& u, std::vector<light::Vpl>& out) const {
+    out.clear();
+    if (m_options.per_path == VplsPerPath::All) {
+        m_tracer.trace(u, 1.0f, out);
+        return;
+    }
+    const float pick = u.next();  // dimension 0, before the path's own dimensions
+    m_tracer.trace(u, 1.0f, out);
+    const size_t m = out.size();
+    if (m == 0) return;
+    const size_t j = std::min(m - 1, size_t(pick * float(m)));
+    light::Vpl v = out[j];
+    v.power *= float(m);  // divided by the pick probability 1/m
+    out.assign(1, v);
+}
+
+double MetropolisStream::target(const std::vector<light::Vpl>& vpls) const {
+    return defensive_target(m_importance.evaluate(vpls), m_stats.mean_importance,
+                            m_options.defensive, !vpls.empty());
+}
+
+void MetropolisStream::run_chain(Chain& chain, uint64_t steps, std::vector<light::Vpl>& out,
+                                 MetropolisStats& stats) const {
+    // Powers carry weight / I'; the normalisation b is applied in scale(), so that it can keep
+    // improving with the large steps.
+    const double b = 1.0;
+    for (uint64_t s = 0; s < steps; ++s) {
+        const bool large = chain.rng.next_float() < m_options.large_step;
+        stats.large_steps += large ? 1 : 0;
+        chain.u.start_iteration(large);
+        trace_state(chain.u, chain.proposal);
+        const double proposed = chain.proposal.empty() ? 0.0 : target(chain.proposal);
+        if (large) {
+            // A large step is an independent uniform u: its I' is one more sample of b = E[I'].
+            stats.target_sum += proposed;
+            ++stats.target_count;
+        }
+        // current_target > 0 always: the chain starts on a path with I' > 0 and never moves to
+        // one with I' = 0 (α = 0 there).
+        const double alpha = std::min(1.0, proposed / chain.current_target);
+        // Expected values: the current state with 1 − α, the proposal with α.
+        chain.pending += (1.0 - alpha) / chain.current_target;
+        stats.recorded +=
+            (alpha < 1.0 ? chain.current.size() : 0) + (alpha > 0.0 ? chain.proposal.size() : 0);
+        if (chain.rng.next_float() < alpha) {
+            emit(chain.current, chain.pending * b, out, stats);
+            chain.u.accept();
+            std::swap(chain.current, chain.proposal);
+            chain.current_target = proposed;
+            chain.pending = alpha / proposed;  // the proposal's record, merged into the new state
+            ++stats.accepted;
+        } else {
+            chain.u.reject();
+            if (alpha > 0.0) emit(chain.proposal, alpha / proposed * b, out, stats);
+        }
+        ++stats.steps;
+    }
+    // Everything the steps so far recorded must be in `out` before scale() counts them.
+    emit(chain.current, chain.pending * b, out, stats);
+    chain.pending = 0.0;
+}
+
+void MetropolisStream::next(uint64_t work, std::vector<light::Vpl>& out) {
+    if (work == 0) return;
+    const uint64_t begin = m_stats.steps;
+    const uint64_t end = begin + work;
+    if (m_no_visible_light) {
+        m_stats.steps = end;
+        return;
+    }
+    const uint64_t chains = m_chains.size();
+    // Step t of the run belongs to chain t mod C: chain c's steps in [begin, end).
+    auto count_below = [chains](uint64_t t, uint64_t c) {
+        return t > c ? (t - c + chains - 1) / chains : 0;
+    };
+    std::vector<std::vector<light::Vpl>> per_chain(chains);
+    std::vector<MetropolisStats> per_stats(chains);
+    parallel_for(int64_t(chains), 1, [&](int64_t c0, int64_t c1) {
+        for (int64_t c = c0; c < c1; ++c) {
+            const uint64_t steps = count_below(end, uint64_t(c)) - count_below(begin, uint64_t(c));
+            run_chain(*m_chains[size_t(c)], steps, per_chain[size_t(c)], per_stats[size_t(c)]);
+        }
+    });
+    for (uint64_t c = 0; c < chains; ++c) {
+        out.insert(out.end(), per_chain[c].begin(), per_chain[c].end());
+        m_stats.steps += per_stats[c].steps;
+        m_stats.accepted += per_stats[c].accepted;
+        m_stats.large_steps += per_stats[c].large_steps;
+        m_stats.recorded += per_stats[c].recorded;
+        m_stats.emitted += per_stats[c].emitted;
+        m_stats.target_sum += per_stats[c].target_sum;
+        m_stats.target_count += per_stats[c].target_count;
+    }
+    m_stats.b = m_stats.target_sum / double(std::max<uint64_t>(m_stats.target_count, 1));
+}
+
+double MetropolisStream::scale() const {
+    return m_stats.steps > 0 ? m_stats.b / double(m_stats.steps) : 0.0;
+}
+
+double MetropolisStream::acceptance() const {
+    return m_stats.steps > 0 ? double(m_stats.accepted) / double(m_stats.steps) : 0.0;
+}
+
+std::string MetropolisStream::statistics() const {
+    if (m_no_visible_light) return "no light reaches what the camera sees";
+    char buf[128];
+    std::snprintf(buf, sizeof buf, "acceptance %.0f%%, %llu/%llu distinct", 100.0 * acceptance(),
+                  static_cast<unsigned long long>(m_stats.emitted),
+                  static_cast<unsigned long long>(m_stats.recorded));
+    return buf;
+}
+
+}  // namespace mvpl::sampler

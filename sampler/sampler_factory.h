@@ -1,0 +1,49 @@
+#pragma once
+// Named VPL samplers for the command line: make_vpl_stream("mc" | "metropolis", …).
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/light/light_sampler.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+#include "sampler/metropolis_sampler.h"
+#include "sampler/monte_carlo_sampler.h"
+#include "sampler/vpl_stream.h"
+
+namespace mvpl::sampler {
+
+// Everything either sampler may need; each reads its own part.
+struct SamplerSettings {
+    uint64_t seed = 0;
+    LightTracerOptions tracer;
+    // Monte Carlo
+    bool qmc = false;
+    VplsPerPath per_path = VplsPerPath::All;
+    // Metropolis (the image size and clamp also shape the importance points)
+    int width = 256;
+    int height = 256;
+    float clamp = 0.05f;
+    float large_step = 0.1f;
+    float sigma = 0.01f;
+    int chains = 1024;
+    int importance_points = 256;
+    uint64_t bootstrap = 32768;
+    double defensive = 0.05;
+    VplsPerPath metropolis_per_path = VplsPerPath::One;
+};
+
+const std::vector<std::string>& sampler_names();
+
+// Throws UsageError naming the available samplers when `name` is none of them. scene, accel and
+// lights must outlive the stream. The Metropolis stream runs its bootstrap here.
+std::unique_ptr<VplStream> make_vpl_stream(const std::string& name, const scene::Scene& scene,
+                                           const trace::Accel& accel,
+                                           const light::LightSampler& lights,
+                                           const scene::Camera& camera,
+                                           const SamplerSettings& settings);
+
+// The Metropolis options the settings describe (tests and tools that need the concrete stream).
+MetropolisOptions metropolis_options(const SamplerSettings& settings);
+
+}  // namespace mvpl::sampler

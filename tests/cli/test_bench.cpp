@@ -1,0 +1,168 @@
+// `mvpl bench`: on the Cornell box at a tiny size its JSON is valid, every measured number is
+// positive, and the derived rates agree with the counts and times they come from; bad flags are
+// usage errors (exit 2, one line).
+#include <gtest/gtest.h>
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "tests/cli/run_command.h"
+
+namespace mvpl {
+namespace {
+
+using nlohmann::json;
+using test::run_mvpl;
+using test::shell_quote;
+
+const std::string kCbox = MVPL_ASSETS_DIR "/cornell-box/cbox.gltf";
+
+// The numbers are written with 17 significant digits, and each derived rate is one division of
+// two written numbers: recomputing it here differs by a few ulps at most. 1e-12 relative leaves
+// three orders of magnitude of room and still catches any real inconsistency (a wrong count,
+// a rate from another time).
+constexpr double kRelative = 1e-12;
+
+void expect_rel(double actual, double expected, const char* what) {
+    EXPECT_NEAR(actual, expected, kRelative * std::abs(expected)) << what;
+}
+
+// Every number anywhere in the document is finite and positive (counts, times, rates, bytes);
+// the rest are strings (scene, device) and the `shadows` flag.
+void expect_positive_numbers(const json& j, const std::string& where) {
+    if (j.is_object()) {
+        for (const auto& [key, value] : j.items())
+            expect_positive_numbers(value, where + "." + key);
+    } else if (j.is_array()) {
+        for (size_t i = 0; i < j.size(); ++i)
+            expect_positive_numbers(j[i], where + "[" + std::to_string(i) + "]");
+    } else if (j.is_number()) {
+        EXPECT_GT(j.get<double>(), 0.0) << where;
+    } else if (!j.is_string() && !j.is_boolean()) {
+        ADD_FAILURE() << where << " is neither a number nor a string: " << j.dump();
+    }
+}
+
+// One render configuration's numbers against each other and the light-path counts.
+void expect_consistent_render(const json& r, const json& paths, const std::string& where) {
+    SCOPED_TRACE(where);
+    const double vpls = paths["vpls"].get<double>();
+    const double pixels = r["width"].get<double>() * r["height"].get<double>();
+    EXPECT_EQ(
+        r["batches"].get<int64_t>(),
+        (paths["vpls"].get<int64_t>() + r["batch"].get<int64_t>() - 1) / r["batch"].get<int64_t>());
+    expect_rel(r["shadow_ms_per_vpl"], r["shadow_ms"].get<double>() / vpls, "shadow ms/VPL");
+    expect_rel(r["shading_ms_per_vpl"], r["shading_ms"].get<double>() / vpls, "shading ms/VPL");
+    expect_rel(r["shading_pixel_vpls_per_s"],
+               pixels * vpls / (r["shading_ms"].get<double>() * 1e-3), "pixel·VPL/s");
+    expect_rel(r["end_to_end_s"], paths["seconds"].get<double>() + r["render_wall_s"].get<double>(),
+               "end to end s");
+    expect_rel(r["end_to_end_vpls_per_s"], vpls / r["end_to_end_s"].get<double>(), "VPL/s");
+    // GPU pass times are part of the host's wall time of the render (each batch is waited for).
+    EXPECT_LE((r["g_buffer_ms"].get<double>() + r["shadow_ms"].get<double>() +
+               r["shading_ms"].get<double>()) *
+                  1e-3,
+              r["render_wall_s"].get<double>());
+}
+
+class Bench : public ::testing::Test {
+protected:
+    // One tiny run with --sweep shared by the tests: 32², 16² shadow faces, 16 light paths.
+    static void SetUpTestSuite() {
+        s_json_path = (std::filesystem::temp_directory_path() /
+                       ("mvpl_bench_" + std::to_string(::getpid()) + ".json"))
+                          .string();
+        s_result = run_mvpl("bench " + shell_quote(kCbox) +
+                            " --res 32x24 --shadow-res 16 --batch 8 --vpls 16 --repeat 1 --sweep"
+                            " --json " +
+                            shell_quote(s_json_path));
+        std::ifstream in(s_json_path);
+        std::stringstream text;
+        text << in.rdbuf();
+        s_text = text.str();
+        std::filesystem::remove(s_json_path);
+    }
+
+    static inline std::string s_json_path;
+    static inline test::CommandResult s_result;
+    static inline std::string s_text;
+};
+
+TEST_F(Bench, WritesValidJsonWithPositiveNumbers) {
+    ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
+    json j;
+    ASSERT_NO_THROW(j = json::parse(s_text)) << s_text;
+    expect_positive_numbers(j, "bench");
+    EXPECT_EQ(j["scene"], kCbox);
+    EXPECT_EQ(j["repeat"], 1);
+    EXPECT_EQ(j["shadows"], true);
+    EXPECT_EQ(j["light_paths"]["paths"], 16);
+    EXPECT_EQ(j["render"]["width"], 32);
+    EXPECT_EQ(j["render"]["height"], 24);
+    EXPECT_EQ(j["render"]["shadow_resolution"], 16);
+    EXPECT_EQ(j["render"]["batch"], 8);
+}
+
+TEST_F(Bench, RatesAgreeWithCountsAndTimes) {
+    ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
+    const json j = json::parse(s_text);
+    const json& paths = j["light_paths"];
+    // Each path leaves at least its emitter VPL.
+    EXPECT_GE(paths["vpls"].get<int64_t>(), paths["paths"].get<int64_t>());
+    expect_rel(paths["paths_per_s"], paths["paths"].get<double>() / paths["seconds"].get<double>(),
+               "paths/s");
+    expect_rel(paths["vpls_per_s"], paths["vpls"].get<double>() / paths["seconds"].get<double>(),
+               "VPLs/s");
+    const json& s = j["startup"];
+    expect_rel(s["total_s"],
+               s["scene_load_s"].get<double>() + s["bvh_build_s"].get<double>() +
+                   s["context_s"].get<double>() + s["renderer_s"].get<double>(),
+               "start-up total");
+    expect_consistent_render(j["render"], paths, "render");
+    for (size_t i = 0; i < j["sweep"].size(); ++i)
+        expect_consistent_render(j["sweep"][i], paths, "sweep " + std::to_string(i));
+    // The device holds at least the RGBA32F accumulation image: 16 bytes a pixel.
+    EXPECT_GE(j["memory"]["peak_device_bytes"].get<double>(), 32.0 * 24.0 * 16.0);
+}
+
+TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
+    ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
+    const json j = json::parse(s_text);
+    // 5 batch sizes × 3 shadow resolutions, each pair once.
+    ASSERT_EQ(j["sweep"].size(), 15u);
+    std::set<std::pair<int, int>> pairs;
+    for (const json& r : j["sweep"])
+        pairs.insert({r["batch"].get<int>(), r["shadow_resolution"].get<int>()});
+    EXPECT_EQ(pairs.size(), 15u);
+    // The table for people: a header and one row per configuration.
+    EXPECT_NE(s_result.out.find("end to end"), std::string::npos) << s_result.out;
+    EXPECT_NE(s_result.out.find("batch  shadow"), std::string::npos) << s_result.out;
+}
+
+TEST(BenchUsage, BadFlagsExitTwoWithOneLine) {
+    const std::string cbox = shell_quote(kCbox);
+    for (const std::string& args :
+         {std::string("bench"), "bench " + cbox + " --batch 0", "bench " + cbox + " --batch 257",
+          "bench " + cbox + " --shadow-res 2", "bench " + cbox + " --repeat 0",
+          "bench " + cbox + " --vpls 0", "bench " + cbox + " --res 0x4",
+          "bench " + cbox + " --bogus", "bench " + cbox + " --clamp -1",
+          "bench " + cbox + " --batch abc", std::string("bench /nonexistent/scene.gltf --quiet"),
+          "bench " + cbox +
+              " --quiet --vpls 1 --res 8x8 --repeat 1 --json /nonexistent/d/x.json"}) {
+        SCOPED_TRACE(args);
+        const test::CommandResult r = run_mvpl(args);
+        EXPECT_EQ(r.exit_code, 2) << r.err;
+        EXPECT_EQ(r.err.rfind("mvpl: error: ", 0), 0u) << r.err;
+        EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
+    }
+}
+
+}  // namespace
+}  // namespace mvpl

@@ -1,0 +1,173 @@
+// The progressive interface of VplRenderer (begin / accumulate / resolve), which time budgets and
+// the preview use, against the one-shot render() of the same VPLs.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include "engine/core/finite_check.h"
+#include "engine/gpu/gpu_error.h"
+#include "engine/light/light_sampler.h"
+#include "engine/render/vpl_renderer.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
+#include "sampler/monte_carlo_sampler.h"
+#include "tests/gpu/gpu_test.h"
+
+namespace mvpl::render {
+namespace {
+
+using ProgressiveRenderTest = gpu::testing::GpuTest;
+
+constexpr uint64_t kPaths = 48;
+
+struct CornellBox {
+    scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
+    std::vector<light::Vpl> vpls;  // powers divided by kPaths, as render() takes them
+
+    CornellBox() {
+        const trace::Accel accel(scene);
+        const light::LightSampler lights(scene);
+        sampler::MonteCarloOptions o;
+        o.paths = kPaths;
+        o.seed = 3;
+        vpls = sampler::MonteCarloSampler(scene, accel, lights).generate(o);
+    }
+};
+
+RenderOptions small_options() {
+    RenderOptions o;
+    o.width = o.height = 48;
+    o.shadow_resolution = 64;
+    o.batch = 8;
+    o.clamp = 0.05f;
+    return o;
+}
+
+// Both images sum the same float contributions, the progressive one with powers ×N and the
+// result ×1/N: each pixel differs by float rounding only — a few ulps of the sum of at most
+// ~200 terms, far below 1e-5 relative (plus an absolute 1e-7 for pixels that are ~0).
+void expect_same_image(const Image& a, const Image& b) {
+    ASSERT_EQ(a.width(), b.width());
+    ASSERT_EQ(a.height(), b.height());
+    int differing = 0;
+    for (size_t i = 0; i < a.pixels().size(); ++i) {
+        for (int c = 0; c < 3; ++c) {
+            const float x = a.pixels()[i][c], y = b.pixels()[i][c];
+            if (!(std::abs(x - y) <= 1e-5f * std::max(std::abs(x), std::abs(y)) + 1e-7f))
+                ++differing;
+        }
+    }
+    EXPECT_EQ(differing, 0);
+}
+
+TEST_F(ProgressiveRenderTest, UnevenChunksWithAScaleEqualTheOneShotRender) {
+    const CornellBox box;
+    ASSERT_GT(box.vpls.size(), 20u);
+    VplRenderer renderer(context(), box.scene);
+    const Image one_shot = renderer.render(box.vpls, small_options());
+
+    std::vector<light::Vpl> unscaled = box.vpls;
+    for (light::Vpl& v : unscaled)
+        v.power = v.power * float(kPaths);
+    renderer.begin(box.scene.camera, small_options());
+    // Chunks that straddle batches: 1, 7, 13, then the rest.
+    size_t first = 0;
+    for (size_t chunk : {size_t(1), size_t(7), size_t(13), unscaled.size()}) {
+        const size_t count = std::min(chunk, unscaled.size() - first);
+        renderer.accumulate(std::span<const light::Vpl>(unscaled).subspan(first, count));
+        first += count;
+    }
+    ASSERT_EQ(first, unscaled.size());
+    EXPECT_EQ(renderer.timings().batches, 1u + 1u + 2u + (unscaled.size() - 21 + 7) / 8);
+    expect_same_image(renderer.resolve(1.0 / double(kPaths)), one_shot);
+}
+
+TEST_F(ProgressiveRenderTest, ScaleMultipliesTheVplsButNotTheEmission) {
+    const CornellBox box;
+    VplRenderer renderer(context(), box.scene);
+    renderer.begin(box.scene.camera, small_options());
+    renderer.accumulate(box.vpls);
+    const Image zero = renderer.resolve(0.0);
+    const Image one = renderer.resolve(1.0);
+    const Image three = renderer.resolve(3.0);
+
+    // Scale 0: the luminaire seen directly and nothing else.
+    int emitting = 0, lit = 0;
+    for (size_t i = 0; i < zero.pixels().size(); ++i) {
+        const float e = max_component(zero.pixels()[i]);
+        if (e > 0.0f) ++emitting;
+        if (max_component(one.pixels()[i]) > 0.0f) ++lit;
+        for (int c = 0; c < 3; ++c) {
+            const double expected = 3.0 * one.pixels()[i][c] - 2.0 * zero.pixels()[i][c];
+            EXPECT_NEAR(three.pixels()[i][c], expected, 1e-5 * std::abs(expected) + 1e-6);
+        }
+    }
+    EXPECT_GT(emitting, 0);                               // the luminaire is in view
+    EXPECT_LT(emitting, int(zero.pixels().size()) / 10);  // and small
+    EXPECT_GT(lit, int(zero.pixels().size()) / 2);
+}
+
+TEST_F(ProgressiveRenderTest, BeginClearsTheAccumulationAndTakesTheNewCamera) {
+    const CornellBox box;
+    VplRenderer renderer(context(), box.scene);
+    const Image one_shot = renderer.render(box.vpls, small_options());
+
+    // The moved view must look like a renderer built for a scene with that camera.
+    scene::Scene moved_scene = box.scene;
+    const float step = 0.1f * box.scene.bounds().diagonal();
+    moved_scene.camera.camera_to_world[3] += Vec4(step, 0.5f * step, 0.0f, 0.0f);
+    const Image moved_one_shot =
+        VplRenderer(context(), moved_scene).render(box.vpls, small_options());
+    renderer.begin(moved_scene.camera, small_options());
+    renderer.accumulate(box.vpls);
+    const Image other_view = renderer.resolve(1.0);
+    expect_same_image(other_view, moved_one_shot);
+    double difference = 0.0, total = 0.0;
+    for (size_t i = 0; i < one_shot.pixels().size(); ++i) {
+        difference += std::abs(luminance(one_shot.pixels()[i]) - luminance(other_view.pixels()[i]));
+        total += luminance(one_shot.pixels()[i]);
+    }
+    EXPECT_GT(difference, 0.02 * total);  // the view did move
+
+    renderer.begin(box.scene.camera, small_options());
+    renderer.accumulate(box.vpls);
+    expect_same_image(renderer.resolve(1.0), one_shot);
+}
+
+// The NaN/Inf guard: one VPL with a non-finite power poisons every pixel it lights, and the
+// resolve refuses to return the image instead of writing it.
+TEST_F(ProgressiveRenderTest, NonFinitePixelsFailTheResolveLoudly) {
+    const CornellBox box;
+    VplRenderer renderer(context(), box.scene);
+    for (const float bad :
+         {std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity()}) {
+        std::vector<light::Vpl> vpls = box.vpls;
+        vpls[vpls.size() / 2].power = Rgb(bad, 1.0f, 1.0f);
+        renderer.begin(box.scene.camera, small_options());
+        renderer.accumulate(vpls);
+        try {
+            renderer.resolve(1.0);
+            ADD_FAILURE() << "a non-finite image was returned";
+        } catch (const NonFiniteError& e) {
+            EXPECT_NE(std::string(e.what()).find("non-finite pixel"), std::string::npos)
+                << e.what();
+            EXPECT_NE(std::string(e.what()).find("the first at ("), std::string::npos) << e.what();
+        }
+    }
+    // The same renderer still resolves a clean image afterwards.
+    renderer.begin(box.scene.camera, small_options());
+    renderer.accumulate(box.vpls);
+    EXPECT_NO_THROW(renderer.resolve(1.0));
+}
+
+TEST_F(ProgressiveRenderTest, AccumulateBeforeBeginIsAnError) {
+    const CornellBox box;
+    VplRenderer renderer(context(), box.scene);
+    EXPECT_THROW(renderer.accumulate(box.vpls), gpu::GpuError);
+    EXPECT_THROW(renderer.resolve(1.0), gpu::GpuError);
+}
+
+}  // namespace
+}  // namespace mvpl::render

@@ -1,0 +1,43 @@
+#include "tests/support/vpl_render.h"
+
+#include "engine/light/light_sampler.h"
+#include "engine/reference/vpl_gather.h"
+#include "engine/render/vpl_renderer.h"
+#include "engine/trace/accel.h"
+#include "sampler/monte_carlo_sampler.h"
+
+namespace mvpl::test {
+
+std::vector<light::Vpl> monte_carlo_vpls(const scene::Scene& scene, uint64_t paths, int max_depth,
+                                         uint64_t seed) {
+    const trace::Accel accel(scene);
+    const light::LightSampler lights(scene);
+    sampler::MonteCarloOptions o;
+    o.paths = paths;
+    o.seed = seed;
+    o.tracer.max_depth = max_depth;
+    return sampler::MonteCarloSampler(scene, accel, lights).generate(o);
+}
+
+Image gpu_render(gpu::Context& context, const scene::Scene& scene,
+                 const std::vector<light::Vpl>& vpls, const VplRenderSettings& settings) {
+    render::VplRenderer renderer(context, scene);
+    render::RenderOptions o;
+    o.width = o.height = uint32_t(settings.res);
+    o.shadow_resolution = uint32_t(settings.shadow_res);
+    o.batch = uint32_t(settings.batch);
+    o.clamp = settings.clamp;
+    o.shadows = settings.shadows;
+    return renderer.render(vpls, o);
+}
+
+Image oracle_render(const scene::Scene& scene, const std::vector<light::Vpl>& vpls,
+                    const VplRenderSettings& settings) {
+    const trace::Accel accel(scene);
+    reference::GatherOptions o;
+    o.width = o.height = settings.res;
+    o.clamp = settings.clamp;
+    return reference::gather_vpls(scene, accel, vpls, o);
+}
+
+}  // namespace mvpl::test

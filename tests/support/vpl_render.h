@@ -1,0 +1,36 @@
+#pragma once
+// The VPL pipeline in one call each, for tests that compare its stages: Monte Carlo light paths,
+// the GPU renderer and the CPU oracle over the same VPLs.
+#include <cstdint>
+#include <vector>
+
+#include "engine/core/image.h"
+#include "engine/light/vpl.h"
+#include "engine/scene/scene.h"
+
+namespace mvpl::gpu {
+class Context;
+}
+
+namespace mvpl::test {
+
+// VPLs of `paths` Monte Carlo light paths (every VPL of a path kept, powers divided by paths).
+std::vector<light::Vpl> monte_carlo_vpls(const scene::Scene& scene, uint64_t paths, int max_depth,
+                                         uint64_t seed);
+
+struct VplRenderSettings {
+    int res = 64;          // square image
+    int shadow_res = 128;  // cube face side
+    float clamp = 0.05f;   // fraction of the scene diagonal; 0: off
+    bool shadows = true;
+    int batch = 32;
+};
+
+// The GPU renderer's image of `vpls` seen by the scene camera.
+Image gpu_render(gpu::Context& context, const scene::Scene& scene,
+                 const std::vector<light::Vpl>& vpls, const VplRenderSettings& settings);
+// The CPU oracle's image of the same VPLs (exact visibility; settings.shadow_res unused).
+Image oracle_render(const scene::Scene& scene, const std::vector<light::Vpl>& vpls,
+                    const VplRenderSettings& settings);
+
+}  // namespace mvpl::test

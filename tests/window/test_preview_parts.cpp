@@ -1,0 +1,141 @@
+// The preview's window-free parts: the script format and the camera controller.
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include "engine/core/error.h"
+#include "tools/preview/camera_controller.h"
+#include "tools/preview/present_pass.h"
+#include "tools/preview/script.h"
+#include "tools/preview/window.h"
+
+// The preview's headers, like engine/gpu's, keep Vulkan (and GLFW) to their .cpp files.
+#ifdef VULKAN_CORE_H_
+#error "a preview or swapchain header includes <vulkan/vulkan.h>"
+#endif
+#ifdef _glfw3_h_
+#error "a preview header includes GLFW"
+#endif
+
+namespace mvpl::preview {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path write_file(const std::string& name, const std::string& text) {
+    const fs::path path = fs::temp_directory_path() / (name + std::to_string(::getpid()));
+    std::ofstream(path) << text;
+    return path;
+}
+
+TEST(PreviewScript, ParsesEventsInFrameOrder) {
+    const fs::path path = write_file("script_ok",
+                                     "# comment\n"
+                                     "5 key escape\n"
+                                     "\n"
+                                     "2 resize 300 200  # trailing comment\n"
+                                     "2 orbit -10 2.5\n"
+                                     "3 fly 0.1 0 -0.2\n");
+    const std::vector<ScriptEvent> events = load_script(path.string());
+    ASSERT_EQ(events.size(), 4u);
+    EXPECT_EQ(events[0].frame, 2u);
+    EXPECT_EQ(events[0].action, "resize");  // file order within a frame
+    EXPECT_EQ(events[0].values, (std::vector<float>{300.0f, 200.0f}));
+    EXPECT_EQ(events[1].action, "orbit");
+    EXPECT_EQ(events[1].values, (std::vector<float>{-10.0f, 2.5f}));
+    EXPECT_EQ(events[2].values.size(), 3u);
+    EXPECT_EQ(events[3].action, "key");
+    EXPECT_EQ(events[3].key, "escape");
+    fs::remove(path);
+}
+
+TEST(PreviewScript, RejectsMalformedLinesWithTheirNumber) {
+    const struct {
+        const char* text;
+        const char* message;
+    } cases[] = {
+        {"x orbit 1 2\n", "line 1: expected a frame number"},
+        {"1 orbit 1\n", "line 1: orbit needs 2 numbers"},
+        {"\n1 zoom 0\n", "line 2: zoom needs a positive factor"},
+        {"1 key q\n", "line 1: key needs one of"},
+        {"1 resize 0 10\n", "line 1: resize needs a size"},
+        {"1 pan 1 2 3\n", "line 1: unexpected '3'"},
+        {"-1 zoom 2\n", "line 1: expected a frame number"},
+    };
+    for (const auto& c : cases) {
+        const fs::path path = write_file("script_bad", c.text);
+        try {
+            load_script(path.string());
+            ADD_FAILURE() << "accepted: " << c.text;
+        } catch (const InputError& e) {
+            EXPECT_NE(std::string(e.what()).find(c.message), std::string::npos) << e.what();
+            EXPECT_EQ(std::string(e.what()).rfind(path.string(), 0), 0u) << e.what();
+        }
+        fs::remove(path);
+    }
+    EXPECT_THROW(load_script("/nonexistent/script.txt"), InputError);
+}
+
+scene::Bounds unit_box() {
+    scene::Bounds b;
+    b.lo = Vec3(-1.0f);
+    b.hi = Vec3(1.0f);
+    return b;
+}
+
+scene::Camera looking_at_origin() {
+    scene::Camera c;
+    c.camera_to_world = Mat4(1.0f);
+    c.camera_to_world[3] = Vec4(0.0f, 0.0f, 5.0f, 1.0f);  // at +5 Z, looking down −Z
+    return c;
+}
+
+// Tolerance: the controller rebuilds the frame with sin/cos/lookAt in float, errors ~1e-6
+// relative per step on values of magnitude ≤ 5: 1e-4 leaves two orders of margin.
+constexpr float kTolerance = 1e-4f;
+
+TEST(CameraController, UnmovedCameraIsTheScenesExactly) {
+    const scene::Camera c = looking_at_origin();
+    CameraController controller(c, unit_box());
+    EXPECT_EQ(controller.camera().camera_to_world, c.camera_to_world);
+    controller.orbit(30.0f, 10.0f);
+    EXPECT_NE(controller.camera().camera_to_world, c.camera_to_world);
+    controller.reset();
+    EXPECT_EQ(controller.camera().camera_to_world, c.camera_to_world);
+}
+
+TEST(CameraController, OrbitKeepsTheDistanceToTheTarget) {
+    CameraController controller(looking_at_origin(), unit_box());
+    controller.orbit(90.0f, 0.0f);
+    // A quarter turn about +Y around the origin (the target: the box's centre on the view axis).
+    const Vec3 p = controller.camera().position();
+    EXPECT_NEAR(glm::length(p), 5.0f, kTolerance);
+    EXPECT_NEAR(p.y, 0.0f, kTolerance);
+    EXPECT_NEAR(std::abs(p.x), 5.0f, kTolerance);
+    // Still looking at the origin.
+    const Vec3 forward = -Vec3(controller.camera().camera_to_world[2]);
+    EXPECT_NEAR(glm::dot(forward, -glm::normalize(p)), 1.0f, kTolerance);
+    controller.orbit(270.0f, 0.0f);  // full circle: back where it started
+    EXPECT_NEAR(glm::length(controller.camera().position() - Vec3(0.0f, 0.0f, 5.0f)), 0.0f,
+                kTolerance);
+}
+
+TEST(CameraController, ZoomPanAndFlyMoveAsDocumented) {
+    CameraController controller(looking_at_origin(), unit_box());
+    controller.zoom(0.5f);
+    EXPECT_NEAR(controller.camera().position().z, 2.5f, kTolerance);
+    controller.pan(0.5f, 0.0f);  // half the view height at the target, to the right (+X)
+    const float height = 2.0f * 2.5f * std::tan(0.5f * controller.camera().yfov);
+    EXPECT_NEAR(controller.camera().position().x, 0.5f * height, kTolerance);
+    const Vec3 before = controller.camera().position();
+    controller.fly(0.25f, 0.0f, 0.0f);  // a quarter of the diagonal (2·√3) forward (−Z)
+    const Vec3 moved = controller.camera().position() - before;
+    EXPECT_NEAR(moved.z, -0.25f * 2.0f * std::sqrt(3.0f), kTolerance);
+    EXPECT_NEAR(moved.x, 0.0f, kTolerance);
+}
+
+}  // namespace
+}  // namespace mvpl::preview

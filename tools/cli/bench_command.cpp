@@ -1,0 +1,219 @@
+// `mvpl bench`: VPL throughput. Light-path generation on the CPU, the shadow and shading passes
+// on the GPU (timestamp queries), end to end, start-up and peak memory; every number is the
+// median of --repeat runs, because a shared machine is noisy.
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/core/error.h"
+#include "engine/core/progress.h"
+#include "engine/core/timer.h"
+#include "engine/gpu/context.h"
+#include "engine/gpu/memory.h"
+#include "engine/light/light_sampler.h"
+#include "engine/render/vpl_renderer.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
+#include "sampler/monte_carlo_sampler.h"
+#include "tools/cli/arg_parser.h"
+#include "tools/cli/bench_report.h"
+#include "tools/cli/commands.h"
+
+namespace mvpl::cli {
+
+namespace {
+
+// --sweep: batch sizes × shadow face sides, around the defaults (32, 256).
+constexpr int kSweepBatches[] = {8, 16, 32, 64, 128};
+constexpr int kSweepShadowResolutions[] = {128, 256, 512};
+
+// Bounded like `mvpl render`'s options (the renderer's limits).
+void check_config(const BenchConfig& c) {
+    if (c.shadow_resolution < 4 || c.shadow_resolution > 4096)
+        throw UsageError("bench: --shadow-res must be in 4..4096");
+    if (c.batch < 1 || c.batch > 256) throw UsageError("bench: --batch must be in 1..256");
+}
+
+render::RenderOptions render_options(const BenchConfig& c, float clamp, bool shadows) {
+    render::RenderOptions ro;
+    ro.width = uint32_t(c.width);
+    ro.height = uint32_t(c.height);
+    ro.shadow_resolution = uint32_t(c.shadow_resolution);
+    ro.batch = uint32_t(c.batch);
+    ro.clamp = clamp;
+    ro.shadows = shadows;
+    return ro;
+}
+
+// One progressive render of all VPLs (powers already divided by the path count).
+RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& camera,
+                         const std::vector<light::Vpl>& vpls, const BenchConfig& config,
+                         float clamp, bool shadows) {
+    Timer wall;
+    renderer.begin(camera, render_options(config, clamp, shadows));
+    renderer.accumulate(vpls);
+    [[maybe_unused]] const Image image = renderer.resolve(1.0);  // read-back is part of the cost
+    RenderSample s;
+    s.wall_s = wall.seconds();
+    const render::RenderTimings& t = renderer.timings();
+    s.g_buffer_ms = t.g_buffer_ms;
+    s.shadow_ms = t.shadow_ms;
+    s.shading_ms = t.shading_ms;
+    s.batches = t.batches;
+    return s;
+}
+
+uint64_t peak_host_bytes() {
+    rusage usage{};
+    getrusage(RUSAGE_SELF, &usage);
+    return uint64_t(usage.ru_maxrss) * 1024;  // Linux reports KiB
+}
+
+// Opened before the benchmark runs, so that a mistyped path fails at once, not after minutes.
+std::ofstream open_output(const std::string& path) {
+    std::ofstream out(path, std::ios::binary);
+    if (!out) throw InputError(path, "cannot write the benchmark JSON");
+    return out;
+}
+
+}  // namespace
+
+int run_bench(const Args& args) {
+    std::string scene_path;
+    BenchConfig config;
+    uint64_t paths = 256;
+    int repeat = 3;
+    int max_depth = 6;
+    uint64_t seed = 0;
+    float clamp = 0.05f;
+    std::string json_path;
+    bool sweep = false, quiet = false, no_shadows = false;
+    ArgParser parser("bench",
+                     "Measures VPL throughput on SCENE: light-path generation, the shadow and\n"
+                     "shading passes (GPU timestamps), end to end, start-up and peak memory.\n"
+                     "Every number is the median of --repeat runs.");
+    parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .ply, .obj)");
+    parser.add_resolution("--res", &config.width, &config.height, "image size WxH (512x512)");
+    parser.add_int("--shadow-res", &config.shadow_resolution,
+                   "side of a shadow cube face in texels (256)");
+    parser.add_int("--batch", &config.batch, "VPLs per shadow/shading batch (32)");
+    parser.add_uint64("--vpls", &paths, "light paths to trace, one VPL per bounce (256)");
+    parser.add_int("--max-depth", &max_depth, "path segments camera to light (6; -1 unlimited)");
+    parser.add_float("--clamp", &clamp, "clamping distance / scene diagonal (0.05)");
+    parser.add_uint64("--seed", &seed, "random seed (0)");
+    parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported (3)");
+    parser.add_flag("--sweep", &sweep,
+                    "also render with batch 8..128 × shadow faces 128², 256², 512²");
+    parser.add_flag("--no-shadows", &no_shadows,
+                    "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
+                    "measure what visibility costs)");
+    parser.add_string("--json", &json_path, "write the results as JSON to this file");
+    parser.add_flag("--quiet", &quiet, "no progress bar and no table");
+    if (!parser.parse(args)) return 0;
+    check_config(config);
+    if (paths < 1 || paths > (uint64_t(1) << 24))
+        throw UsageError("bench: --vpls must be in 1..2^24");
+    if (repeat < 1 || repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
+    if (!(clamp >= 0.0f && clamp <= 1.0f)) throw UsageError("bench: --clamp must be in [0, 1]");
+    if (max_depth < -1 || max_depth == 0)
+        throw UsageError("bench: --max-depth must be -1 or at least 1");
+
+    std::ofstream json_out;
+    if (!json_path.empty()) json_out = open_output(json_path);
+
+    std::vector<BenchConfig> sweep_configs;
+    if (sweep) {
+        for (const int r : kSweepShadowResolutions) {
+            for (const int b : kSweepBatches) {
+                BenchConfig c = config;
+                c.shadow_resolution = r;
+                c.batch = b;
+                sweep_configs.push_back(c);
+            }
+        }
+    }
+
+    BenchReport report;
+    report.scene = scene_path;
+    report.repeat = repeat;
+    report.shadows = !no_shadows;
+    report.paths = paths;
+    std::vector<double> load_s, bvh_s, context_s, renderer_s, sampling_s;
+    std::vector<RenderSample> main_samples;
+    std::vector<std::vector<RenderSample>> sweep_samples(sweep_configs.size());
+    Progress progress("bench", int64_t(repeat) * int64_t(1 + sweep_configs.size()), quiet);
+    for (int k = 0; k < repeat; ++k) {
+        // Everything from scratch each repeat, so that start-up is measured K times too.
+        Timer t;
+        const scene::Scene scene = scene::load_scene(scene_path);
+        load_s.push_back(t.seconds());
+        t.reset();
+        const trace::Accel accel(scene);
+        bvh_s.push_back(t.seconds());
+        const light::LightSampler lights(scene);
+        if (k == 0 && lights.empty() && !quiet) {
+            std::fprintf(stderr, "mvpl: warning: %s: the scene has no light; nothing to bench\n",
+                         scene_path.c_str());
+        }
+        t.reset();
+        gpu::Context context;
+        context_s.push_back(t.seconds());
+        t.reset();
+        render::VplRenderer renderer(context, scene);
+        // The first begin() builds the passes: pipelines and shader compilation belong to
+        // start-up, not to the throughput of later renders.
+        renderer.begin(scene.camera, render_options(config, clamp, !no_shadows));
+        renderer_s.push_back(t.seconds());
+
+        sampler::MonteCarloOptions mc;
+        mc.paths = paths;
+        mc.seed = seed;
+        mc.tracer.max_depth = max_depth;
+        t.reset();
+        const std::vector<light::Vpl> vpls =
+            sampler::MonteCarloSampler(scene, accel, lights).generate(mc);
+        sampling_s.push_back(t.seconds());
+        report.vpls = vpls.size();
+        report.triangles = scene.triangle_count();
+        report.device = context.device_info().name;
+
+        main_samples.push_back(
+            render_once(renderer, scene.camera, vpls, config, clamp, !no_shadows));
+        progress.advance();
+        for (size_t i = 0; i < sweep_configs.size(); ++i) {
+            sweep_samples[i].push_back(
+                render_once(renderer, scene.camera, vpls, sweep_configs[i], clamp, !no_shadows));
+            progress.advance();
+        }
+        report.peak_device_bytes =
+            std::max(report.peak_device_bytes, context.allocator().peak_bytes());
+    }
+    progress.finish();
+
+    report.scene_load_s = median(load_s);
+    report.bvh_build_s = median(bvh_s);
+    report.context_s = median(context_s);
+    report.renderer_s = median(renderer_s);
+    report.sampling_s = median(sampling_s);
+    report.main = summarise(config, main_samples, report.vpls, report.sampling_s);
+    for (size_t i = 0; i < sweep_configs.size(); ++i) {
+        report.sweep.push_back(
+            summarise(sweep_configs[i], sweep_samples[i], report.vpls, report.sampling_s));
+    }
+    report.peak_host_bytes = peak_host_bytes();
+
+    if (json_out.is_open()) {
+        json_out << bench_json(report);
+        json_out.close();
+        if (!json_out) throw InputError(json_path, "cannot write the benchmark JSON");
+    }
+    if (!quiet) std::fputs(bench_table(report).c_str(), stdout);
+    return 0;
+}
+
+}  // namespace mvpl::cli

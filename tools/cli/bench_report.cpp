@@ -1,0 +1,182 @@
+#include "tools/cli/bench_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+namespace mvpl::cli {
+
+namespace {
+
+double ratio(double numerator, double denominator) {
+    return denominator > 0.0 ? numerator / denominator : 0.0;
+}
+
+// JSON-escapes a string (paths and device names: quotes, backslashes, control characters).
+std::string quoted(const std::string& text) {
+    std::string out = "\"";
+    for (const char c : text) {
+        if (c == '"' || c == '\\') {
+            out += '\\';
+            out += c;
+        } else if (static_cast<unsigned char>(c) < 0x20) {
+            char buf[8];
+            std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(static_cast<unsigned char>(c)));
+            out += buf;
+        } else {
+            out += c;
+        }
+    }
+    return out + "\"";
+}
+
+// Seventeen significant digits round-trip a double, so a reader recomputes rates exactly.
+std::string number(double value) {
+    if (!std::isfinite(value)) return "null";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.17g", value);
+    return buf;
+}
+
+std::string render_json(const RenderResult& r, const std::string& indent) {
+    const std::string i = indent + "  ";
+    std::string s = "{\n";
+    s += i + "\"width\": " + std::to_string(r.config.width) + ",\n";
+    s += i + "\"height\": " + std::to_string(r.config.height) + ",\n";
+    s += i + "\"shadow_resolution\": " + std::to_string(r.config.shadow_resolution) + ",\n";
+    s += i + "\"batch\": " + std::to_string(r.config.batch) + ",\n";
+    s += i + "\"batches\": " + std::to_string(r.median.batches) + ",\n";
+    s += i + "\"g_buffer_ms\": " + number(r.median.g_buffer_ms) + ",\n";
+    s += i + "\"shadow_ms\": " + number(r.median.shadow_ms) + ",\n";
+    s += i + "\"shadow_ms_per_vpl\": " + number(r.shadow_ms_per_vpl) + ",\n";
+    s += i + "\"shading_ms\": " + number(r.median.shading_ms) + ",\n";
+    s += i + "\"shading_ms_per_vpl\": " + number(r.shading_ms_per_vpl) + ",\n";
+    s += i + "\"shading_pixel_vpls_per_s\": " + number(r.shading_pixel_vpls_per_s) + ",\n";
+    s += i + "\"render_wall_s\": " + number(r.median.wall_s) + ",\n";
+    s += i + "\"end_to_end_s\": " + number(r.end_to_end_s) + ",\n";
+    s += i + "\"end_to_end_vpls_per_s\": " + number(r.end_to_end_vpls_per_s) + "\n";
+    return s + indent + "}";
+}
+
+}  // namespace
+
+double BenchReport::paths_per_s() const {
+    return ratio(double(paths), sampling_s);
+}
+
+double BenchReport::sampling_vpls_per_s() const {
+    return ratio(double(vpls), sampling_s);
+}
+
+double median(std::vector<double> values) {
+    std::sort(values.begin(), values.end());
+    const size_t n = values.size();
+    if (n == 0) return 0.0;
+    return n % 2 ? values[n / 2] : 0.5 * (values[n / 2 - 1] + values[n / 2]);
+}
+
+RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample>& samples,
+                       uint64_t vpls, double sampling_s) {
+    auto field = [&samples](double RenderSample::*member) {
+        std::vector<double> values;
+        for (const RenderSample& s : samples)
+            values.push_back(s.*member);
+        return median(values);
+    };
+    RenderResult r;
+    r.config = config;
+    r.median.g_buffer_ms = field(&RenderSample::g_buffer_ms);
+    r.median.shadow_ms = field(&RenderSample::shadow_ms);
+    r.median.shading_ms = field(&RenderSample::shading_ms);
+    r.median.wall_s = field(&RenderSample::wall_s);
+    r.median.batches = samples.empty() ? 0 : samples.front().batches;
+    const double n = double(vpls);
+    r.shadow_ms_per_vpl = ratio(r.median.shadow_ms, n);
+    r.shading_ms_per_vpl = ratio(r.median.shading_ms, n);
+    r.shading_pixel_vpls_per_s =
+        ratio(double(config.width) * double(config.height) * n, r.median.shading_ms * 1e-3);
+    r.end_to_end_s = sampling_s + r.median.wall_s;
+    r.end_to_end_vpls_per_s = ratio(n, r.end_to_end_s);
+    return r;
+}
+
+std::string bench_json(const BenchReport& b) {
+    std::string s = "{\n";
+    s += "  \"scene\": " + quoted(b.scene) + ",\n";
+    s += "  \"triangles\": " + std::to_string(b.triangles) + ",\n";
+    s += "  \"device\": " + quoted(b.device) + ",\n";
+    s += "  \"repeat\": " + std::to_string(b.repeat) + ",\n";
+    s += std::string("  \"shadows\": ") + (b.shadows ? "true" : "false") + ",\n";
+    s += "  \"startup\": {\n";
+    s += "    \"scene_load_s\": " + number(b.scene_load_s) + ",\n";
+    s += "    \"bvh_build_s\": " + number(b.bvh_build_s) + ",\n";
+    s += "    \"context_s\": " + number(b.context_s) + ",\n";
+    s += "    \"renderer_s\": " + number(b.renderer_s) + ",\n";
+    s += "    \"total_s\": " + number(b.startup_s()) + "\n";
+    s += "  },\n";
+    s += "  \"light_paths\": {\n";
+    s += "    \"paths\": " + std::to_string(b.paths) + ",\n";
+    s += "    \"vpls\": " + std::to_string(b.vpls) + ",\n";
+    s += "    \"seconds\": " + number(b.sampling_s) + ",\n";
+    s += "    \"paths_per_s\": " + number(b.paths_per_s()) + ",\n";
+    s += "    \"vpls_per_s\": " + number(b.sampling_vpls_per_s()) + "\n";
+    s += "  },\n";
+    s += "  \"render\": " + render_json(b.main, "  ") + ",\n";
+    s += "  \"sweep\": [";
+    for (size_t i = 0; i < b.sweep.size(); ++i) {
+        s += (i ? ", " : "\n    ") + render_json(b.sweep[i], "    ");
+    }
+    s += b.sweep.empty() ? "],\n" : "\n  ],\n";
+    s += "  \"memory\": {\n";
+    s += "    \"peak_host_bytes\": " + std::to_string(b.peak_host_bytes) + ",\n";
+    s += "    \"peak_device_bytes\": " + std::to_string(b.peak_device_bytes) + "\n";
+    s += "  }\n";
+    return s + "}\n";
+}
+
+std::string bench_table(const BenchReport& b) {
+    const RenderResult& m = b.main;
+    char buf[512];
+    std::string s;
+    std::snprintf(buf, sizeof buf,
+                  "bench: %s, %llu triangles, %s; medians of %d%s\n"
+                  "  start-up         %8.3f s  (scene %.3f s, BVH %.3f s, Vulkan %.3f s, "
+                  "renderer + shaders %.3f s)\n",
+                  b.scene.c_str(), static_cast<unsigned long long>(b.triangles), b.device.c_str(),
+                  b.repeat, b.shadows ? "" : "; no shadows", b.startup_s(), b.scene_load_s,
+                  b.bvh_build_s, b.context_s, b.renderer_s);
+    s += buf;
+    std::snprintf(buf, sizeof buf,
+                  "  light paths      %8.3f s  %llu paths → %llu VPLs: %.0f paths/s, %.0f VPLs/s\n",
+                  b.sampling_s, static_cast<unsigned long long>(b.paths),
+                  static_cast<unsigned long long>(b.vpls), b.paths_per_s(),
+                  b.sampling_vpls_per_s());
+    s += buf;
+    std::snprintf(buf, sizeof buf,
+                  "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
+                  "    G-buffer       %8.2f ms\n"
+                  "    shadow         %8.2f ms  %.3f ms/VPL\n"
+                  "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
+                  "  end to end       %8.3f s  %.1f VPL/s\n"
+                  "  peak memory      host %.1f MiB, device %.1f MiB\n",
+                  m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
+                  m.median.batches, m.median.wall_s, m.median.g_buffer_ms, m.median.shadow_ms,
+                  m.shadow_ms_per_vpl, m.median.shading_ms, m.shading_ms_per_vpl,
+                  m.shading_pixel_vpls_per_s * 1e-6, m.end_to_end_s, m.end_to_end_vpls_per_s,
+                  double(b.peak_host_bytes) / (1 << 20), double(b.peak_device_bytes) / (1 << 20));
+    s += buf;
+    if (!b.sweep.empty()) {
+        s += "\n  batch  shadow  shadow ms/VPL  shading ms/VPL  M pixel·VPL/s  render s  VPL/s\n";
+        for (const RenderResult& r : b.sweep) {
+            std::snprintf(buf, sizeof buf, "  %5d  %6d  %13.3f  %14.3f  %13.1f  %8.3f  %5.1f\n",
+                          r.config.batch, r.config.shadow_resolution, r.shadow_ms_per_vpl,
+                          r.shading_ms_per_vpl, r.shading_pixel_vpls_per_s * 1e-6, r.median.wall_s,
+                          r.end_to_end_vpls_per_s);
+            s += buf;
+        }
+    }
+    return s;
+}
+
+}  // namespace mvpl::cli

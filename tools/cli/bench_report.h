@@ -1,0 +1,75 @@
+#pragma once
+// `mvpl bench` results: what one measured run holds, the medians over repeats, and the two ways
+// of printing them (a JSON document for machines, a table for people).
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace mvpl::cli {
+
+// One render configuration of the benchmark.
+struct BenchConfig {
+    int width = 512;
+    int height = 512;
+    int shadow_resolution = 256;
+    int batch = 32;
+};
+
+// One measured render of the VPLs with one configuration. Times in seconds unless named _ms.
+struct RenderSample {
+    double g_buffer_ms = 0.0;  // GPU time per pass (timestamp queries), summed over batches
+    double shadow_ms = 0.0;
+    double shading_ms = 0.0;
+    double wall_s = 0.0;  // host time of begin + accumulate + resolve (uploads, read-back)
+    uint32_t batches = 0;
+};
+
+// The medians over the repeats of one configuration, and the rates derived from those medians
+// (not medians of per-repeat rates), so that `vpls / end_to_end_s == end_to_end_vpls_per_s`.
+struct RenderResult {
+    BenchConfig config;
+    RenderSample median;
+    double shadow_ms_per_vpl = 0.0;
+    double shading_ms_per_vpl = 0.0;
+    double shading_pixel_vpls_per_s = 0.0;  // width · height · VPLs / shading GPU seconds
+    double end_to_end_s = 0.0;              // light-path generation + render wall time
+    double end_to_end_vpls_per_s = 0.0;
+};
+
+struct BenchReport {
+    std::string scene;
+    uint64_t triangles = 0;
+    std::string device;
+    int repeat = 1;
+    bool shadows = true;  // false with --no-shadows: no shadow pass, every VPL unshadowed
+    // Start-up, medians: scene file → Scene, Embree BVH, Vulkan context, renderer (geometry
+    // upload) and its first begin() (pipeline creation and shader compilation).
+    double scene_load_s = 0.0;
+    double bvh_build_s = 0.0;
+    double context_s = 0.0;
+    double renderer_s = 0.0;
+    // Light-path generation (Monte Carlo, the CPU with Embree), median seconds.
+    uint64_t paths = 0;
+    uint64_t vpls = 0;
+    double sampling_s = 0.0;
+    RenderResult main;
+    std::vector<RenderResult> sweep;  // empty without --sweep
+    uint64_t peak_host_bytes = 0;     // getrusage ru_maxrss
+    uint64_t peak_device_bytes = 0;   // high-water mark of mvpl's device allocations
+
+    double startup_s() const { return scene_load_s + bvh_build_s + context_s + renderer_s; }
+    double paths_per_s() const;
+    double sampling_vpls_per_s() const;
+};
+
+// Median of a non-empty list (the mean of the middle two for an even count).
+double median(std::vector<double> values);
+// Medians of each field of the samples, and the derived rates for `vpls` VPLs after
+// `sampling_s` seconds of light-path generation.
+RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample>& samples,
+                       uint64_t vpls, double sampling_s);
+
+std::string bench_json(const BenchReport& report);
+std::string bench_table(const BenchReport& report);
+
+}  // namespace mvpl::cli

@@ -1,0 +1,186 @@
+// `mvpl convergence`: error against run time for the reference path tracer and the VPL samplers,
+// against a reference image (DESIGN.md "Reference and oracle"; issue 6).
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+#include "engine/core/error.h"
+#include "engine/core/image.h"
+#include "engine/gpu/context.h"
+#include "engine/light/light_sampler.h"
+#include "engine/render/vpl_renderer.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
+#include "sampler/sampler_factory.h"
+#include "tools/cli/arg_parser.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/convergence_analysis.h"
+#include "tools/cli/convergence_runs.h"
+
+namespace mvpl::cli {
+
+namespace {
+
+std::vector<std::string> split_commas(const std::string& text) {
+    std::vector<std::string> out;
+    std::stringstream stream(text);
+    std::string item;
+    while (std::getline(stream, item, ','))
+        if (!item.empty()) out.push_back(item);
+    return out;
+}
+
+// tools/plot_convergence.py next to the sources this binary was built from, or $MVPL_TOOLS_DIR.
+std::filesystem::path plot_script() {
+    if (const char* dir = std::getenv("MVPL_TOOLS_DIR"))
+        return std::filesystem::path(dir) / "plot_convergence.py";
+    return std::filesystem::path(MVPL_TOOLS_DIR) / "plot_convergence.py";
+}
+
+std::string shell_quote(const std::string& s) {
+    std::string out = "'";
+    for (char c : s)
+        out += c == '\'' ? std::string("'\\''") : std::string(1, c);
+    return out + "'";
+}
+
+void print_summary(const std::vector<ConvergencePoint>& all,
+                   const std::vector<std::string>& methods) {
+    const std::vector<ConvergencePoint> pt = points_of(all, "pt");
+    const double c_pt = inverse_time_constant(pt);
+    for (const std::string& method : methods) {
+        const std::vector<ConvergencePoint> points = points_of(all, method);
+        if (points.empty()) continue;
+        const ConvergencePoint& last = points.back();
+        std::printf("%-11s relMSE %.3g at %.2f s (%llu %s), mean ratio %.4f", method.c_str(),
+                    last.rel_mse, last.seconds, static_cast<unsigned long long>(last.samples),
+                    method == "pt" ? "spp" : "VPLs", last.mean_ratio);
+        if (method != "pt") {
+            if (c_pt > 0.0 && last.rel_mse > 0.0) {
+                const double pt_seconds = c_pt / last.rel_mse;
+                std::printf("; the path tracer needs ≈%.3g s for it: %.1f× faster", pt_seconds,
+                            pt_seconds / last.seconds);
+            }
+            const FloorFit fit = fit_floor(points);
+            std::printf("; bias floor ≈%.3g (fit relMSE = floor + c/t)", fit.floor);
+        }
+        std::printf("\n");
+    }
+}
+
+}  // namespace
+
+int run_convergence(const Args& args) {
+    std::string scene_path, ref_path, out_dir = "convergence";
+    std::string methods_text = "pt,mc,metropolis";
+    float budget = 10.0f;
+    int max_depth = 6, width = 0, height = 0, shadow_res = 256, batch = 32;
+    float clamp = 0.05f;
+    uint64_t seed = 0;
+    bool quiet = false, no_plot = false;
+    ArgParser parser(
+        "convergence",
+        "Error against run time: the reference path tracer and the VPL samplers,\n"
+        "each run progressively up to --budget seconds against --ref; writes\n"
+        "DIR/convergence.csv and DIR/convergence.png and prints, per VPL sampler, the\n"
+        "speed-up over the path tracer at equal relMSE and the bias floor.");
+    parser.add_positional("SCENE", &scene_path, "scene file");
+    parser.add_string("--ref", &ref_path, "reference image (.exr); its size is the image size");
+    parser.add_float("--budget", &budget, "seconds per method");
+    parser.add_string("--out", &out_dir, "output directory");
+    parser.add_int("--max-depth", &max_depth, "path segments camera to light (-1 unlimited)");
+    parser.add_resolution("--res", &width, &height,
+                          "image size WxH (default and only allowed: the reference's)");
+    parser.add_string("--methods", &methods_text, "comma-separated: pt,mc,metropolis");
+    parser.add_float("--clamp", &clamp, "VPL clamping distance, fraction of the scene diagonal");
+    parser.add_int("--shadow-res", &shadow_res, "side of a shadow cube face in texels");
+    parser.add_int("--batch", &batch, "VPLs per shadow/shading batch");
+    parser.add_uint64("--seed", &seed, "random seed");
+    parser.add_flag("--no-plot", &no_plot, "write the CSV only");
+    parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
+    if (!parser.parse(args)) return 0;
+    if (ref_path.empty()) throw UsageError("convergence: --ref REF.exr is required");
+    if (!(budget > 0.0f && budget <= 1e6f))
+        throw UsageError("convergence: --budget must be in (0, 1e6] seconds");
+    if (!(clamp >= 0.0f && clamp <= 1.0f))
+        throw UsageError("convergence: --clamp must be in [0, 1]");
+    if (shadow_res < 4 || shadow_res > 4096)
+        throw UsageError("convergence: --shadow-res must be in 4..4096");
+    if (batch < 1 || batch > 256) throw UsageError("convergence: --batch must be in 1..256");
+    const std::vector<std::string> methods = split_commas(methods_text);
+    if (methods.empty()) throw UsageError("convergence: --methods names no method");
+    for (const std::string& m : methods) {
+        if (m != "pt" && m != "mc" && m != "metropolis")
+            throw UsageError("convergence: unknown method '" + m +
+                             "' (available: pt, mc, metropolis)");
+    }
+
+    const Image reference = read_exr(ref_path);
+    if (width != 0 && (width != reference.width() || height != reference.height())) {
+        throw UsageError("convergence: --res " + std::to_string(width) + "x" +
+                         std::to_string(height) + " differs from the reference's " +
+                         std::to_string(reference.width()) + "x" +
+                         std::to_string(reference.height()));
+    }
+    const scene::Scene scene = scene::load_scene(scene_path);
+    const trace::Accel accel(scene);
+    const light::LightSampler lights(scene);
+    std::filesystem::create_directories(out_dir);
+
+    ConvergenceRun run;
+    run.scene = &scene;
+    run.accel = &accel;
+    run.lights = &lights;
+    run.reference = &reference;
+    run.budget_seconds = budget;
+    run.max_depth = max_depth;
+    run.seed = seed;
+    run.quiet = quiet;
+
+    std::vector<ConvergencePoint> all;
+    std::unique_ptr<gpu::Context> context;
+    std::unique_ptr<render::VplRenderer> renderer;
+    for (const std::string& method : methods) {
+        std::vector<ConvergencePoint> points;
+        if (method == "pt") {
+            points = run_path_tracer(run);
+        } else {
+            if (!renderer) {
+                context = std::make_unique<gpu::Context>(gpu::ContextOptions{});
+                renderer = std::make_unique<render::VplRenderer>(*context, scene);
+            }
+            sampler::SamplerSettings settings;
+            settings.seed = seed;
+            settings.tracer.max_depth = max_depth;
+            settings.width = reference.width();
+            settings.height = reference.height();
+            settings.clamp = clamp;
+            points = run_vpl_sampler(run, method, settings, *renderer, clamp, uint32_t(shadow_res),
+                                     uint32_t(batch));
+        }
+        all.insert(all.end(), points.begin(), points.end());
+    }
+
+    const std::filesystem::path csv = std::filesystem::path(out_dir) / "convergence.csv";
+    std::ofstream(csv) << to_csv(all);
+    if (!quiet) print_summary(all, methods);
+    if (!no_plot) {
+        const std::filesystem::path png = std::filesystem::path(out_dir) / "convergence.png";
+        const std::string command = "python3 " + shell_quote(plot_script().string()) + " " +
+                                    shell_quote(csv.string()) + " " + shell_quote(png.string()) +
+                                    " --title " +
+                                    shell_quote(std::filesystem::path(scene_path).stem().string());
+        if (std::system(command.c_str()) != 0) {
+            std::fprintf(stderr,
+                         "mvpl: warning: the plot was not made (%s failed; python3-matplotlib "
+                         "installed?); %s is written\n",
+                         plot_script().string().c_str(), csv.string().c_str());
+        }
+    }
+    if (!quiet) std::printf("convergence: wrote %s\n", csv.string().c_str());
+    return 0;
+}
+
+}  // namespace mvpl::cli

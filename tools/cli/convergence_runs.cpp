@@ -1,0 +1,114 @@
+#include "tools/cli/convergence_runs.h"
+
+#include <algorithm>
+
+#include "engine/core/image_metrics.h"
+#include "engine/core/progress.h"
+#include "engine/core/timer.h"
+#include "engine/reference/path_tracer.h"
+#include "engine/render/vpl_renderer.h"
+
+namespace mvpl::cli {
+
+namespace {
+
+// Progress over the budget in tenths of a second.
+int64_t tenths(double seconds) {
+    return int64_t(seconds * 10.0);
+}
+
+}  // namespace
+
+ConvergencePoint measure(const std::string& method, double seconds, uint64_t samples,
+                         const Image& image, const Image& reference) {
+    const ImageError e = compare_images(image, reference);
+    ConvergencePoint p;
+    p.method = method;
+    p.seconds = seconds;
+    p.samples = samples;
+    p.rel_mse = e.rel_mse;
+    p.rmse = e.rmse;
+    p.mean_ratio = (e.mean_ratio.x + e.mean_ratio.y + e.mean_ratio.z) / 3.0;
+    return p;
+}
+
+std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run) {
+    const reference::PathTracer tracer(*run.scene, *run.accel, *run.lights);
+    const int w = run.reference->width(), h = run.reference->height();
+    std::vector<ConvergencePoint> points;
+    Image sum(w, h);
+    int spp = 0, chunk = 1;
+    Progress progress("pt", tenths(run.budget_seconds), run.quiet);
+    Timer timer;
+    double per_spp = 0.0, last = 0.0;
+    for (uint64_t round = 0;; ++round) {
+        // Stop before a chunk that would overrun the budget (its time extrapolated per spp).
+        if (spp > 0 && timer.seconds() + per_spp * chunk > run.budget_seconds) break;
+        reference::PathTracerOptions o;
+        o.width = w;
+        o.height = h;
+        o.spp = chunk;
+        o.max_depth = run.max_depth;
+        o.seed = run.seed * 1000003 + round;
+        o.quiet = true;
+        const Image part = tracer.render(o);
+        for (size_t i = 0; i < sum.pixels().size(); ++i)
+            sum.pixels()[i] += part.pixels()[i] * float(chunk);
+        spp += chunk;
+        const double seconds = timer.seconds();
+        per_spp = seconds / spp;
+        Image mean = sum;
+        for (Rgb& c : mean.pixels())
+            c = c / float(spp);
+        points.push_back(measure("pt", seconds, uint64_t(spp), mean, *run.reference));
+        progress.advance(tenths(std::min(seconds, run.budget_seconds)) -
+                         tenths(std::min(last, run.budget_seconds)));
+        last = seconds;
+        chunk = spp;  // doubling
+    }
+    progress.finish();
+    return points;
+}
+
+std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const std::string& name,
+                                              const sampler::SamplerSettings& settings,
+                                              render::VplRenderer& renderer, float clamp,
+                                              uint32_t shadow_resolution, uint32_t batch) {
+    Timer timer;
+    const std::unique_ptr<sampler::VplStream> stream = sampler::make_vpl_stream(
+        name, *run.scene, *run.accel, *run.lights, run.scene->camera, settings);
+    render::RenderOptions o;
+    o.width = uint32_t(run.reference->width());
+    o.height = uint32_t(run.reference->height());
+    o.shadow_resolution = shadow_resolution;
+    o.batch = batch;
+    o.clamp = clamp;
+    renderer.begin(run.scene->camera, o);
+
+    std::vector<ConvergencePoint> points;
+    Progress progress(name, tenths(run.budget_seconds), run.quiet);
+    uint64_t work = 16, vpls = 0;
+    double per_work = 0.0, last = 0.0;
+    std::vector<light::Vpl> chunk;
+    while (true) {
+        const double now = timer.seconds();
+        if (stream->work_done() > 0 && now + per_work * work > run.budget_seconds) break;
+        chunk.clear();
+        stream->next(work, chunk);
+        renderer.accumulate(chunk);
+        vpls += chunk.size();
+        const Image image = renderer.resolve(stream->scale());
+        const double seconds = timer.seconds();
+        per_work = seconds / double(stream->work_done());
+        points.push_back(measure(name, seconds, vpls, image, *run.reference));
+        progress.set_status(stream->statistics());
+        progress.advance(tenths(std::min(seconds, run.budget_seconds)) -
+                         tenths(std::min(last, run.budget_seconds)));
+        last = seconds;
+        work = stream->work_done();  // doubling
+    }
+    progress.finish();
+    return points;
+}
+
+}  // namespace mvpl::cli

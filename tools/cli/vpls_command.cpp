@@ -1,0 +1,190 @@
+// `mvpl vpls`: where a sampler puts its VPLs (the seed's Figure 4a/b) — VPL positions drawn as
+// dots over a flat-shaded CPU view of the scene, from above (a cutaway: back faces are skipped,
+// so closed rooms show their floors) or from the scene camera.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include "engine/core/error.h"
+#include "engine/core/image.h"
+#include "engine/light/light_sampler.h"
+#include "engine/scene/camera.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
+#include "engine/trace/interaction.h"
+#include "engine/trace/ray.h"
+#include "sampler/sampler_factory.h"
+#include "tools/cli/arg_parser.h"
+#include "tools/cli/commands.h"
+#include "tools/cli/output_check.h"
+
+namespace mvpl::cli {
+
+namespace {
+
+// The first front-facing hit along `ray` (back faces are looked through, at most 32 of them).
+std::optional<trace::SurfaceInteraction> first_front_hit(const scene::Scene& scene,
+                                                         const trace::Accel& accel,
+                                                         trace::Ray ray) {
+    for (int i = 0; i < 32; ++i) {
+        const std::optional<trace::Hit> hit = accel.intersect(ray);
+        if (!hit) return std::nullopt;
+        const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, ray);
+        if (si.front_face) return si;
+        ray = trace::spawn_ray(si.p, -si.ng, ray.direction);
+    }
+    return std::nullopt;
+}
+
+// A view: film position of a world point (false when it is behind the view) and the ray
+// through a pixel.
+struct View {
+    bool top = true;
+    int width = 512, height = 512;
+    // top: x → column, z → row over [lo, lo + extent·(w, h)]
+    float x0 = 0.0f, z0 = 0.0f, metres_per_pixel = 1.0f, y_above = 1.0f;
+    scene::Camera camera;
+
+    trace::Ray ray(float px, float py) const {
+        if (top) {
+            const Vec3 o(x0 + px * metres_per_pixel, y_above, z0 + py * metres_per_pixel);
+            return trace::Ray{o, Vec3(0.0f, -1.0f, 0.0f)};
+        }
+        const scene::CameraRay cr = scene::generate_camera_ray(camera, width, height, {px, py});
+        return trace::Ray{cr.origin, cr.direction};
+    }
+    bool project(const Vec3& p, Vec2& film) const {
+        if (top) {
+            film = Vec2((p.x - x0) / metres_per_pixel, (p.z - z0) / metres_per_pixel);
+            return true;
+        }
+        const Vec3 c = Vec3(glm::inverse(camera.camera_to_world) * Vec4(p, 1.0f));
+        if (!(c.z < 0.0f)) return false;
+        const float tan_half = std::tan(0.5f * camera.yfov);
+        const float aspect = float(width) / float(height);
+        const float ndc_x = c.x / (-c.z * tan_half * aspect);
+        const float ndc_y = c.y / (-c.z * tan_half);
+        film = Vec2((ndc_x + 1.0f) * 0.5f * float(width), (1.0f - ndc_y) * 0.5f * float(height));
+        return true;
+    }
+};
+
+View make_view(const scene::Scene& scene, bool top, int width, int height) {
+    View v;
+    v.top = top;
+    v.width = width;
+    v.height = height;
+    v.camera = scene.camera;
+    const scene::Bounds b = scene.bounds();
+    const float ex = std::max(b.hi.x - b.lo.x, 1e-6f), ez = std::max(b.hi.z - b.lo.z, 1e-6f);
+    // Fit the x–z extent with a 4% margin, centred.
+    v.metres_per_pixel = 1.04f * std::max(ex / float(width), ez / float(height));
+    v.x0 = 0.5f * (b.lo.x + b.hi.x) - 0.5f * float(width) * v.metres_per_pixel;
+    v.z0 = 0.5f * (b.lo.z + b.hi.z) - 0.5f * float(height) * v.metres_per_pixel;
+    v.y_above = b.hi.y + 0.01f * std::max(b.diagonal(), 1e-3f);
+    return v;
+}
+
+void draw_dot(Image& image, const Vec2& c, float radius, const Rgb& colour) {
+    const int x0 = int(std::floor(c.x - radius)), x1 = int(std::ceil(c.x + radius));
+    const int y0 = int(std::floor(c.y - radius)), y1 = int(std::ceil(c.y + radius));
+    for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y) {
+        for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) {
+            const float dx = float(x) + 0.5f - c.x, dy = float(y) + 0.5f - c.y;
+            if (dx * dx + dy * dy <= radius * radius) image.at(x, y) = colour;
+        }
+    }
+}
+
+}  // namespace
+
+int run_vpls(const Args& args) {
+    std::string scene_path, sampler_name = "mc", view_name = "top";
+    uint64_t count = 1024, seed = 0;
+    int width = 512, height = 512, max_depth = 6;
+    std::vector<std::string> outputs;
+    bool quiet = false;
+    sampler::SamplerSettings settings;
+    ArgParser parser("vpls",
+                     "Draws where a sampler puts its VPLs: dots over a flat-shaded view of SCENE\n"
+                     "(top: from above, back faces cut away; camera: the scene camera).\n"
+                     "Yellow: emitter VPLs; orange: surface VPLs; dot area grows with power.");
+    parser.add_positional("SCENE", &scene_path, "glTF 2.0 scene (.gltf or .glb)");
+    parser.add_string("--sampler", &sampler_name, "mc (default) or metropolis");
+    parser.add_uint64("--vpls", &count, "light paths (mc) or chain steps (metropolis)");
+    parser.add_string("--view", &view_name, "top (default) or camera");
+    parser.add_resolution("--res", &width, &height, "image size WxH");
+    parser.add_float("--beta", &settings.large_step, "metropolis: large-step probability");
+    parser.add_float("--sigma", &settings.sigma, "metropolis: small-step width");
+    parser.add_int("--chains", &settings.chains, "metropolis: independent chains");
+    parser.add_int("--max-depth", &max_depth, "path segments from the camera to the light");
+    parser.add_uint64("--seed", &seed, "random seed");
+    parser.add_strings("-o", &outputs, "output image, .png or .exr");
+    parser.add_flag("--quiet", &quiet, "no summary line");
+    if (!parser.parse(args)) return 0;
+    if (view_name != "top" && view_name != "camera")
+        throw UsageError("vpls: --view must be top or camera");
+    if (count < 1 || count > (uint64_t(1) << 24))
+        throw UsageError("vpls: --vpls must be in 1..2^24");
+    if (!(settings.large_step >= 0.0f && settings.large_step <= 1.0f))
+        throw UsageError("vpls: --beta must be in [0, 1]");
+    if (!(settings.sigma > 0.0f && settings.sigma <= 1.0f))
+        throw UsageError("vpls: --sigma must be in (0, 1]");
+    if (settings.chains < 1 || settings.chains > 4096)
+        throw UsageError("vpls: --chains must be in 1..4096");
+    if (outputs.empty()) outputs.push_back("vpls.png");
+    check_output_extensions(outputs);
+
+    const scene::Scene scene = scene::load_scene(scene_path);
+    const trace::Accel accel(scene);
+    const light::LightSampler lights(scene);
+    settings.seed = seed;
+    settings.tracer.max_depth = max_depth;
+    // The Metropolis target is the scene camera's view, whatever this picture shows.
+    std::unique_ptr<sampler::VplStream> stream =
+        sampler::make_vpl_stream(sampler_name, scene, accel, lights, scene.camera, settings);
+    std::vector<light::Vpl> vpls;
+    stream->next(count, vpls);
+
+    const View view = make_view(scene, view_name == "top", width, height);
+    Image image(width, height);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const trace::Ray ray = view.ray(float(x) + 0.5f, float(y) + 0.5f);
+            const auto si = first_front_hit(scene, accel, ray);
+            // Flat grey by the angle to the view direction: walls and floors stay apart.
+            const float shade =
+                si ? 0.05f + 0.25f * std::abs(glm::dot(si->ng, glm::normalize(ray.direction)))
+                   : 0.0f;
+            image.at(x, y) = Rgb(shade);
+        }
+    }
+    float max_power = 0.0f;
+    for (const light::Vpl& v : vpls)
+        max_power = std::max(max_power, luminance(v.power));
+    // Powers as the sampler weighted them, relative to the largest: area ∝ power, at least a
+    // pixel wide.
+    size_t drawn = 0;
+    for (const light::Vpl& v : vpls) {
+        Vec2 film;
+        if (v.type == light::VplType::Directional || !view.project(v.position, film)) continue;
+        const float rel = max_power > 0.0f ? luminance(v.power) / max_power : 0.0f;
+        const float radius = 0.8f + 0.004f * float(std::min(width, height)) * std::sqrt(rel);
+        const bool emitter = v.path_length == 0;
+        draw_dot(image, film, radius, emitter ? Rgb(1.0f, 0.9f, 0.2f) : Rgb(1.0f, 0.35f, 0.1f));
+        ++drawn;
+    }
+    for (const std::string& out : outputs)
+        write_image(image, out);
+    if (!quiet) {
+        const std::string stats = stream->statistics();
+        std::printf("vpls: %zu VPLs (%zu drawn) from %llu %s%s%s\n", vpls.size(), drawn,
+                    static_cast<unsigned long long>(stream->work_done()),
+                    sampler_name == "mc" ? "paths" : "steps", stats.empty() ? "" : "; ",
+                    stats.c_str());
+    }
+    return 0;
+}
+
+}  // namespace mvpl::cli

@@ -1,0 +1,292 @@
+#include "tools/preview/present_pass.h"
+
+#include <vulkan/vulkan.h>
+
+#include <array>
+#include <cmath>
+#include <cstring>
+
+#include "engine/gpu/buffer.h"
+#include "engine/gpu/compute_pipeline.h"
+#include "engine/gpu/context.h"
+#include "engine/gpu/image.h"
+#include "engine/gpu/shader_compiler.h"
+#include "engine/gpu/vk_check.h"
+#include "tools/preview/hud.h"
+
+namespace mvpl::preview {
+namespace {
+
+struct Push {
+    float scale;
+    float exposure_scale;
+    uint32_t width;
+    uint32_t height;
+    uint32_t source_width;
+    uint32_t source_height;
+    int32_t hud_x;
+    int32_t hud_y;
+    uint32_t hud_width;
+    uint32_t hud_height;
+    uint32_t emission_layer;
+    uint32_t linear_target;
+};
+
+constexpr uint32_t kGroup = 8;  // present.comp's local size
+
+void image_barrier(VkCommandBuffer cmd, VkImage image, VkPipelineStageFlags2 src_stage,
+                   VkAccessFlags2 src_access, VkPipelineStageFlags2 dst_stage,
+                   VkAccessFlags2 dst_access, VkImageLayout from, VkImageLayout to) {
+    VkImageMemoryBarrier2 b{};
+    b.sType = VK_STRUCTURE_TYPE_IMAGE_MEMORY_BARRIER_2;
+    b.srcStageMask = src_stage;
+    b.srcAccessMask = src_access;
+    b.dstStageMask = dst_stage;
+    b.dstAccessMask = dst_access;
+    b.oldLayout = from;
+    b.newLayout = to;
+    b.srcQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.dstQueueFamilyIndex = VK_QUEUE_FAMILY_IGNORED;
+    b.image = image;
+    b.subresourceRange = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 1, 0, 1};
+    VkDependencyInfo d{};
+    d.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO;
+    d.imageMemoryBarrierCount = 1;
+    d.pImageMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &d);
+}
+
+void memory_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 src_stage, VkAccessFlags2 src_access,
+                    VkPipelineStageFlags2 dst_stage, VkAccessFlags2 dst_access) {
+    VkMemoryBarrier2 b{};
+    b.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER_2;
+    b.srcStageMask = src_stage;
+    b.srcAccessMask = src_access;
+    b.dstStageMask = dst_stage;
+    b.dstAccessMask = dst_access;
+    VkDependencyInfo d{};
+    d.sType = VK_STRUCTURE_TYPE_DEPENDENCY_INFO;
+    d.memoryBarrierCount = 1;
+    d.pMemoryBarriers = &b;
+    vkCmdPipelineBarrier2(cmd, &d);
+}
+
+// The display image lives in GENERAL (gpu::Image); copies and blits read it in
+// TRANSFER_SRC_OPTIMAL, which the validation layer asks for and real GPUs may prefer.
+void to_transfer_source(VkCommandBuffer cmd, VkImage image) {
+    image_barrier(cmd, image, VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                  VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_READ_BIT, VK_IMAGE_LAYOUT_GENERAL,
+                  VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL);
+}
+
+void to_general(VkCommandBuffer cmd, VkImage image, VkPipelineStageFlags2 dst_stage,
+                VkAccessFlags2 dst_access) {
+    image_barrier(cmd, image, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE, dst_stage,
+                  dst_access, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL);
+}
+
+gpu::ComputeLayout present_layout() {
+    gpu::ComputeLayout layout;
+    layout.bindings = {gpu::BindingType::storage_image, gpu::BindingType::storage_image,
+                       gpu::BindingType::storage_image, gpu::BindingType::storage_image};
+    layout.push_constant_bytes = sizeof(Push);
+    return layout;
+}
+
+}  // namespace
+
+struct PresentPass::Impl {
+    gpu::Context* context;
+    bool linear_target;
+    gpu::ComputePipeline pipeline;
+    // Its own pool: the Context's transient pool is reset only by submit_and_wait, which idle
+    // frames (a converged picture) never call.
+    VkDescriptorPool pool = VK_NULL_HANDLE;
+    VkDescriptorSet set = VK_NULL_HANDLE;
+    gpu::Image display;
+    gpu::Image hud;  // 1×1 transparent until the first set_hud
+    uint32_t hud_width = 0;
+    uint32_t hud_height = 0;
+    int32_t hud_x = 0;
+    int32_t hud_y = 0;
+    gpu::Buffer readback;
+    uint32_t captured_width = 0;
+    uint32_t captured_height = 0;
+
+    Impl(gpu::Context& c, bool linear)
+        : context(&c),
+          linear_target(linear),
+          pipeline(c, gpu::compile_embedded_shader("preview/present.comp"), present_layout(),
+                   "preview/present.comp") {}
+};
+
+PresentPass::PresentPass(gpu::Context& context, bool linear_target)
+    : m_impl(std::make_unique<Impl>(context, linear_target)) {
+    Impl& m = *m_impl;
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 4};
+    VkDescriptorPoolCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    info.maxSets = 1;
+    info.poolSizeCount = 1;
+    info.pPoolSizes = &size;
+    gpu::vk_check(vkCreateDescriptorPool(context.device(), &info, nullptr, &m.pool),
+                  "vkCreateDescriptorPool");
+    const VkDescriptorSetLayout layout = m.pipeline.set_layout();
+    VkDescriptorSetAllocateInfo alloc{};
+    alloc.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_ALLOCATE_INFO;
+    alloc.descriptorPool = m.pool;
+    alloc.descriptorSetCount = 1;
+    alloc.pSetLayouts = &layout;
+    gpu::vk_check(vkAllocateDescriptorSets(context.device(), &alloc, &m.set),
+                  "vkAllocateDescriptorSets");
+    gpu::ImageDesc desc;
+    desc.format = gpu::Format::rgba8_unorm;
+    desc.usage = gpu::ImageUsage::storage;
+    m.hud = gpu::Image(context, desc, "preview hud");
+    m.hud.upload(std::vector<uint8_t>(4, 0));
+}
+
+PresentPass::~PresentPass() {
+    Impl& m = *m_impl;
+    m.context->wait_idle();
+    vkDestroyDescriptorPool(m.context->device(), m.pool, nullptr);
+}
+
+void PresentPass::set_hud(const HudBitmap& hud) {
+    Impl& m = *m_impl;
+    if (hud.width == 0 || hud.height == 0) {
+        m.hud_width = 0;
+        return;
+    }
+    if (!m.hud.valid() || m.hud.width() != hud.width || m.hud.height() != hud.height) {
+        gpu::ImageDesc desc;
+        desc.width = hud.width;
+        desc.height = hud.height;
+        desc.format = gpu::Format::rgba8_unorm;
+        desc.usage = gpu::ImageUsage::storage;
+        m.hud = gpu::Image(*m.context, desc, "preview hud");
+    }
+    m.hud.upload(hud.rgba);
+    m.hud_width = hud.width;
+    m.hud_height = hud.height;
+    m.hud_x = hud.x;
+    m.hud_y = hud.y;
+}
+
+void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& accumulation,
+                         const gpu::Image& g_buffer, const PresentParams& params, bool capture) {
+    Impl& m = *m_impl;
+    // The display image has the window's size; the accumulation may be smaller (camera moving).
+    const uint32_t width = frame.width;
+    const uint32_t height = frame.height;
+    if (!m.display.valid() || m.display.width() != width || m.display.height() != height) {
+        gpu::ImageDesc desc;
+        desc.width = width;
+        desc.height = height;
+        desc.format = gpu::Format::rgba8_unorm;
+        desc.usage = gpu::ImageUsage::storage;
+        m.display = gpu::Image(*m.context, desc, "preview display");
+    }
+    if (capture && (!m.readback.valid() || m.readback.size() < uint64_t(width) * height * 4)) {
+        m.readback = gpu::Buffer(*m.context, uint64_t(width) * height * 4, gpu::BufferUsage::none,
+                                 gpu::MemoryLocation::readback, "preview screenshot");
+    }
+
+    // The frame before has finished (Swapchain::end_frame waits), so the set is free to update.
+    const std::array<const gpu::Image*, 4> images{&accumulation, &g_buffer, &m.display, &m.hud};
+    std::array<VkDescriptorImageInfo, 4> infos{};
+    std::array<VkWriteDescriptorSet, 4> writes{};
+    for (size_t i = 0; i < images.size(); ++i) {
+        infos[i].imageView = images[i]->view();
+        infos[i].imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[i].dstSet = m.set;
+        writes[i].dstBinding = uint32_t(i);
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes[i].pImageInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(m.context->device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+
+    const VkCommandBuffer cmd = frame.cmd;
+    // The renderer's submissions (and the last frame's blit, which read the display image)
+    // → this frame's shader.
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT, VK_ACCESS_2_MEMORY_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_READ_BIT | VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline.handle());
+    vkCmdBindDescriptorSets(cmd, VK_PIPELINE_BIND_POINT_COMPUTE, m.pipeline.pipeline_layout(), 0, 1,
+                            &m.set, 0, nullptr);
+    Push push{};
+    push.scale = float(params.scale);
+    push.exposure_scale = std::exp2(params.exposure);
+    push.width = width;
+    push.height = height;
+    push.source_width = accumulation.width();
+    push.source_height = accumulation.height();
+    push.emission_layer = params.emission_layer;
+    push.linear_target = m.linear_target ? 1u : 0u;
+    const auto dispatch = [&](bool hud) {
+        push.hud_width = hud ? m.hud_width : 0;
+        push.hud_height = hud ? m.hud_height : 0;
+        push.hud_x = m.hud_x;
+        push.hud_y = m.hud_y;
+        vkCmdPushConstants(cmd, m.pipeline.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
+                           sizeof push, &push);
+        vkCmdDispatch(cmd, (width + kGroup - 1) / kGroup, (height + kGroup - 1) / kGroup, 1);
+    };
+    const bool hud = params.hud && m.hud_width > 0;
+    if (capture) {
+        dispatch(false);
+        to_transfer_source(cmd, m.display.handle());
+        VkBufferImageCopy region{};
+        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+        region.imageExtent = {width, height, 1};
+        vkCmdCopyImageToBuffer(cmd, m.display.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                               m.readback.handle(), 1, &region);
+        memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+        m.captured_width = width;
+        m.captured_height = height;
+        if (hud) {
+            // The copy read what the HUD pass overwrites.
+            to_general(cmd, m.display.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+            dispatch(true);
+            to_transfer_source(cmd, m.display.handle());
+        }
+    } else {
+        dispatch(hud);
+        to_transfer_source(cmd, m.display.handle());
+    }
+
+    // The acquire semaphore is waited for at the transfer stage (Swapchain::end_frame).
+    image_barrier(cmd, frame.image, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE,
+                  VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    VkImageBlit blit{};
+    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    blit.srcOffsets[1] = {int32_t(width), int32_t(height), 1};
+    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    blit.dstOffsets[1] = {int32_t(frame.width), int32_t(frame.height), 1};
+    vkCmdBlitImage(cmd, m.display.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, frame.image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
+    image_barrier(cmd, frame.image, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+    // Back to GENERAL, the layout gpu::Image keeps (the next frame's barrier orders the rest).
+    to_general(cmd, m.display.handle(), VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+               VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+}
+
+std::vector<uint8_t> PresentPass::captured(uint32_t& width, uint32_t& height) const {
+    const Impl& m = *m_impl;
+    width = m.captured_width;
+    height = m.captured_height;
+    std::vector<uint8_t> bytes(size_t(width) * height * 4);
+    if (!bytes.empty()) std::memcpy(bytes.data(), m.readback.mapped(), bytes.size());
+    return bytes;
+}
+
+}  // namespace mvpl::preview

@@ -1,0 +1,51 @@
+#pragma once
+// The preview's present pass: scale · accumulation + emission, exposed and sRGB-encoded like the
+// PNG writer (shaders/preview/present.comp), the HUD blended on top, blitted into the swapchain
+// image. A capture reads the display image back before the HUD is drawn, so that a screenshot
+// is the rendered picture only. Vulkan-free to include.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "engine/gpu/swapchain.h"
+
+namespace mvpl::gpu {
+class Context;
+class Image;
+}  // namespace mvpl::gpu
+
+namespace mvpl::preview {
+
+struct HudBitmap;
+
+struct PresentParams {
+    double scale = 1.0;  // the VPL stream's scale()
+    float exposure = 0.0f;
+    bool hud = true;
+    uint32_t emission_layer = 0;
+};
+
+class PresentPass {
+public:
+    // linear_target: the swapchain format is *_SRGB (it encodes on write).
+    PresentPass(gpu::Context& context, bool linear_target);
+    ~PresentPass();
+    PresentPass(const PresentPass&) = delete;
+    PresentPass& operator=(const PresentPass&) = delete;
+
+    // Uploads the HUD text image (outside a frame's recording).
+    void set_hud(const HudBitmap& hud);
+    // Records into frame.cmd. The display image has the frame's size and shows the accumulation
+    // scaled to it (nearest neighbour; 1:1 when the sizes agree). capture: read the encoded
+    // picture back (captured() after Swapchain::end_frame).
+    void record(const gpu::SwapchainFrame& frame, const gpu::Image& accumulation,
+                const gpu::Image& g_buffer, const PresentParams& params, bool capture);
+    // RGBA8, rows top first, of the last capture; width × height of that frame.
+    std::vector<uint8_t> captured(uint32_t& width, uint32_t& height) const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace mvpl::preview

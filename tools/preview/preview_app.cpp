@@ -1,0 +1,393 @@
+#include "tools/preview/preview_app.h"
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <memory>
+#include <optional>
+
+#include "engine/core/error.h"
+#include "engine/core/image.h"
+#include "engine/core/timer.h"
+#include "engine/gpu/context.h"
+#include "engine/gpu/swapchain.h"
+#include "engine/light/light_sampler.h"
+#include "engine/render/g_buffer_pass.h"
+#include "engine/render/vpl_renderer.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
+#include "sampler/sampler_factory.h"
+#include "tools/preview/camera_controller.h"
+#include "tools/preview/hud.h"
+#include "tools/preview/present_pass.h"
+#include "tools/preview/preview_stats.h"
+#include "tools/preview/script.h"
+#include "tools/preview/vpl_history.h"
+#include "tools/preview/window.h"
+
+namespace mvpl::preview {
+namespace {
+
+// Interaction speeds: degrees per dragged pixel, scroll step as a distance factor, scene
+// diagonals per second of a held fly key.
+constexpr float kDegreesPerPixel = 0.3f;
+constexpr float kWheelFactor = 0.9f;
+constexpr float kFlySpeed = 0.5f;
+constexpr float kExposureStep = 0.5f;
+constexpr double kHudInterval = 0.25;  // seconds between HUD redraws
+// Frame time to stay under while the camera moves (10 fps, the interactive target), and the
+// coarsest motion resolution (1/4 per axis) used to get there.
+constexpr double kMovingFrameSeconds = 0.09;
+constexpr uint32_t kMaxMotionDivisor = 4;
+// Time-budget mode draws at most this many units ahead of what it measured would fit, and never
+// more than this in one accumulate(): a wrong estimate costs one frame, not seconds.
+constexpr uint64_t kMaxUnitsPerCall = 64;
+
+bool has_extension(const std::string& path, const char* ext) {
+    std::string e = std::filesystem::path(path).extension().string();
+    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
+    return e == ext;
+}
+
+void write_rgba_png(const std::string& path, const std::vector<uint8_t>& rgba, uint32_t width,
+                    uint32_t height) {
+    std::vector<uint8_t> rgb(size_t(width) * height * 3);
+    for (size_t i = 0; i < size_t(width) * height; ++i)
+        for (int c = 0; c < 3; ++c)
+            rgb[3 * i + size_t(c)] = rgba[4 * i + size_t(c)];
+    if (!stbi_write_png(path.c_str(), int(width), int(height), 3, rgb.data(), int(width) * 3))
+        throw std::runtime_error(path + ": cannot write PNG");
+}
+
+class PreviewApp {
+public:
+    explicit PreviewApp(const PreviewOptions& options)
+        : m_options(options),
+          m_scene(scene::load_scene(options.scene_path)),
+          m_accel(m_scene),
+          m_lights(m_scene),
+          m_sampler(options.sampler),
+          m_script(options.script.empty() ? std::vector<ScriptEvent>{}
+                                          : load_script(options.script)),
+          m_window("mvpl preview: " + std::filesystem::path(options.scene_path).filename().string(),
+                   options.width, options.height),
+          m_context(context_options()),
+          m_renderer(m_context, m_scene),
+          m_swapchain(m_context, m_window.create_surface(m_context.instance()),
+                      uint32_t(options.width), uint32_t(options.height)),
+          m_present(m_context, m_swapchain.srgb()),
+          m_controller(m_scene.camera, m_scene.bounds()),
+          m_exposure(options.exposure),
+          m_motion_divisor(options.motion_scaling ? 2 : 1) {}
+
+    int run(const Timer& start);
+
+private:
+    static gpu::ContextOptions context_options() {
+        gpu::ContextOptions co;
+        co.instance_extensions = Window::required_instance_extensions();
+        co.can_present = &Window::can_present;
+        return co;
+    }
+    float clamp() const { return m_clamping ? m_options.clamp : 0.0f; }
+    std::unique_ptr<VplHistory> make_history(const std::string& sampler) const;
+    void apply(const Input& input, double dt);
+    void apply_key(const std::string& key);
+    void apply_script(uint64_t frame);
+    // Starts a new sum for the window's framebuffer, at 1/divisor of its size.
+    void restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving);
+    void render_work();
+    void update_hud(bool force);
+    void save(const std::string& path, bool png_from_display);
+
+    PreviewOptions m_options;
+    scene::Scene m_scene;
+    trace::Accel m_accel;
+    light::LightSampler m_lights;
+    std::string m_sampler;
+    std::vector<ScriptEvent> m_script;
+    size_t m_next_event = 0;
+    Window m_window;
+    gpu::Context m_context;
+    render::VplRenderer m_renderer;
+    gpu::Swapchain m_swapchain;
+    PresentPass m_present;
+    HudFont m_font;
+    CameraController m_controller;
+    // Monte Carlo VPLs, kept for the whole run (they do not depend on the view), and the chain
+    // of a view-dependent sampler (Metropolis), started when the camera comes to rest: while it
+    // moves the Monte Carlo VPLs give an immediate picture instead of a bootstrap per frame.
+    std::unique_ptr<VplHistory> m_mc_history;
+    std::unique_ptr<VplHistory> m_chain;
+    VplHistory* m_history = nullptr;  // the one the current sum draws from
+
+    float m_exposure;
+    bool m_clamping = true;
+    bool m_quit = false;
+    bool m_moved = true;        // restart the sum before the next frame
+    bool m_motion_sum = false;  // the current sum is a moving frame's (coarse, or Monte Carlo)
+    bool m_screenshot_key = false;
+    uint32_t m_render_width = 0, m_render_height = 0;  // the current sum's
+    uint32_t m_window_width = 0, m_window_height = 0;  // framebuffer the sum was started for
+    // While the camera moves the sum is rendered at 1/m_motion_divisor of the window's size per
+    // axis (nearest-neighbour upscaled by the present pass), adapted to keep moving frames within
+    // kMovingFrameSeconds; at rest the next frame restarts at full size.
+    uint32_t m_motion_divisor;
+    size_t m_replayed = 0;       // segments of the history in the current sum
+    double m_scale = 0.0;        // of the current sum
+    double m_ms_per_unit = 0.0;  // measured shading time per sampler unit (EMA)
+    uint32_t m_screenshots = 0;
+    PreviewStats m_stats;
+    Timer m_hud_timer;
+    bool m_hud_dirty = true;
+};
+
+std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler) const {
+    sampler::SamplerSettings s;
+    s.seed = m_options.seed;
+    s.tracer.max_depth = m_options.max_depth;
+    s.width = int(m_window_width ? m_window_width : uint32_t(m_options.width));
+    s.height = int(m_window_height ? m_window_height : uint32_t(m_options.height));
+    s.clamp = clamp();
+    return std::make_unique<VplHistory>(
+        sampler::make_vpl_stream(sampler, m_scene, m_accel, m_lights, m_controller.camera(), s),
+        m_options.max_paths);
+}
+
+void PreviewApp::apply_key(const std::string& key) {
+    if (key == "r") {
+        m_controller.reset();
+        m_moved = true;
+    } else if (key == "plus" || key == "minus") {
+        m_exposure += key == "plus" ? kExposureStep : -kExposureStep;
+        m_hud_dirty = true;
+    } else if (key == "m") {
+        m_sampler = m_sampler == "mc" ? "metropolis" : "mc";
+        m_moved = true;
+    } else if (key == "c") {
+        m_clamping = !m_clamping;
+        m_moved = true;  // a chain's target depends on it too: it starts again at rest
+    } else if (key == "p") {
+        m_screenshot_key = true;
+    } else if (key == "escape") {
+        m_quit = true;
+    }
+}
+
+void PreviewApp::apply(const Input& in, double dt) {
+    if (in.orbit_x != 0.0f || in.orbit_y != 0.0f) {
+        m_controller.orbit(-in.orbit_x * kDegreesPerPixel, in.orbit_y * kDegreesPerPixel);
+        m_moved = true;
+    }
+    if (in.pan_x != 0.0f || in.pan_y != 0.0f) {
+        const float h = float(std::max<uint32_t>(m_window_height, 1));
+        m_controller.pan(-in.pan_x / h, in.pan_y / h);
+        m_moved = true;
+    }
+    if (in.look_x != 0.0f || in.look_y != 0.0f) {
+        m_controller.look(-in.look_x * kDegreesPerPixel, in.look_y * kDegreesPerPixel);
+        m_moved = true;
+    }
+    if (in.wheel != 0.0f) {
+        m_controller.zoom(std::pow(kWheelFactor, in.wheel));
+        m_moved = true;
+    }
+    if (in.fly_forward || in.fly_right || in.fly_up) {
+        const float step = kFlySpeed * float(std::min(dt, 0.1));
+        m_controller.fly(float(in.fly_forward) * step, float(in.fly_right) * step,
+                         float(in.fly_up) * step);
+        m_moved = true;
+    }
+    for (const std::string& key : in.keys)
+        apply_key(key);
+}
+
+void PreviewApp::apply_script(uint64_t frame) {
+    for (; m_next_event < m_script.size() && m_script[m_next_event].frame <= frame;
+         ++m_next_event) {
+        const ScriptEvent& e = m_script[m_next_event];
+        const std::vector<float>& v = e.values;
+        if (e.action == "key") {
+            apply_key(e.key);
+            continue;
+        }
+        if (e.action == "resize") {
+            m_window.set_size(int(v[0]), int(v[1]));
+            continue;
+        }
+        if (e.action == "orbit") m_controller.orbit(v[0], v[1]);
+        if (e.action == "pan") m_controller.pan(v[0], v[1]);
+        if (e.action == "zoom") m_controller.zoom(v[0]);
+        if (e.action == "fly") m_controller.fly(v[0], v[1], v[2]);
+        if (e.action == "look") m_controller.look(v[0], v[1]);
+        m_moved = true;
+    }
+}
+
+void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving) {
+    m_window_width = width;
+    m_window_height = height;
+    m_render_width = std::max(width / divisor, 1u);
+    m_render_height = std::max(height / divisor, 1u);
+    if (!m_mc_history) m_mc_history = make_history("mc");
+    const bool chain = m_sampler != "mc";
+    if (moving) m_chain.reset();  // its target was what the old view saw
+    if (chain && !moving && !m_chain) m_chain = make_history(m_sampler);
+    m_history = chain && !moving ? m_chain.get() : m_mc_history.get();
+    m_motion_sum = moving && (divisor > 1 || chain);
+    render::RenderOptions ro;
+    ro.width = m_render_width;
+    ro.height = m_render_height;
+    ro.shadow_resolution = m_options.shadow_resolution;
+    ro.batch = m_options.batch;
+    ro.clamp = clamp();
+    m_renderer.begin(m_controller.camera(), ro);
+    m_replayed = 0;
+    m_scale = 0.0;
+    m_moved = false;
+    m_hud_dirty = true;
+}
+
+void PreviewApp::render_work() {
+    const Timer timer;
+    const bool fixed = m_options.paths_per_frame > 0;
+    for (bool first = true;; first = false) {
+        uint64_t units = m_options.paths_per_frame;
+        if (!fixed) {
+            // As many units as the rest of the budget holds at the measured rate (one at first).
+            const double left = m_options.budget_ms - 1e3 * timer.seconds();
+            if (!first && (m_ms_per_unit <= 0.0 || left < m_ms_per_unit)) break;
+            units = m_ms_per_unit > 0.0 ? uint64_t(std::max(left / m_ms_per_unit, 1.0)) : 1;
+            units = std::min(units, kMaxUnitsPerCall);
+        }
+        // Whole segments: replayed ones first (after a move), then new ones from the stream.
+        const size_t from = m_history->segment_begin(m_replayed);
+        size_t to = from;
+        uint64_t drawn = 0;
+        while (drawn < units && m_history->ensure(m_replayed, units - drawn)) {
+            const VplSegment& segment = m_history->segment(m_replayed++);
+            to = segment.end;
+            m_scale = segment.scale;
+            drawn += segment.work;
+        }
+        if (to == from) break;  // converged: nothing left to draw
+        const Timer shading;
+        m_renderer.accumulate(
+            std::span<const light::Vpl>(m_history->vpls().data() + from, to - from));
+        const double ms = 1e3 * shading.seconds();
+        const double per_unit = ms / double(std::max<uint64_t>(drawn, 1));
+        m_ms_per_unit = m_ms_per_unit > 0.0 ? 0.7 * m_ms_per_unit + 0.3 * per_unit : per_unit;
+        m_stats.add_vpls(to - from);
+        if (fixed) break;
+    }
+}
+
+void PreviewApp::update_hud(bool force) {
+    if (!m_options.hud) return;
+    if (!force && !m_hud_dirty && m_hud_timer.seconds() < kHudInterval) return;
+    m_hud_timer.reset();
+    m_hud_dirty = false;
+    const bool chain = m_history != m_mc_history.get();
+    const std::string name =
+        m_sampler == "mc" || chain ? m_sampler : m_sampler + " (mc while moving)";
+    std::vector<std::string> lines = m_stats.hud_lines(
+        name, chain, m_render_width, m_render_height, m_history->segment_begin(m_replayed),
+        m_history->work_done(), clamp(), m_exposure, m_history->statistics(),
+        m_history->exhausted() && m_replayed == m_history->segments());
+    m_present.set_hud(m_font.render(lines, 8, 8, m_render_width > 16 ? m_render_width - 16 : 0));
+}
+
+void PreviewApp::save(const std::string& path, bool png_from_display) {
+    if (has_extension(path, ".exr")) {
+        write_exr(m_renderer.resolve(m_scale), path);
+    } else if (png_from_display) {
+        uint32_t w = 0, h = 0;
+        const std::vector<uint8_t> rgba = m_present.captured(w, h);
+        write_rgba_png(path, rgba, w, h);
+    } else {
+        write_png(m_renderer.resolve(m_scale), path, m_exposure);
+    }
+    if (!m_options.quiet) std::printf("preview: wrote %s\n", path.c_str());
+}
+
+int PreviewApp::run(const Timer& start) {
+    Timer frame_timer;
+    for (uint64_t frame = 0; m_options.frames == 0 || frame < m_options.frames; ++frame) {
+        const double dt = frame_timer.seconds();
+        frame_timer.reset();
+        m_window.poll();
+        apply(m_window.take_input(), dt);
+        apply_script(frame);
+        if (m_quit || m_window.close_requested()) break;
+        uint32_t width = 0, height = 0;
+        m_window.framebuffer_size(width, height);
+        if (width == 0 || height == 0) {  // minimised: nothing to render or present
+            m_window.wait(0.05);
+            continue;
+        }
+        // A camera move or resize restarts the sum at the motion resolution; the first frame at
+        // rest restarts it at full resolution.
+        const bool moving = m_moved || width != m_window_width || height != m_window_height;
+        const bool refine = !moving && m_motion_sum;
+        const Timer phase;
+        if (moving || refine) restart(width, height, moving ? m_motion_divisor : 1, moving);
+        const double restarted = phase.seconds();
+        render_work();
+        const double shaded = phase.seconds();
+        update_hud(moving || refine);
+
+        const bool last = m_options.frames > 0 && frame + 1 == m_options.frames;
+        const bool capture = m_screenshot_key || (last && !m_options.screenshot.empty());
+        PresentParams params;
+        params.scale = m_scale;
+        params.exposure = m_exposure;
+        params.hud = m_options.hud;
+        params.emission_layer = render::kGBufferEmission;
+        gpu::SwapchainFrame sc;
+        if (m_swapchain.begin_frame(width, height, sc)) {
+            m_present.record(sc, m_renderer.accumulation(), m_renderer.g_buffer(), params, capture);
+            m_swapchain.end_frame();
+            const double seconds = frame_timer.seconds();
+            // The first frame is the first image (reported on its own), not a camera move.
+            const bool moved = moving && frame > 0;
+            m_stats.frame_presented(seconds, start.seconds(), moved);
+            if (moved)
+                m_stats.moving_phases(restarted, shaded - restarted, phase.seconds() - shaded);
+            if (moved && m_options.motion_scaling) {
+                if (seconds > kMovingFrameSeconds && m_motion_divisor < kMaxMotionDivisor)
+                    ++m_motion_divisor;
+                else if (seconds < 0.4 * kMovingFrameSeconds && m_motion_divisor > 1)
+                    --m_motion_divisor;
+            }
+            if (m_screenshot_key) {
+                m_screenshot_key = false;
+                const std::string base = "mvpl-preview-" + std::to_string(m_screenshots++);
+                save(base + ".png", true);
+                save(base + ".exr", true);
+            }
+            if (last && !m_options.screenshot.empty()) save(m_options.screenshot, true);
+        } else if (last && !m_options.screenshot.empty()) {
+            save(m_options.screenshot, false);  // no image to present to: resolve instead
+        }
+        // A converged picture and no input: sleep instead of spinning.
+        if (m_options.frames == 0 && m_history->exhausted() && m_replayed == m_history->segments())
+            m_window.wait(0.05);
+    }
+    for (const std::string& message : m_context.validation_messages())
+        std::fprintf(stderr, "mvpl: validation: %s\n", message.c_str());
+    if (!m_options.quiet) std::printf("%s\n", m_stats.summary().c_str());
+    return 0;
+}
+
+}  // namespace
+
+int run_preview(const PreviewOptions& options) {
+    const Timer start;
+    PreviewApp app(options);
+    return app.run(start);
+}
+
+}  // namespace mvpl::preview

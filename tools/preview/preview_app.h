@@ -1,0 +1,38 @@
+#pragma once
+// `mvpl preview`: the interactive progressive VPL preview. Each frame shades as many VPL batches
+// as fit a time budget into the running sum and shows scale · Σ + emission; a camera move
+// restarts the sum. Monte Carlo VPLs do not depend on the view, so they are kept and shaded
+// again after a move (the picture converges to the same image as `mvpl render` with the same
+// seed); a Metropolis chain's target depends on the camera, so it restarts with it.
+#include <cstdint>
+#include <string>
+
+namespace mvpl::preview {
+
+struct PreviewOptions {
+    std::string scene_path;
+    std::string sampler = "mc";
+    int width = 512;  // initial window size
+    int height = 512;
+    double budget_ms = 50.0;       // rendering time per frame (when paths_per_frame is 0)
+    uint64_t paths_per_frame = 0;  // fixed sampler work per frame instead of a time budget
+    uint64_t max_paths = 0;        // stop sampling after this many units (0: never)
+    uint64_t frames = 0;           // exit after this many frames (0: when the window closes)
+    std::string screenshot;        // written after the last frame (.png or .exr)
+    std::string script;            // --script FILE
+    float clamp = 0.05f;
+    float exposure = 0.0f;
+    uint64_t seed = 0;
+    int max_depth = 6;
+    uint32_t shadow_resolution = 256;
+    uint32_t batch = 32;
+    bool hud = true;
+    // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
+    bool motion_scaling = true;
+    bool quiet = false;
+};
+
+// Returns the exit code.
+int run_preview(const PreviewOptions& options);
+
+}  // namespace mvpl::preview
