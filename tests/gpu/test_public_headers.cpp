@@ -13,6 +13,8 @@
 #include "engine/gpu/image.h"
 #include "engine/gpu/memory.h"
 #include "engine/gpu/shader_compiler.h"
+#include "engine/gpu/spirv_cache.h"
+#include "engine/gpu/swapchain.h"
 #include "engine/gpu/validation.h"
 #include "engine/gpu/vk_fwd.h"
 

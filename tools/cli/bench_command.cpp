@@ -98,15 +98,15 @@ int run_bench(const Args& args) {
                      "shading passes (GPU timestamps), end to end, start-up and peak memory.\n"
                      "Every number is the median of --repeat runs.");
     parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .ply, .obj)");
-    parser.add_resolution("--res", &config.width, &config.height, "image size WxH (512x512)");
+    parser.add_resolution("--res", &config.width, &config.height, "image size WxH");
     parser.add_int("--shadow-res", &config.shadow_resolution,
-                   "side of a shadow cube face in texels (256)");
-    parser.add_int("--batch", &config.batch, "VPLs per shadow/shading batch (32)");
-    parser.add_uint64("--vpls", &paths, "light paths to trace, one VPL per bounce (256)");
-    parser.add_int("--max-depth", &max_depth, "path segments camera to light (6; -1 unlimited)");
-    parser.add_float("--clamp", &clamp, "clamping distance / scene diagonal (0.05)");
-    parser.add_uint64("--seed", &seed, "random seed (0)");
-    parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported (3)");
+                   "side of a shadow cube face in texels");
+    parser.add_int("--batch", &config.batch, "VPLs per shadow/shading batch");
+    parser.add_uint64("--vpls", &paths, "light paths to trace, one VPL per bounce");
+    parser.add_int("--max-depth", &max_depth, "path segments camera to light (-1 unlimited)");
+    parser.add_float("--clamp", &clamp, "clamping distance / scene diagonal");
+    parser.add_uint64("--seed", &seed, "random seed");
+    parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported");
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512²");
     parser.add_flag("--no-shadows", &no_shadows,

@@ -1,0 +1,30 @@
+#!/usr/bin/env bash
+# Regenerates the measurements of docs/results.md: `mvpl convergence` on the Cornell box (against
+# Mitsuba 2's reference) and on the two-room scene (against our path tracer's long reference,
+# made once and kept in OUT/two-room-ref.exr), then `mvpl bench` on the Cornell box.
+#
+# usage: tools/make_results.sh [BUILD_DIR [OUT_DIR]]   (defaults: build, docs/results)
+# Environment: BUDGET (seconds per method, default 60), REF_SPP (two-room reference, default 16384).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build=${1:-build}
+out=${2:-docs/results}
+budget=${BUDGET:-60}
+ref_spp=${REF_SPP:-16384}
+mvpl="$build/bin/mvpl"
+mkdir -p "$out"
+
+"$mvpl" convergence assets/cornell-box/cbox.gltf --ref assets/cornell-box/ref-cbox-d6-4096.exr \
+  --budget "$budget" --out "$out/cornell-box" | tee "$out/cornell-box/summary.txt"
+
+# The two-room reference: the path tracer at 128² and max depth 6, far longer than any budget
+# above (its relMSE, from the path tracer's own 1/t curve, is printed in the summary).
+if [ ! -f "$out/two-room-ref.exr" ]; then
+  "$mvpl" reference assets/two-room/two-room.gltf --res 128x128 --spp "$ref_spp" --seed 12345 \
+    -o "$out/two-room-ref.exr"
+fi
+"$mvpl" convergence assets/two-room/two-room.gltf --ref "$out/two-room-ref.exr" \
+  --budget "$budget" --out "$out/two-room" | tee "$out/two-room/summary.txt"
+
+"$mvpl" bench assets/cornell-box/cbox.gltf --res 512x512 --shadow-res 256 \
+  --json "$out/bench-cornell-box.json" | tee "$out/bench-cornell-box.txt"
