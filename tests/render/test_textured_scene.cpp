@@ -123,12 +123,15 @@ TEST_F(TexturedSceneTest, GpuAgreesWithTheOracleWithTexturesAndNormalMaps) {
 // box-filtered by the path tracer and point-sampled by the GPU, so that term is swapped as in
 // test_vpl_pipeline.cpp.
 //
-// DISABLED: measured GPU/path tracer − 1 = +2.4 %, +3.2 %, +4.4 % (R, G, B) against a clamping
-// bias ≤ 1.1 % and a standard error ≤ 0.9 %. The GPU equals the oracle (the test above), and the
-// excess stays (+1.9 … +3.5 %) with every material made diffuse and the normal map removed, so it
-// is a difference between the VPL estimate (sampler) and the path tracer on this scene, not the
-// shader chain's; see the issue note.
-TEST_F(TexturedSceneTest, DISABLED_GpuMatchesThePathTracerWithinTheClampingBias) {
+// The swapped-in box-filtered emission is itself a Monte Carlo estimate, and a noisy one: the
+// luminaire is seen nearly edge-on, about one pixel row tall at 32², yet it is 60–80 % of the
+// image mean. At 16 spp its standard deviation is 3 % of the emitted term, and one estimate
+// shared by all runs is an error that their spread does not show: seed 0's was +4.6 %, which
+// made the GPU look 2.4–4.4 % brighter than the path tracer, although on the same camera rays
+// the VPL light (unclamped) and the path tracer's agree within 1 % in total and within their
+// noise at each depth 2…6. So each run gets its own estimate, and its error is part of the runs'
+// spread.
+TEST_F(TexturedSceneTest, GpuMatchesThePathTracerWithinTheClampingBias) {
     const scene::Scene s = scene::load_scene(kScene);
     constexpr int kRes = 32;
     // The GPU and the oracle sample pixel centres, the path tracer box-filters: pixel centres of
@@ -149,21 +152,26 @@ TEST_F(TexturedSceneTest, DISABLED_GpuMatchesThePathTracerWithinTheClampingBias)
     const trace::Accel accel(s);
     const light::LightSampler lights(s);
     const reference::PathTracer tracer(s, accel, lights);
-    reference::PathTracerOptions p;
-    p.width = p.height = kRes;
-    p.max_depth = 1;
-    p.spp = 16;
-    p.quiet = true;
-    const Rgb emitted_box = tracer.render(p).mean();
+    // Depth 1 costs one camera ray per sample, so 512 spp are cheap; they keep the emitted term's
+    // standard deviation per run near 0.5 % of itself (0.74 % measured at 256 spp), small next
+    // to the path tracer's runs.
+    reference::PathTracerOptions emitted;
+    emitted.width = emitted.height = kRes;
+    emitted.max_depth = 1;
+    emitted.spp = 512;
+    emitted.quiet = true;
+    reference::PathTracerOptions p = emitted;
+    p.max_depth = 6;
+    p.spp = 8;
 
     std::vector<Rgb> gpu_runs;
     std::vector<Rgb> tracer_runs;
     Rgb oracle_clamped(0.0f);
     Rgb oracle_unclamped(0.0f);
-    p.max_depth = 6;
-    p.spp = 8;
     for (int g = 0; g < kGroups; ++g) {
         const std::vector<light::Vpl> vpls = test::monte_carlo_vpls(s, 128, 6, uint64_t(100 + g));
+        emitted.seed = uint64_t(300 + g);
+        const Rgb emitted_box = tracer.render(emitted).mean();
         gpu_runs.push_back(test::gpu_render(context(), s, vpls, clamped).mean() - emitted_centres +
                            emitted_box);
         oracle_clamped +=
