@@ -10,8 +10,9 @@ packages=(
   libembree-dev libtbb-dev libtinygltf-dev nlohmann-json3-dev libopenexr-dev libstb-dev libglm-dev
   # tests
   libgtest-dev libgmock-dev
-  # GPU renderer (Vulkan on Mesa lavapipe, run-time GLSL compilation, validation in tests)
-  libvulkan-dev mesa-vulkan-drivers glslang-dev vulkan-validationlayers
+  # GPU renderer (Vulkan on Mesa lavapipe, run-time GLSL compilation, validation in tests);
+  # glslang-tools because glslang-dev's CMake config names /usr/bin/glslangValidator
+  libvulkan-dev mesa-vulkan-drivers glslang-dev glslang-tools vulkan-validationlayers
   # mesh formats: OBJ (PLY is read by our own loader)
   libtinyobjloader-dev
   # interactive preview, and its tests under a virtual X server

@@ -29,10 +29,12 @@ constexpr uint32_t kGroupSize = 8;
 // GPUs. A device with the spec's minimum of 16 KiB would need a smaller constant here.
 constexpr uint32_t kMaxShadingBatch = 512;
 
-// Binding 4 (the directional maps) exists only in programs with directional VPLs.
+// Binding 3, the shadow cubes, is a storage image: the shader picks face and texel itself
+// (shading_template.glsl, cube_texel). Binding 4 (the directional maps) exists only in programs
+// with directional VPLs.
 gpu::ComputeLayout shading_layout(const ShaderFeatures& features) {
     gpu::ComputeLayout layout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
-                               gpu::BindingType::uniform_buffer, gpu::BindingType::sampled_image},
+                               gpu::BindingType::uniform_buffer, gpu::BindingType::storage_image},
                               sizeof(ShadingPush)};
     if (features.has_directional()) layout.bindings.push_back(gpu::BindingType::sampled_image);
     return layout;
@@ -65,7 +67,7 @@ ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height,
                      "accumulation"),
       m_vpls(context, uint64_t(kMaxShadingBatch) * sizeof(GpuVpl), gpu::BufferUsage::uniform,
              gpu::MemoryLocation::upload, "vpl batch"),
-      m_no_shadows(context, {1, 1, 6, gpu::Format::r32_float, gpu::ImageUsage::sampled, true},
+      m_no_shadows(context, {1, 1, 6, gpu::Format::r32_float, gpu::ImageUsage::storage, false},
                    "no shadows"),
       m_no_ortho_shadows(context,
                          {1, 1, 2, gpu::Format::r32_float, gpu::ImageUsage::sampled, false},

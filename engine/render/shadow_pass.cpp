@@ -68,7 +68,7 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry, uin
     : m_geometry(&geometry),
       m_cubes(context,
               {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
-               gpu::ImageUsage::color_attachment | gpu::ImageUsage::sampled, true},
+               gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
               "shadow cubes"),
       m_depth(context,
               {resolution, resolution, 6, gpu::Format::d32_float, gpu::ImageUsage::depth_attachment,

@@ -1,9 +1,12 @@
 #pragma once
 // Pass 2 (DESIGN.md, "GPU passes"): the distance from each VPL of a batch to the nearest surface
-// in every direction, in an R32F cube-map array (cube i = batch[i], layers 6i … 6i + 5 in the
-// order +X −X +Y −Y +Z −Z). Six single-layer passes per cube (the fastest on lavapipe; multiview
-// writes wrong layers there). Area and Surface VPLs skip the faces that lie wholly behind their
-// normal (they never light those directions; the texels keep stale values that are never read).
+// in every direction, as cube maps in an R32F 2D array (cube i = batch[i], layers 6i … 6i + 5 in
+// the order +X −X +Y −Y +Z −Z). Six single-layer passes per cube (the fastest on lavapipe;
+// multiview writes wrong layers there). Not a cube-map view: the shading pass selects face and
+// texel itself as cube sampling would (it needs the texel's centre anyway) and loads the texel as
+// a storage image, which on lavapipe costs a fraction of a samplerCubeArray lookup. Area and
+// Surface VPLs skip the faces that lie wholly behind their normal (they never light those
+// directions; the texels keep stale values that are never read).
 // Vulkan-free to include.
 //
 // Directional VPLs get no cube but an orthographic map instead: layer i of an R32F 2D array
