@@ -71,9 +71,9 @@ struct VplRenderer::Impl {
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();
         if (!shading) {
-            shading = std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch,
-                                                    geometry.features(o.surface_vpls), nullptr,
-                                                    cache);
+            shading =
+                std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch,
+                                              geometry.features(o.surface_vpls), nullptr, cache);
         }
         if (!o.dump_shaders.empty()) dump_scene_shaders(o.dump_shaders, geometry, o.surface_vpls);
         built_for = o;
