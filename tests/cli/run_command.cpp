@@ -33,6 +33,11 @@ CommandResult run_mvpl(const std::string& args) {
     return run_mvpl_env("", args);
 }
 
+CommandResult run_mvpl_gpu(const std::string& args, const std::string& prefix) {
+    return run_mvpl_env("ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 " + prefix,
+                        args);
+}
+
 CommandResult run_mvpl_env(const std::string& env, const std::string& args) {
     static int counter = 0;
     const auto dir = std::filesystem::temp_directory_path();

@@ -14,6 +14,12 @@ struct CommandResult {
 CommandResult run_mvpl(const std::string& args);
 // The same with environment assignments (e.g. "MVPL_VALIDATION=1") before the command.
 CommandResult run_mvpl_env(const std::string& env, const std::string& args);
+// `mvpl ARGS` for commands that create a Vulkan instance, after PREFIX (environment assignments
+// or a wrapper such as xvfb-run). Sanitizer builds: lavapipe's LLVM JIT leaks blocks that point at
+// each other, allocated in libraries that are unloaded at vkDestroyInstance, so LeakSanitizer can
+// neither symbolise nor suppress them (tests/gpu/gpu_test.cpp): these runs add detect_leaks=0 to
+// the caller's ASAN_OPTIONS; AddressSanitizer's other checks stay on.
+CommandResult run_mvpl_gpu(const std::string& args, const std::string& prefix = "");
 // Single-quotes a string for the shell.
 std::string shell_quote(const std::string& s);
 

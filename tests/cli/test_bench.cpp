@@ -79,10 +79,11 @@ protected:
         s_json_path = (std::filesystem::temp_directory_path() /
                        ("mvpl_bench_" + std::to_string(::getpid()) + ".json"))
                           .string();
-        s_result = run_mvpl("bench " + shell_quote(kCbox) +
-                            " --res 32x24 --shadow-res 16 --batch 8 --vpls 16 --repeat 1 --sweep"
-                            " --json " +
-                            shell_quote(s_json_path));
+        s_result =
+            test::run_mvpl_gpu("bench " + shell_quote(kCbox) +
+                               " --res 32x24 --shadow-res 16 --batch 8 --vpls 16 --repeat 1 --sweep"
+                               " --json " +
+                               shell_quote(s_json_path));
         std::ifstream in(s_json_path);
         std::stringstream text;
         text << in.rdbuf();

@@ -87,11 +87,8 @@ TEST(Cli, SummaryLineWithoutQuiet) {
 
 // `mvpl render` on the GPU (lavapipe in CI) with the validation layers on: an image close to the
 // CPU oracle's for the same VPLs, a summary line, no validation message, and one-line usage errors.
-// Sanitizer builds: lavapipe's LLVM JIT leaks blocks that LeakSanitizer cannot attribute or
-// suppress (see tests/gpu/gpu_test.cpp), so runs that create a Vulkan instance skip leak checking.
-const std::string kGpuEnv = "ASAN_OPTIONS=detect_leaks=0";
 test::CommandResult run_gpu(const std::string& args) {
-    return test::run_mvpl_env(kGpuEnv, args);
+    return test::run_mvpl_gpu(args);
 }
 
 TEST(Cli, RenderOnTheGpuMatchesTheOracle) {
@@ -101,8 +98,8 @@ TEST(Cli, RenderOnTheGpuMatchesTheOracle) {
     const auto r = run_gpu(common + "-o " + shell_quote(gpu));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("VPL/s"), std::string::npos) << r.out;
-    const auto v = test::run_mvpl_env(kGpuEnv + " MVPL_VALIDATION=1",
-                                      common + "--quiet -o " + shell_quote(gpu));
+    const auto v =
+        test::run_mvpl_gpu(common + "--quiet -o " + shell_quote(gpu), "MVPL_VALIDATION=1");
     ASSERT_EQ(v.exit_code, 0) << v.err;
     EXPECT_TRUE(v.err.empty()) << v.err;  // the validation layer said nothing
     ASSERT_EQ(run_gpu(common + "--oracle --quiet -o " + shell_quote(cpu)).exit_code, 0);

@@ -109,8 +109,8 @@ TEST(ConvergenceCli, TinyRunWritesFallingCurves) {
               0);
     constexpr double kBudget = 3.0;
     const test::CommandResult r =
-        test::run_mvpl("convergence " + scene + " --ref " + ref + " --budget 3 --shadow-res 16 " +
-                       "--no-plot --out " + test::shell_quote(dir.string()));
+        test::run_mvpl_gpu("convergence " + scene + " --ref " + ref + " --budget 3 --shadow-res " +
+                           "16 --no-plot --out " + test::shell_quote(dir.string()));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_NE(r.out.find("bias floor"), std::string::npos) << r.out;
     const auto rows = read_csv(dir / "convergence.csv");

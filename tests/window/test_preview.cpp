@@ -2,16 +2,16 @@
 // VPLs, and a scripted run (resizes, camera moves, key presses) under the validation layers.
 #include <gtest/gtest.h>
 #include <stb_image.h>
-#include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <string>
 #include <vector>
+
+#include "tests/cli/run_command.h"
 
 namespace {
 
@@ -19,25 +19,8 @@ namespace fs = std::filesystem;
 
 const std::string kScene = std::string(MVPL_ASSETS_DIR) + "/cornell-box/cbox.gltf";
 
-struct Result {
-    int exit_code = -1;
-    std::string out;
-    std::string err;
-};
-
-std::string quote(const std::string& s) {
-    std::string q = "'";
-    for (char c : s)
-        q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
-std::string slurp(const fs::path& p) {
-    std::ifstream in(p, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
+using Result = mvpl::test::CommandResult;
+using mvpl::test::shell_quote;
 
 fs::path temp_dir() {
     const fs::path dir = fs::temp_directory_path() / ("mvpl_window_" + std::to_string(::getpid()));
@@ -46,23 +29,8 @@ fs::path temp_dir() {
 }
 
 // prefix: environment assignments and/or a wrapper (xvfb-run) before the mvpl executable.
-// Sanitizer builds: lavapipe's LLVM JIT leaks blocks that LeakSanitizer cannot attribute or
-// suppress (tests/gpu/gpu_test.cpp), so every run here, all of which create a Vulkan instance,
-// skips leak checking; AddressSanitizer's other checks stay on.
 Result run(const std::string& prefix, const std::string& args) {
-    static int counter = 0;
-    const fs::path dir = temp_dir();
-    const fs::path out = dir / ("out" + std::to_string(counter));
-    const fs::path err = dir / ("err" + std::to_string(counter++));
-    const std::string cmd = "ASAN_OPTIONS=detect_leaks=0 " + prefix + " " + quote(MVPL_EXE) + " " +
-                            args + " </dev/null >" + quote(out.string()) + " 2>" +
-                            quote(err.string());
-    const int status = std::system(cmd.c_str());
-    Result r;
-    r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-    r.out = slurp(out);
-    r.err = slurp(err);
-    return r;
+    return mvpl::test::run_mvpl_gpu(args, prefix);
 }
 
 bool have_xvfb() {
@@ -107,12 +75,12 @@ TEST(Preview, ScreenshotMatchesHeadlessRender) {
     const fs::path window_png = dir / "window.png";
     const fs::path render_png = dir / "render.png";
     const Result preview =
-        run(xvfb(), "preview " + quote(kScene) +
+        run(xvfb(), "preview " + shell_quote(kScene) +
                         " --res 96x64 --vpls 64 --paths-per-frame 16 --frames 6 --screenshot " +
-                        quote(window_png.string()) + " --quiet");
+                        shell_quote(window_png.string()) + " --quiet");
     ASSERT_EQ(preview.exit_code, 0) << preview.err;
-    const Result render = run("", "render " + quote(kScene) + " --res 96x64 --vpls 64 -o " +
-                                      quote(render_png.string()) + " --quiet");
+    const Result render = run("", "render " + shell_quote(kScene) + " --res 96x64 --vpls 64 -o " +
+                                      shell_quote(render_png.string()) + " --quiet");
     ASSERT_EQ(render.exit_code, 0) << render.err;
 
     const Rgb8 a = load_png(window_png);
@@ -163,9 +131,9 @@ TEST(Preview, ScriptedRunHasNoValidationMessages) {
                              "15 orbit -10 0\n";
     const Result r =
         run("MVPL_VALIDATION=1 " + xvfb(),
-            "preview " + quote(kScene) + " --res 96x64 --paths-per-frame 2 --frames 16" +
-                " --script " + quote(script.string()) + " --screenshot " +
-                quote((temp_dir() / "scripted.png").string()));
+            "preview " + shell_quote(kScene) + " --res 96x64 --paths-per-frame 2 --frames 16" +
+                " --script " + shell_quote(script.string()) + " --screenshot " +
+                shell_quote((temp_dir() / "scripted.png").string()));
     EXPECT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
     EXPECT_EQ(r.err, "");
@@ -178,8 +146,8 @@ TEST(Preview, ScriptedRunHasNoValidationMessages) {
 TEST(Preview, BadScriptIsAnInputError) {
     const fs::path script = temp_dir() / "bad.txt";
     std::ofstream(script) << "3 spin 10\n";
-    const Result r =
-        run("", "preview " + quote(kScene) + " --frames 1 --script " + quote(script.string()));
+    const Result r = run("", "preview " + shell_quote(kScene) + " --frames 1 --script " +
+                                 shell_quote(script.string()));
     EXPECT_EQ(r.exit_code, 2);
     EXPECT_NE(r.err.find("mvpl: error: " + script.string() + ": line 1: unknown event 'spin'"),
               std::string::npos)
