@@ -12,7 +12,7 @@ out=${2:-docs/results}
 budget=${BUDGET:-60}
 ref_spp=${REF_SPP:-16384}
 mvpl="$build/bin/mvpl"
-mkdir -p "$out"
+mkdir -p "$out/cornell-box" "$out/two-room"
 
 "$mvpl" convergence assets/cornell-box/cbox.gltf --ref assets/cornell-box/ref-cbox-d6-4096.exr \
   --budget "$budget" --out "$out/cornell-box" | tee "$out/cornell-box/summary.txt"

@@ -43,6 +43,15 @@ TEST(ConvergenceAnalysis, FloorFitRecoversFloorAndSlope) {
     EXPECT_NEAR(fit.c, 0.2, 1e-12);
 }
 
+// A measured curve starts with points that start-up dominates (here 10× the model): relative
+// residuals keep them from pulling the floor off the plateau that the long runs reach.
+TEST(ConvergenceAnalysis, FloorFitFollowsThePlateauDespiteAStartUpOutlier) {
+    std::vector<ConvergencePoint> points = curve("mc", 0.0023, 0.01);
+    points.front().rel_mse *= 10.0;
+    const cli::FloorFit fit = cli::fit_floor(points);
+    EXPECT_NEAR(fit.floor, 0.0023, 0.1 * 0.0023);
+}
+
 TEST(ConvergenceAnalysis, FloorIsNeverNegativeNorTheSlopeRising) {
     // An unbiased curve with a little downward bend would fit a negative floor: it is clamped to 0.
     std::vector<ConvergencePoint> points = curve("mc", 0.0, 0.5);

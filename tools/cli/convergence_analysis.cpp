@@ -19,29 +19,34 @@ double inverse_time_constant(const std::vector<ConvergencePoint>& points) {
 }
 
 FloorFit fit_floor(const std::vector<ConvergencePoint>& points) {
-    // Ordinary least squares of e = floor + c·x with x = 1/t.
-    double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    // Least squares of e = floor + c·x with x = 1/t, in relative residuals (weights 1/e²): the
+    // errors span decades, and in absolute terms the first, start-up-dominated points would
+    // decide the fit and the floor would miss the plateau the long runs reach.
+    double sw = 0.0, sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
     int n = 0;
     for (const ConvergencePoint& p : points) {
-        if (!(p.seconds > 0.0)) continue;
+        if (!(p.seconds > 0.0) || !(p.rel_mse > 0.0)) continue;
+        const double w = 1.0 / (p.rel_mse * p.rel_mse);
         const double x = 1.0 / p.seconds;
-        sx += x;
-        sy += p.rel_mse;
-        sxx += x * x;
-        sxy += x * p.rel_mse;
+        sw += w;
+        sx += w * x;
+        sy += w * p.rel_mse;
+        sxx += w * x * x;
+        sxy += w * x * p.rel_mse;
         ++n;
     }
     FloorFit fit;
     if (n == 0) return fit;
-    const double det = n * sxx - sx * sx;
-    if (n >= 2 && det > 1e-12 * n * sxx) {
-        fit.c = (n * sxy - sx * sy) / det;
-        fit.floor = (sy - fit.c * sx) / n;
+    const double det = sw * sxx - sx * sx;
+    const bool solvable = n >= 2 && det > 1e-12 * sw * sxx;
+    if (solvable) {
+        fit.c = (sw * sxy - sx * sy) / det;
+        fit.floor = (sy - fit.c * sx) / sw;
     }
-    if (n < 2 || !(det > 1e-12 * n * sxx) || fit.c < 0.0) {
+    if (!solvable || fit.c < 0.0) {
         // No decrease to fit: the error is all floor.
         fit.c = 0.0;
-        fit.floor = sy / n;
+        fit.floor = sy / sw;
     } else if (fit.floor < 0.0) {
         // Pure c/t (unbiased): the floor is 0 and c its own least-squares value.
         fit.floor = 0.0;

@@ -39,6 +39,14 @@ std::filesystem::path plot_script() {
     return std::filesystem::path(MVPL_TOOLS_DIR) / "plot_convergence.py";
 }
 
+// The interpreter that Debian's python3-matplotlib installs into is /usr/bin/python3; a `python3`
+// found first on PATH (pyenv, a virtual environment) usually lacks matplotlib. $MVPL_PYTHON wins.
+std::string python_interpreter() {
+    if (const char* python = std::getenv("MVPL_PYTHON")) return python;
+    if (std::filesystem::exists("/usr/bin/python3")) return "/usr/bin/python3";
+    return "python3";
+}
+
 std::string shell_quote(const std::string& s) {
     std::string out = "'";
     for (char c : s)
@@ -60,8 +68,10 @@ void print_summary(const std::vector<ConvergencePoint>& all,
         if (method != "pt") {
             if (c_pt > 0.0 && last.rel_mse > 0.0) {
                 const double pt_seconds = c_pt / last.rel_mse;
-                std::printf("; the path tracer needs ≈%.3g s for it: %.1f× faster", pt_seconds,
-                            pt_seconds / last.seconds);
+                const double speed_up = pt_seconds / last.seconds;
+                std::printf("; the path tracer needs ≈%.3g s for it: %.2g× %s", pt_seconds,
+                            speed_up >= 1.0 ? speed_up : 1.0 / speed_up,
+                            speed_up >= 1.0 ? "faster" : "slower");
             }
             const FloorFit fit = fit_floor(points);
             std::printf("; bias floor ≈%.3g (fit relMSE = floor + c/t)", fit.floor);
@@ -168,10 +178,10 @@ int run_convergence(const Args& args) {
     if (!quiet) print_summary(all, methods);
     if (!no_plot) {
         const std::filesystem::path png = std::filesystem::path(out_dir) / "convergence.png";
-        const std::string command = "python3 " + shell_quote(plot_script().string()) + " " +
-                                    shell_quote(csv.string()) + " " + shell_quote(png.string()) +
-                                    " --title " +
-                                    shell_quote(std::filesystem::path(scene_path).stem().string());
+        const std::string command =
+            shell_quote(python_interpreter()) + " " + shell_quote(plot_script().string()) + " " +
+            shell_quote(csv.string()) + " " + shell_quote(png.string()) + " --title " +
+            shell_quote(std::filesystem::path(scene_path).stem().string());
         if (std::system(command.c_str()) != 0) {
             std::fprintf(stderr,
                          "mvpl: warning: the plot was not made (%s failed; python3-matplotlib "
