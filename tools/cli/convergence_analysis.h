@@ -22,8 +22,9 @@ struct ConvergencePoint {
 double inverse_time_constant(const std::vector<ConvergencePoint>& points);
 
 // A biased method's error tends to a floor: relMSE(t) ≈ floor + c/t. Least squares in (1/t, e)
-// with relative residuals, floor and c kept ≥ 0. The floor is the error that infinitely many VPLs would leave —
-// clamping's bias plus whatever else differs from the reference (pixel-centre sampling).
+// with relative residuals, floor and c kept ≥ 0. The floor is the error that infinitely many
+// VPLs would leave — clamping's bias plus whatever else differs from the reference (pixel-centre
+// sampling).
 struct FloorFit {
     double floor = 0.0;
     double c = 0.0;
