@@ -24,12 +24,12 @@ struct SamplerSettings {
     int width = 256;
     int height = 256;
     float clamp = 0.05f;
-    float large_step = 0.1f;
+    float large_step = 0.3f;
     float sigma = 0.01f;
     int chains = 1024;
     int importance_points = 256;
-    uint64_t bootstrap = 32768;
-    double defensive = 0.05;
+    uint64_t bootstrap = 65536;
+    double defensive = 1.0;
     VplsPerPath metropolis_per_path = VplsPerPath::One;
 };
 

@@ -168,12 +168,14 @@ TEST(MetropolisStream, TwoRoomVplsGoWhereTheCameraLooks) {
     std::vector<light::Vpl> b;
     m.next(1000, b);
     const double share_mc = camera_room_share(a), share_m = camera_room_share(b);
-    // Measured: Monte Carlo 0.2%, Metropolis 40% (the rest mostly room-A VPLs that light the
-    // camera's room or the wall seen through the hole, which the target rightly wants). Bounds
-    // with room for other seeds: MC below 5%, Metropolis above 20% and ten times MC's share.
+    // Measured: Monte Carlo 0.2%, Metropolis 40% at ε = 0.05 and 13% at the default ε = 1,
+    // whose defensive half of the target goes where independent paths go (the rest mostly
+    // room-A VPLs that light the camera's room or the wall seen through the hole, which the
+    // target rightly wants). Bounds with room for other seeds: MC below 5%, Metropolis above 8%
+    // and ten times MC's share.
     std::printf("camera-room share: mc %.3f, metropolis %.3f\n", share_mc, share_m);
     EXPECT_LT(share_mc, 0.05);
-    EXPECT_GT(share_m, 0.2);
+    EXPECT_GT(share_m, 0.08);
     EXPECT_GT(share_m, 10.0 * share_mc);
     EXPECT_GT(m.acceptance(), 0.0);
     EXPECT_LT(m.stats().emitted, m.stats().recorded);  // repeats were merged

@@ -99,14 +99,14 @@ int run_render(const Args& args) {
                       "all or one (the seed paper's choice); default all for mc, one for "
                       "metropolis");
     parser.add_float("--beta", &settings.large_step,
-                     "metropolis: large-step probability (default 0.1)");
+                     "metropolis: large-step probability (default 0.3)");
     parser.add_float("--sigma", &settings.sigma,
                      "metropolis: small-step width in primary sample space (default 0.01)");
     parser.add_int("--chains", &settings.chains, "metropolis: independent chains (default 1024)");
     parser.add_int("--importance-points", &settings.importance_points,
                    "metropolis: camera-visible points of the target (default 256)");
     parser.add_uint64("--bootstrap", &settings.bootstrap,
-                      "metropolis: independent paths for the normalisation (default 32768)");
+                      "metropolis: independent paths for the normalisation (default 65536)");
     parser.add_resolution("--res", &width, &height, "image size WxH");
     parser.add_int("--shadow-res", &shadow_res, "side of a shadow cube face in texels");
     parser.add_int("--batch", &batch, "VPLs per shadow/shading batch");
