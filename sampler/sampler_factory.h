@@ -24,13 +24,14 @@ struct SamplerSettings {
     int width = 256;
     int height = 256;
     float clamp = 0.05f;
-    float large_step = 0.3f;
-    float sigma = 0.01f;
-    int chains = 1024;
-    int importance_points = 256;
-    uint64_t bootstrap = 65536;
-    double defensive = 1.0;
-    VplsPerPath metropolis_per_path = VplsPerPath::One;
+    // Defaults are MetropolisOptions' own (measured there), not copies.
+    float large_step = MetropolisOptions{}.large_step;
+    float sigma = MetropolisOptions{}.sigma;
+    int chains = MetropolisOptions{}.chains;
+    int importance_points = ImportanceOptions{}.points;
+    uint64_t bootstrap = MetropolisOptions{}.bootstrap;
+    double defensive = MetropolisOptions{}.defensive;
+    VplsPerPath metropolis_per_path = MetropolisOptions{}.per_path;
 };
 
 const std::vector<std::string>& sampler_names();

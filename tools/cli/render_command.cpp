@@ -98,15 +98,14 @@ int run_render(const Args& args) {
     parser.add_string("--vpl-per-path", &per_path,
                       "all or one (the seed paper's choice); default all for mc, one for "
                       "metropolis");
-    parser.add_float("--beta", &settings.large_step,
-                     "metropolis: large-step probability (default 0.3)");
+    parser.add_float("--beta", &settings.large_step, "metropolis: large-step probability");
     parser.add_float("--sigma", &settings.sigma,
-                     "metropolis: small-step width in primary sample space (default 0.01)");
-    parser.add_int("--chains", &settings.chains, "metropolis: independent chains (default 1024)");
+                     "metropolis: small-step width in primary sample space");
+    parser.add_int("--chains", &settings.chains, "metropolis: independent chains");
     parser.add_int("--importance-points", &settings.importance_points,
-                   "metropolis: camera-visible points of the target (default 256)");
+                   "metropolis: camera-visible points of the target");
     parser.add_uint64("--bootstrap", &settings.bootstrap,
-                      "metropolis: independent paths for the normalisation (default 65536)");
+                      "metropolis: independent paths for the normalisation");
     parser.add_resolution("--res", &width, &height, "image size WxH");
     parser.add_int("--shadow-res", &shadow_res, "side of a shadow cube face in texels");
     parser.add_int("--batch", &batch, "VPLs per shadow/shading batch");
