@@ -9,7 +9,6 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/material/node_eval.h"
 #include "engine/material/node_graph.h"
 
 namespace mvpl::material {
@@ -27,9 +26,8 @@ private:
     std::vector<std::string> m_order;
 };
 
-// The closure types a closure node kind can produce at run time (e.g. a dielectric-diffuse node
-// with a specular texture can be Lambertian where the texture is 0).
-std::array<bool, kClosureTypeCount> possible_closure_types(NodeKind kind);
+// The closure types a closure node kind can produce at run time (NodeKind::closure_types).
+std::array<bool, kClosureTypeCount> possible_closure_types(const NodeKind& kind);
 std::string_view closure_eval_name(ClosureType type);
 
 struct MaterialCode {
