@@ -6,6 +6,7 @@
 // registration — so that the CPU evaluator (graph_eval.h) and the GLSL generator
 // (material_codegen.h) know no kind by name.
 #include <cstdint>
+#include <initializer_list>
 #include <span>
 #include <string>
 #include <string_view>
@@ -68,6 +69,10 @@ public:
     virtual std::string sampler() = 0;
     virtual void require(std::string_view function) = 0;
 };
+
+// `name(args…)`, with the function `name` required: how most kinds call their GLSL function.
+std::string glsl_function_call(GlslCallContext& c, std::string_view name,
+                               std::initializer_list<std::string> args);
 
 // Which of a material's three outputs a node kind can drive.
 enum class NodeRole { Value, Normal, Closure };

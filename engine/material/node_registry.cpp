@@ -43,6 +43,15 @@ const NodeKind* find_node_kind(std::string_view name) {
     return nullptr;
 }
 
+std::string glsl_function_call(GlslCallContext& c, std::string_view name,
+                               std::initializer_list<std::string> args) {
+    c.require(name);
+    std::string call = std::string(name) + "(";
+    for (const std::string& a : args)
+        call += (call.back() == '(' ? "" : ", ") + a;
+    return call + ")";
+}
+
 const NodeKind& node_kind(std::string_view name) {
     if (const NodeKind* kind = find_node_kind(name)) return *kind;
     throw std::logic_error("material: no node kind '" + std::string(name) + "'");

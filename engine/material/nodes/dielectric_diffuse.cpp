@@ -21,9 +21,8 @@ constexpr std::string_view kGlsl =
 constexpr std::string_view kGlslDependencies[] = {"clamp_closure"};
 
 std::string call(GlslCallContext& c) {
-    c.require("dielectric_diffuse");
-    return "dielectric_diffuse(" + c.rgb(0) + ", " + c.scalar(1) + ", " + c.scalar(2) + ", " +
-           c.rgb(3) + ", " + c.scalar(4) + ")";
+    return glsl_function_call(c, "dielectric_diffuse",
+                              {c.rgb(0), c.scalar(1), c.scalar(2), c.rgb(3), c.scalar(4)});
 }
 
 }  // namespace

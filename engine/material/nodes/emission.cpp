@@ -17,8 +17,7 @@ constexpr std::string_view kGlsl = R"(vec4 emission(vec4 colour, float strength)
 )";
 
 std::string call(GlslCallContext& c) {
-    c.require("emission");
-    return "emission(" + c.input(0) + ", " + glsl_number(c.node().value.x) + ")";
+    return glsl_function_call(c, "emission", {c.input(0), glsl_number(c.node().value.x)});
 }
 
 }  // namespace

@@ -17,8 +17,7 @@ constexpr std::string_view kGlsl = R"(Closure ggx_conductor(vec3 f0, float rough
 constexpr std::string_view kGlslDependencies[] = {"clamp_closure"};
 
 std::string call(GlslCallContext& c) {
-    c.require("ggx_conductor");
-    return "ggx_conductor(" + c.rgb(0) + ", " + c.scalar(1) + ")";
+    return glsl_function_call(c, "ggx_conductor", {c.rgb(0), c.scalar(1)});
 }
 
 }  // namespace

@@ -17,8 +17,7 @@ constexpr std::string_view kGlsl = R"(Closure lambertian(vec3 base_color) {
 constexpr std::string_view kGlslDependencies[] = {"clamp_closure"};
 
 std::string call(GlslCallContext& c) {
-    c.require("lambertian");
-    return "lambertian(" + c.rgb(0) + ")";
+    return glsl_function_call(c, "lambertian", {c.rgb(0)});
 }
 
 }  // namespace

@@ -21,9 +21,8 @@ constexpr std::string_view kGlsl =
 constexpr std::string_view kGlslDependencies[] = {"clamp_closure"};
 
 std::string call(GlslCallContext& c) {
-    c.require("metal_rough");
-    return "metal_rough(" + c.rgb(0) + ", " + c.scalar(1) + ", " + c.scalar(2) + ", " +
-           c.scalar(3) + ", " + c.rgb(4) + ", " + c.scalar(5) + ")";
+    return glsl_function_call(
+        c, "metal_rough", {c.rgb(0), c.scalar(1), c.scalar(2), c.scalar(3), c.rgb(4), c.scalar(5)});
 }
 
 }  // namespace

@@ -23,8 +23,7 @@ constexpr std::string_view kGlsl = R"(vec4 mix_node(vec4 a, vec4 b, float t) {
 )";
 
 std::string call(GlslCallContext& c) {
-    c.require("mix_node");
-    return "mix_node(" + c.input(0) + ", " + c.input(1) + ", " + c.scalar(2) + ")";
+    return glsl_function_call(c, "mix_node", {c.input(0), c.input(1), c.scalar(2)});
 }
 
 }  // namespace

@@ -33,8 +33,7 @@ constexpr std::string_view kGlsl = R"(vec3 normal_map(vec3 texel, float scale, S
 constexpr std::string_view kGlslDependencies[] = {"SurfacePoint"};
 
 std::string call(GlslCallContext& c) {
-    c.require("normal_map");
-    return "normal_map(" + c.rgb(0) + ", " + glsl_number(c.node().value.x) + ", s)";
+    return glsl_function_call(c, "normal_map", {c.rgb(0), glsl_number(c.node().value.x), "s"});
 }
 
 }  // namespace

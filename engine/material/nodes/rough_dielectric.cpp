@@ -20,9 +20,8 @@ Closure rough_dielectric(float roughness, float specular, vec3 specular_color, f
 constexpr std::string_view kGlslDependencies[] = {"clamp_closure"};
 
 std::string call(GlslCallContext& c) {
-    c.require("rough_dielectric");
-    return "rough_dielectric(" + c.scalar(0) + ", " + c.scalar(1) + ", " + c.rgb(2) + ", " +
-           c.scalar(3) + ")";
+    return glsl_function_call(c, "rough_dielectric",
+                              {c.scalar(0), c.scalar(1), c.rgb(2), c.scalar(3)});
 }
 
 }  // namespace

@@ -14,8 +14,7 @@ constexpr std::string_view kGlsl = R"(vec4 vertex_color(vec4 factor, vec4 color)
 )";
 
 std::string call(GlslCallContext& c) {
-    c.require("vertex_color");
-    return "vertex_color(" + glsl_vec4(c.node().value) + ", s.color)";
+    return glsl_function_call(c, "vertex_color", {glsl_vec4(c.node().value), "s.color"});
 }
 
 }  // namespace
