@@ -46,11 +46,11 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
     m_first_emitter.assign(scene.meshes.size(), -1);
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const scene::Mesh& mesh = scene.meshes[m];
-        const scene::Material& mat = scene.materials[mesh.material];
-        if (!mat.is_emissive()) continue;
+        if (!m_materials.is_emissive(mesh.material)) continue;
         m_first_emitter[m] = int(m_emitters.size());
-        // Selection by the flux of the emission factor; a texture only modulates it.
-        const float radiance = luminance(mat.emission());
+        // Selection by the flux of the emission factor (a weight, not the radiance: a texture
+        // only modulates it, and sample_li/sample_le read the graph's emission).
+        const float radiance = luminance(scene.materials[mesh.material].emission());
         for (size_t t = 0; t < mesh.triangle_count(); ++t) {
             const TrianglePoints tri = triangle_points(mesh, int(t));
             Emitter e;

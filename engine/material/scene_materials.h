@@ -31,6 +31,8 @@ public:
         return evaluate_normal(graph(material), m_textures, p);
     }
     bool has_normal_node(int material) const { return graph(material).normal >= 0; }
+    // The graph has an emission node: the material's triangles are area lights.
+    bool is_emissive(int material) const { return graph(material).emission >= 0; }
     bool double_sided(int material) const { return graph(material).double_sided; }
 
 private:

@@ -42,7 +42,7 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth,
         const Vec3 wo_world = -glm::normalize(ray.direction);
 
         // Emission, weighted against the light-sampling strategy that could have found it.
-        if (m_scene.materials[si.material].is_emissive()) {
+        if (m_accel.materials().is_emissive(si.material)) {
             const Rgb le =
                 m_lights.emitted_radiance(si.mesh, si.triangle, hit->barycentric, wo_world);
             if (!is_black(le)) {
