@@ -1,5 +1,6 @@
 #include "engine/material/material_codegen.h"
 
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -116,6 +117,7 @@ public:
         m_graph = &g;
         m_name = name;
         m_helpers.clear();
+        m_function_count = 0;
     }
     // The helper functions written since begin(), to precede the material's function.
     const std::string& helpers() const { return m_helpers; }
@@ -221,17 +223,24 @@ std::string MaterialWriter::node(int index) {
 
 MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
                                     const std::vector<scene::Texture>& textures,
-                                    uint32_t first_binding, bool bind_textures) {
+                                    uint32_t first_binding, bool bind_textures,
+                                    const std::vector<bool>& used) {
     GlslModule module;
     module.require("Closure");
     module.require("SurfacePoint");
     std::map<int, int> bindings;
     MaterialWriter writer(module, textures, bindings, bind_textures);
+    // Written with a placeholder name so that materials whose code is the same share one
+    // function (real models repeat materials), which is then named after its first material.
+    const std::string placeholder = "material_@";
+    std::vector<std::string> bodies;  // with the placeholder, one per distinct function
+    std::vector<size_t> first_of;     // the first material of each distinct function
+    std::vector<int> function_of(graphs.size(), -1);
     std::string materials;
     for (size_t i = 0; i < graphs.size(); ++i) {
+        if (!used.empty() && (i >= used.size() || !used[i])) continue;
         const MaterialGraph& g = graphs[i];
-        const std::string name = "material_" + std::to_string(i);
-        writer.begin(g, name);
+        writer.begin(g, placeholder);
         std::string body;
         if (g.closure >= 0 && g.nodes[size_t(g.closure)].kind->closure) {
             body += "    c = " + writer.node(g.closure) + ";\n";
@@ -249,21 +258,42 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
         } else {
             body += "    n = " + writer.node(g.normal) + ";\n";
         }
-        materials += "// " + name + "\n" + writer.helpers() + "void " + name +
-                     "(SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n" + body + "}\n";
+        const std::string code = writer.helpers() + "void " + placeholder +
+                                 "(SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n" +
+                                 body + "}\n";
+        const auto same = std::find(bodies.begin(), bodies.end(), code);
+        if (same != bodies.end()) {
+            function_of[i] = int(same - bodies.begin());
+            continue;
+        }
+        function_of[i] = int(bodies.size());
+        bodies.push_back(code);
+        first_of.push_back(i);
+        const std::string name = "material_" + std::to_string(i);
+        std::string named = code;
+        for (size_t at = named.find(placeholder); at != std::string::npos;
+             at = named.find(placeholder, at + name.size()))
+            named.replace(at, placeholder.size(), name);
+        materials += "// " + name + "\n" + named;
     }
+    const auto function_name = [&](int f) {
+        return "material_" + std::to_string(first_of[size_t(f)]);
+    };
+    // Materials that share the default's function, and unused ones, take the default branch.
+    const int fallback = bodies.empty() ? -1 : 0;
     std::string dispatch =
         "void resolve_material(uint m, SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n"
         "    switch (m) {\n";
-    for (size_t i = 1; i < graphs.size(); ++i) {
-        dispatch += "        case " + std::to_string(i) + "u: material_" + std::to_string(i) +
+    for (size_t i = 0; i < graphs.size(); ++i) {
+        if (function_of[i] < 0 || function_of[i] == fallback) continue;
+        dispatch += "        case " + std::to_string(i) + "u: " + function_name(function_of[i]) +
                     "(s, c, e, n); return;\n";
     }
     dispatch += "        default: " +
-                std::string(graphs.empty() ? "c = lambertian(vec3(0.0)); e = vec3(0.0); n = s.n;"
-                                           : "material_0(s, c, e, n);") +
+                (fallback < 0 ? std::string("c = lambertian(vec3(0.0)); e = vec3(0.0); n = s.n;")
+                              : function_name(fallback) + "(s, c, e, n);") +
                 " return;\n    }\n}\n";
-    if (graphs.empty()) module.require("lambertian");
+    if (bodies.empty()) module.require("lambertian");
 
     MaterialCode out;
     out.textures.resize(bindings.size());

@@ -212,5 +212,29 @@ TEST(MaterialCodegen, OneFunctionPerMaterialNamedAfterItsNodes) {
     EXPECT_NE(b.functions.find("image_texture(texture_0, s.uv0"), std::string::npos);
 }
 
+// Code grows with the distinct materials drawn: a repeated material shares its twin's function
+// (and dispatches through it), an unused one gets none.
+TEST(MaterialCodegen, SharesIdenticalMaterialsAndSkipsUnusedOnes) {
+    scene::Material grey;
+    grey.metallic = 0.0f;
+    grey.specular = 0.0f;
+    grey.base_color = Rgb(0.5f);
+    scene::Material dark = grey;
+    dark.base_color = Rgb(0.2f);
+    const std::vector<MaterialGraph> graphs = {graph_from_gltf(grey), graph_from_gltf(dark),
+                                               graph_from_gltf(grey)};
+    const MaterialCode all = generate_material_code(graphs, {}, 0);
+    EXPECT_NE(all.functions.find("void material_0("), std::string::npos);
+    EXPECT_NE(all.functions.find("void material_1("), std::string::npos);
+    EXPECT_EQ(all.functions.find("void material_2("), std::string::npos);
+    EXPECT_NE(all.functions.find("case 1u: material_1("), std::string::npos);
+    EXPECT_EQ(all.functions.find("case 2u:"), std::string::npos);  // material_0's, the default
+    const MaterialCode some = generate_material_code(graphs, {}, 0, true, {false, true, true});
+    EXPECT_EQ(some.functions.find("void material_0("), std::string::npos);
+    EXPECT_NE(some.functions.find("void material_1("), std::string::npos);
+    EXPECT_NE(some.functions.find("case 2u: material_2("), std::string::npos);
+    EXPECT_NE(some.functions.find("default: material_1("), std::string::npos);
+}
+
 }  // namespace
 }  // namespace mvpl::material
