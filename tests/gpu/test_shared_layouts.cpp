@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/gpu/shader_compiler.h"
+#include "shaders/shared/closure.h"
 #include "shaders/shared/gpu_vpl.h"
 #include "shaders/shared/present_push.h"
 #include "shaders/shared/push_constants.h"
@@ -151,6 +152,26 @@ TEST(SharedLayouts, GlslangPlacesEveryMemberWhereCxxDoes) {
                 << key << " is not checked";
         }
     }
+}
+
+// shaders/shared/closure.h is not wired in yet (engine/material keeps its own copies): its GLSL,
+// included and as the text a generator emits, must compile and construct as the shaders do.
+TEST(SharedLayouts, TheClosureListCompilesAsGlslBothWays) {
+    const std::string body =
+        "layout(local_size_x = 1) in;\n"
+        "layout(std430, binding = 0) buffer B { float out_value; };\n"
+        "void main() {\n"
+        "    const Closure c = Closure(1u, vec3(0.5), 0.0, vec3(1.0), 1.0, 0.5, 1.5);\n"
+        "    out_value = c.roughness + c.ior;\n"
+        "}\n";
+    EXPECT_NO_THROW(compile_glsl(ShaderStage::compute,
+                                 "#version 460\n#extension GL_GOOGLE_include_directive : require\n"
+                                 "#include \"shared/closure.h\"\n" +
+                                     body,
+                                 "test/closure_include.comp"));
+    EXPECT_NO_THROW(compile_glsl(ShaderStage::compute,
+                                 std::string("#version 460\n") + shared::kClosureGlsl + body,
+                                 "test/closure_text.comp"));
 }
 
 }  // namespace
