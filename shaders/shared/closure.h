@@ -30,7 +30,7 @@ namespace mvpl::shared {
 // The GLSL struct as text, for the code generator that emits it (glsl_library.cpp); the same
 // struct as the #else branch below, which a shader that includes this file gets.
 inline constexpr char kClosureGlsl[] =
-    "// A resolved closure (shaders/shared/closure.h) and its type (node_eval.h, ClosureType).\n"
+    "// A resolved closure (shaders/shared/closure.h) and its type (closure.h, ClosureType).\n"
     "struct Closure {\n"
     "    uint type;\n" MVPL_CLOSURE_PARAMS(MVPL_CLOSURE_GLSL_MEMBER) "};\n";
 
@@ -40,7 +40,7 @@ inline constexpr char kClosureGlsl[] =
 
 #define MVPL_CLOSURE_GLSL_MEMBER(glsl, cpp, name, value) glsl name;
 struct Closure {
-    uint type;  // engine/material/node_eval.h, ClosureType
+    uint type;  // engine/material/closure.h, ClosureType
     MVPL_CLOSURE_PARAMS(MVPL_CLOSURE_GLSL_MEMBER)
 };
 

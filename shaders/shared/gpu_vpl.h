@@ -35,7 +35,7 @@ struct GpuVpl {
     float specular;
     float roughness;
     float ior;
-    uint closure_type;  // engine/material/node_eval.h, ClosureType
+    uint closure_type;  // engine/material/closure.h, ClosureType
     float pad3;
 };
 
