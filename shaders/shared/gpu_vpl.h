@@ -29,6 +29,8 @@ struct GpuVpl {
     float map_extent;
     vec3 power;
     float map_depth;
+    // base_color … ior: the closure (closure.h), spelled out rather than taken from its list
+    // because here they are a buffer layout, each vec3 paired with a float.
     vec3 base_color;
     float metallic;
     vec3 specular_color;

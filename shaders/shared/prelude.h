@@ -33,21 +33,12 @@ using uvec2 = uint32_t[2];
 using uvec4 = uint32_t[4];
 using mat4 = float[16];  // column-major, as glm and GLSL store it
 
-// The std430 base alignment of each host twin (scalars: 4).
+// The std430 base alignment of each host twin: scalars 4, two-component vectors 8, three- and
+// four-component vectors and mat4 (four vec4 columns) 16.
 template <class T>
 inline constexpr size_t kStd430Align = 4;
-template <>
-inline constexpr size_t kStd430Align<vec2> = 8;
-template <>
-inline constexpr size_t kStd430Align<uvec2> = 8;
-template <>
-inline constexpr size_t kStd430Align<vec3> = 16;
-template <>
-inline constexpr size_t kStd430Align<vec4> = 16;
-template <>
-inline constexpr size_t kStd430Align<uvec4> = 16;
-template <>
-inline constexpr size_t kStd430Align<mat4> = 16;
+template <class T, size_t N>
+inline constexpr size_t kStd430Align<T[N]> = N == 2 ? 8 : 16;
 
 }  // namespace mvpl::shared
 
