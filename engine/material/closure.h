@@ -5,16 +5,15 @@
 #include <cstdint>
 
 #include "engine/core/color.h"
+#include "shaders/shared/closure.h"
 
 namespace mvpl::material {
 
+// The members, their defaults and the GLSL struct Closure come from one list
+// (shaders/shared/closure.h): roughness is perceptual (glTF; the GGX alpha is roughness²),
+// specular the KHR_materials_specular factor (0 removes the dielectric layer).
 struct ClosureParams {
-    Rgb base_color{0.8f};
-    float metallic = 0.0f;
-    float roughness = 1.0f;  // perceptual (glTF); the GGX alpha is roughness²
-    float specular = 1.0f;   // KHR_materials_specular factor; 0 removes the dielectric layer
-    Rgb specular_color{1.0f};
-    float ior = 1.5f;
+    MVPL_CLOSURE_PARAMS(MVPL_CLOSURE_MEMBER)
 
     // Metallic 0 and no specular layer: a pure Lambertian, shaded by the cheap path.
     bool is_lambertian() const { return metallic <= 0.0f && specular <= 0.0f; }

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "engine/material/node_kind.h"
+#include "shaders/shared/closure.h"
 
 namespace mvpl::material {
 namespace {
@@ -26,19 +27,7 @@ const float kInvPi = 0.31830988618379067154;
 const float kMinAlpha = 1e-4;  // microfacet.h
 const float kMinCos = 1e-7;    // microfacet.h
 )"},
-    {"Closure",
-     {},
-     R"(// A resolved closure (engine/material/closure.h) and its type (closure.h, ClosureType).
-struct Closure {
-    uint type;
-    vec3 base_color;
-    float metallic;
-    vec3 specular_color;
-    float specular;
-    float roughness;
-    float ior;
-};
-)"},
+    {"Closure", {}, shared::kClosureGlsl},
     {"SurfacePoint",
      {},
      R"(// What value and normal nodes read (node_kind.h, SurfacePoint): t, b, n is the tangent frame.

@@ -19,8 +19,8 @@ namespace {
 std::string extension_of(const uint8_t* data, size_t size) {
     const auto starts = [&](const char* prefix) {
         const size_t n = std::char_traits<char>::length(prefix);
-        return size >= n && std::char_traits<char>::compare(
-                                reinterpret_cast<const char*>(data), prefix, n) == 0;
+        return size >= n &&
+               std::char_traits<char>::compare(reinterpret_cast<const char*>(data), prefix, n) == 0;
     };
     if (starts("glTF")) return ".glb";
     if (starts("ply")) return ".ply";
@@ -35,8 +35,8 @@ std::string extension_of(const uint8_t* data, size_t size) {
 // One file per process and format, rewritten for every input (the loaders read paths).
 std::string write_input(const uint8_t* data, size_t size, const std::string& extension) {
     const char* dir = std::getenv("TMPDIR");
-    const std::string path = std::string(dir ? dir : "/tmp") + "/mvpl-fuzz-" +
-                             std::to_string(getpid()) + extension;
+    const std::string path =
+        std::string(dir ? dir : "/tmp") + "/mvpl-fuzz-" + std::to_string(getpid()) + extension;
     FILE* f = std::fopen(path.c_str(), "wb");
     if (!f) std::abort();
     if (size > 0 && std::fwrite(data, 1, size, f) != size) std::abort();
