@@ -118,9 +118,9 @@ TEST_F(MaterialCodeTest, BumpMappedMaterialAgreesWithTheCpuGraph) {
         const Vec3 g(gpu[3 * i], gpu[3 * i + 1], gpu[3 * i + 2]);
         if (cpu.y < 0.999f) ++tilted;
         if (!(glm::length(g - cpu) <= 1e-4f) && failures++ < 10) {
-            ADD_FAILURE() << "point " << i << " uv (" << uvs[i].x << ", " << uvs[i].y
-                          << "): GPU (" << g.x << ", " << g.y << ", " << g.z << "), CPU ("
-                          << cpu.x << ", " << cpu.y << ", " << cpu.z << ")";
+            ADD_FAILURE() << "point " << i << " uv (" << uvs[i].x << ", " << uvs[i].y << "): GPU ("
+                          << g.x << ", " << g.y << ", " << g.z << "), CPU (" << cpu.x << ", "
+                          << cpu.y << ", " << cpu.z << ")";
         }
     }
     EXPECT_EQ(failures, 0);
