@@ -43,7 +43,8 @@ std::unique_ptr<gpu::GraphicsPipeline> make_pipeline(gpu::Context& context,
                                                      const gpu::SpirvCacheOptions& cache) {
     GBufferSources generated;
     if (!vert || !frag) {
-        generated = generate_g_buffer_sources(geometry.graphs(), geometry.textures());
+        generated =
+            generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
         vert = &generated.vert;
         frag = &generated.frag;
     }
@@ -81,7 +82,7 @@ GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, u
               "g-buffer depth"),
       m_pipeline(make_pipeline(context, geometry, vert, frag, cache)) {
     const GBufferSources sources =
-        generate_g_buffer_sources(geometry.graphs(), geometry.textures());
+        generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
     if (!sources.has_material_pass()) return;
     gpu::ComputeLayout layout{{gpu::BindingType::storage_image}, sizeof(MaterialPush)};
     for (const int index : sources.textures) {

@@ -1,16 +1,18 @@
 #include "engine/render/scene_geometry.h"
 
 #include "engine/gpu/gpu_error.h"
+#include "engine/material/scene_materials.h"
 #include "engine/render/host_vec3.h"
 
 namespace mvpl::render {
 
 SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
-    : m_features(scene_features(scene, ShaderOptions{})), m_textures(scene.textures) {
-    for (const scene::Material& m : scene.materials) {
+    : m_graphs(material::SceneMaterials(scene).graphs()),
+      m_drawn(drawn_materials(scene)),
+      m_features(scene_features(scene, ShaderOptions{})),
+      m_textures(scene.textures) {
+    for (const scene::Material& m : scene.materials)
         m_materials.push_back({m.emission(), m.double_sided});
-        m_graphs.push_back(material::graph_from_gltf(m));
-    }
     if (m_materials.empty()) {
         m_materials.push_back({});
         // The default ClosureParams, for a scene without materials.
@@ -82,7 +84,8 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
 
 void dump_scene_shaders(const std::string& dir, const SceneGeometry& geometry, bool surface_vpls) {
     // The same generators as GBufferPass and ShadingPass use when given no sources.
-    const GBufferSources g = generate_g_buffer_sources(geometry.graphs(), geometry.textures());
+    const GBufferSources g =
+        generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
     const StageSource shading = generate_shading_source(geometry.features(surface_vpls));
     std::vector<const StageSource*> stages{&g.vert, &g.frag, &shading};
     if (g.has_material_pass()) stages.push_back(&g.material);

@@ -51,6 +51,8 @@ public:
     const std::vector<GeometryMaterial>& materials() const { return m_materials; }
     // The scene's material graphs, in material order (what the G-buffer shader resolves).
     const std::vector<material::MaterialGraph>& graphs() const { return m_graphs; }
+    // drawn_materials(scene): the materials the G-buffer generates code for.
+    const std::vector<bool>& drawn() const { return m_drawn; }
     // The scene's decoded textures (what the graphs' image-texture nodes read).
     const std::vector<scene::Texture>& textures() const { return m_textures; }
     // What the scene can produce (scene_features), with or without surface VPLs.
@@ -67,6 +69,7 @@ private:
     std::vector<GeometryDraw> m_draws;
     std::vector<GeometryMaterial> m_materials;
     std::vector<material::MaterialGraph> m_graphs;
+    std::vector<bool> m_drawn;
     ShaderFeatures m_features;
     std::vector<scene::Texture> m_textures;
     uint32_t m_vertex_count = 0;

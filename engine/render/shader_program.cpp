@@ -1,5 +1,7 @@
 #include "engine/render/shader_program.h"
 
+#include "engine/material/scene_materials.h"
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -171,11 +173,23 @@ ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& op
         }
     }
     f.vpl_types[size_t(light::VplType::Surface)] = options.surface_vpls;
+    const material::SceneMaterials materials(scene);
+    const std::vector<bool> drawn = drawn_materials(scene);
     std::vector<material::MaterialGraph> graphs;
-    for (const scene::Material& m : scene.materials)
-        graphs.push_back(material::graph_from_gltf(m));
+    for (size_t i = 0; i < drawn.size(); ++i) {
+        if (drawn[i]) graphs.push_back(materials.graph(int(i)));
+    }
     f.closure_types = material::scene_closure_types(graphs);
     return f;
+}
+
+std::vector<bool> drawn_materials(const scene::Scene& scene) {
+    std::vector<bool> drawn(scene.materials.size(), false);
+    for (const scene::Mesh& m : scene.meshes) {
+        if (m.triangle_count() == 0 || drawn.empty()) continue;
+        drawn[m.material >= 0 && size_t(m.material) < drawn.size() ? size_t(m.material) : 0] = true;
+    }
+    return drawn;
 }
 
 StageSource generate_shading_source(const ShaderFeatures& features,
@@ -186,11 +200,12 @@ StageSource generate_shading_source(const ShaderFeatures& features,
 }
 
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
-                                         const std::vector<scene::Texture>& textures) {
+                                         const std::vector<scene::Texture>& textures,
+                                         const std::vector<bool>& drawn) {
     // The G-buffer pipeline has no descriptor sets yet (gpu::GraphicsPipeline): image textures
     // read as their factors there; the CPU path tracer and the VPLs apply them.
     const material::MaterialCode code =
-        material::generate_material_code(graphs, textures, 0, false);
+        material::generate_material_code(graphs, textures, 0, false, drawn);
     GBufferSources out;
     out.functions = code.node_functions;
     const std::string push =
@@ -202,7 +217,7 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
                     gpu::embedded_shader("render/g_buffer.frag"), {},
                     {{"push", push}, {"bindings", code.bindings}, {"materials", code.functions}})};
     const material::MaterialCode textured =
-        material::generate_material_code(graphs, textures, 1, true);
+        material::generate_material_code(graphs, textures, 1, true, drawn);
     if (!textured.textures.empty()) {
         out.textures = textured.textures;
         out.material_functions = textured.node_functions;
@@ -217,10 +232,9 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
 SceneShaders generate_scene_shaders(const scene::Scene& scene, const ShaderOptions& options) {
     SceneShaders out;
     out.features = scene_features(scene, options);
-    std::vector<material::MaterialGraph> graphs;
-    for (const scene::Material& m : scene.materials)
-        graphs.push_back(material::graph_from_gltf(m));
-    GBufferSources g = generate_g_buffer_sources(graphs, scene.textures);
+    const material::SceneMaterials materials(scene);
+    GBufferSources g =
+        generate_g_buffer_sources(materials.graphs(), scene.textures, drawn_materials(scene));
     out.g_buffer_vert = std::move(g.vert);
     out.g_buffer_frag = std::move(g.frag);
     out.g_buffer_functions = std::move(g.functions);

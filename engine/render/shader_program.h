@@ -32,8 +32,12 @@ struct ShaderOptions {
 
 // What a scene can produce: point/spot/directional VPLs from its punctual lights, area VPLs if
 // a mesh uses an emissive material, surface VPLs if options.surface_vpls; the closure types of
-// its material graphs.
+// the material graphs it draws with.
 ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& options);
+
+// Per scene material: whether a mesh with triangles uses it (an index out of range counts as
+// material 0, as SceneGeometry draws it). Code is generated for these only.
+std::vector<bool> drawn_materials(const scene::Scene& scene);
 
 struct StageSource {
     std::string name;    // "g_buffer.vert", "g_buffer.frag", "shading.comp"
@@ -70,9 +74,11 @@ struct GBufferSources {
     std::vector<std::string> material_functions;
     bool has_material_pass() const { return !textures.empty(); }
 };
-// The G-buffer stages for material graphs (textures: the scene's, for the bump-map step).
+// The G-buffer stages for material graphs (textures: the scene's, for the bump-map step; drawn:
+// drawn_materials, empty for all).
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
-                                         const std::vector<scene::Texture>& textures);
+                                         const std::vector<scene::Texture>& textures,
+                                         const std::vector<bool>& drawn = {});
 // The shading shader for `features`.
 StageSource generate_shading_source(const ShaderFeatures& features,
                                     std::vector<std::string>* functions = nullptr);
