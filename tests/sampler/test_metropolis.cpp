@@ -11,7 +11,7 @@
 #include "engine/light/light_sampler.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/metropolis_sampler.h"
+#include "sampler/metropolis_stream.h"
 #include "sampler/monte_carlo_stream.h"
 #include "sampler/sampler_factory.h"
 #include "tests/support/scene_builder.h"

@@ -9,7 +9,7 @@
 #include "engine/reference/vpl_gather.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/metropolis_sampler.h"
+#include "sampler/metropolis_stream.h"
 #include "sampler/monte_carlo_stream.h"
 
 namespace mvpl {

@@ -15,7 +15,7 @@
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/metropolis_sampler.h"
+#include "sampler/metropolis_stream.h"
 #include "sampler/monte_carlo_sampler.h"
 #include "sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"

@@ -1,4 +1,4 @@
-#include "sampler/metropolis_sampler.h"
+#include "sampler/metropolis_stream.h"
 
 #include <algorithm>
 #include <cmath>
