@@ -45,8 +45,8 @@ Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w) {
 }
 
 Rgb shade(const scene::Scene& scene, const trace::Accel& accel,
-          const std::vector<PreparedVpl>& vpls, const trace::Ray& camera_ray, float d_min2,
-          bool show_emitters) {
+          const std::vector<PreparedVpl>& vpls, double scale, const trace::Ray& camera_ray,
+          float d_min2, bool show_emitters) {
     Rgb L(0.0f);
     const std::optional<Receiver> receiver =
         make_receiver(scene, accel, camera_ray, show_emitters ? &L : nullptr);
@@ -54,7 +54,7 @@ Rgb shade(const scene::Scene& scene, const trace::Accel& accel,
     DVec3 sum(0.0);
     for (const PreparedVpl& pv : vpls)
         sum += DVec3(vpl_contribution(accel, *receiver, pv, d_min2));
-    return L + Rgb(sum);
+    return L + Rgb(sum * scale);
 }
 
 }  // namespace
@@ -119,14 +119,13 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
     return c;
 }
 
-Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel,
-                  const std::vector<light::Vpl>& vpls, const GatherOptions& options,
-                  GatherStats* stats) {
+Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const light::VplSet& vpls,
+                  const GatherOptions& options, GatherStats* stats) {
     Timer timer;
     const uint64_t rays_before = accel.ray_count();
     std::vector<PreparedVpl> prepared;
-    prepared.reserve(vpls.size());
-    for (const light::Vpl& v : vpls)
+    prepared.reserve(vpls.vpls.size());
+    for (const light::Vpl& v : vpls.vpls)
         prepared.push_back(prepare_vpl(v));
     const float d_min = options.clamp * scene.bounds().diagonal();
     const bool show_emitters = options.max_depth < 0 || options.max_depth >= 1;
@@ -139,7 +138,7 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel,
                 const scene::CameraRay cr =
                     scene::generate_camera_ray(scene.camera, options.width, options.height, film);
                 image.at(x, int(y)) =
-                    shade(scene, accel, prepared, trace::Ray{cr.origin, cr.direction},
+                    shade(scene, accel, prepared, vpls.scale, trace::Ray{cr.origin, cr.direction},
                           d_min * d_min, show_emitters);
             }
             progress.advance();
