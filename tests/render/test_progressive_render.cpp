@@ -48,9 +48,10 @@ RenderOptions small_options() {
     return o;
 }
 
-// Both images sum the same float contributions, the progressive one with powers ×N and the
-// result ×1/N: each pixel differs by float rounding only — a few ulps of the sum of at most
-// ~200 terms, far below 1e-5 relative (plus an absolute 1e-7 for pixels that are ~0).
+// Both images sum the same float contributions, in other chunks or with the scale folded into
+// the powers instead of applied at the resolve: each pixel differs by float rounding only — a few
+// ulps of the sum of at most ~200 terms, far below 1e-5 relative (plus an absolute 1e-7 for
+// pixels that are ~0).
 void expect_same_image(const Image& a, const Image& b) {
     ASSERT_EQ(a.width(), b.width());
     ASSERT_EQ(a.height(), b.height());

@@ -76,7 +76,7 @@ void add_max_depth_option(ArgParser& parser, int& max_depth) {
 }
 
 void add_seed_option(ArgParser& parser, uint64_t& seed) {
-    parser.add_uint64("--seed", &seed, "random seed; the image is a function of it");
+    parser.add_uint64("--seed", &seed, "random seed; the same seed gives the same result");
 }
 
 }  // namespace mvpl::cli
