@@ -25,8 +25,8 @@ Importance::Importance(const scene::Scene& scene, const trace::Accel& accel,
                             (float(j) + rng.next_float()) / float(gy) * float(options.height));
             const scene::CameraRay cr =
                 scene::generate_camera_ray(camera, options.width, options.height, film);
-            std::optional<reference::Receiver> r =
-                reference::make_receiver(scene, accel, trace::Ray{cr.origin, cr.direction});
+            std::optional<light::Receiver> r =
+                light::make_receiver(scene, accel, trace::Ray{cr.origin, cr.direction});
             if (r) m_points.push_back(std::move(*r));
         }
     }
@@ -38,9 +38,9 @@ Importance::Importance(const scene::Scene& scene, const trace::Accel& accel,
 double Importance::evaluate(std::span<const light::Vpl> vpls) const {
     double sum = 0.0;
     for (const light::Vpl& v : vpls) {
-        const reference::PreparedVpl pv = reference::prepare_vpl(v);
+        const light::PreparedVpl pv = light::prepare_vpl(v);
         for (size_t k = 0; k < m_points.size(); ++k) {
-            const Rgb c = reference::vpl_contribution(m_accel, m_points[k], pv, m_d_min2);
+            const Rgb c = light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2);
             sum += m_weights[k] * double(luminance(c));
         }
     }
@@ -50,10 +50,9 @@ double Importance::evaluate(std::span<const light::Vpl> vpls) const {
 void Importance::evaluate_points(std::span<const light::Vpl> vpls,
                                  std::span<float> per_point) const {
     for (const light::Vpl& v : vpls) {
-        const reference::PreparedVpl pv = reference::prepare_vpl(v);
+        const light::PreparedVpl pv = light::prepare_vpl(v);
         for (size_t k = 0; k < m_points.size(); ++k)
-            per_point[k] +=
-                luminance(reference::vpl_contribution(m_accel, m_points[k], pv, m_d_min2));
+            per_point[k] += luminance(light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2));
     }
 }
 

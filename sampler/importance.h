@@ -2,7 +2,7 @@
 // The Metropolis target I(x̄) (DESIGN.md "The algorithm"; the seed's §3): the luminance that the
 // VPLs of a light path add to a fixed set of K camera-visible points — the first hits of
 // stratified camera rays — averaged over the K rays, so that I estimates the path's share of the
-// image's mean luminance. Each point uses the oracle's per-point code (reference::vpl_contribution:
+// image's mean luminance. Each point uses the oracle's per-point code (light::vpl_contribution:
 // the vpl.h formula, Embree visibility, d_min = clamp · scene diagonal), so the target sees what
 // the renderer shows.
 //
@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "engine/light/vpl.h"
-#include "engine/reference/vpl_gather.h"
+#include "engine/light/vpl_contribution.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
@@ -53,7 +53,7 @@ public:
 
 private:
     const trace::Accel& m_accel;
-    std::vector<reference::Receiver> m_points;
+    std::vector<light::Receiver> m_points;
     std::vector<double> m_weights;  // per point, 1 unless relative
     bool m_relative = true;
     int m_rays = 0;

@@ -4,9 +4,9 @@
 #include <cmath>
 #include <limits>
 
-#include "engine/reference/shading_point.h"
 #include "engine/trace/interaction.h"
 #include "engine/trace/ray.h"
+#include "engine/trace/shading_point.h"
 
 namespace mvpl::sampler {
 
@@ -80,7 +80,7 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
         const std::optional<trace::Hit> hit = m_accel.intersect(ray);
         if (!hit) break;
         const trace::SurfaceInteraction si = trace::make_interaction(m_scene, *hit, ray);
-        const reference::ShadingPoint sp = reference::make_shading_point(m_scene, si);
+        const trace::ShadingPoint sp = trace::make_shading_point(m_accel.materials(), si);
         const Vec3 wi_world = -glm::normalize(ray.direction);
         const Vec3 wi = sp.frame.to_local(wi_world);
         const float cos_geometric = glm::dot(wi_world, sp.ng);

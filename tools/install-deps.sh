@@ -19,6 +19,8 @@ packages=(
   libglfw3-dev libimgui-dev xvfb xauth
   # convergence plots (tools/plot_convergence.py)
   python3-matplotlib
+  # the loaders' fuzz target (tests/fuzz): clang with libFuzzer and its sanitizer runtimes
+  clang libclang-rt-14-dev
 )
 
 missing=()

@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "engine/core/sampling.h"
-#include "engine/material/material_eval.h"
 
 namespace mvpl::light {
 
@@ -26,10 +25,11 @@ TrianglePoints triangle_points(const scene::Mesh& mesh, int triangle) {
     return {mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]};
 }
 
-material::SurfaceUv interpolate_uv(const scene::Mesh& mesh, int triangle, const Vec2& b) {
+// What an emission graph reads at a point of an emissive triangle.
+material::SurfacePoint surface_point(const scene::Mesh& mesh, int triangle, const Vec2& b) {
     const uint32_t* idx = &mesh.indices[3 * size_t(triangle)];
     const float b0 = 1.0f - b.x - b.y;
-    material::SurfaceUv uv;
+    material::SurfacePoint uv;
     if (!mesh.uv0.empty())
         uv.uv0 = b0 * mesh.uv0[idx[0]] + b.x * mesh.uv0[idx[1]] + b.y * mesh.uv0[idx[2]];
     if (!mesh.uv1.empty())
@@ -39,18 +39,18 @@ material::SurfaceUv interpolate_uv(const scene::Mesh& mesh, int triangle, const 
 
 }  // namespace
 
-LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene) {
+LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materials(scene) {
     const float diagonal = scene.bounds().diagonal();
     m_scene_radius = diagonal > 0.0f ? 0.5f * diagonal : 1.0f;
     if (!scene.bounds().empty()) m_scene_center = scene.bounds().center();
     m_first_emitter.assign(scene.meshes.size(), -1);
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const scene::Mesh& mesh = scene.meshes[m];
-        const scene::Material& mat = scene.materials[mesh.material];
-        if (!mat.is_emissive()) continue;
+        if (!m_materials.is_emissive(mesh.material)) continue;
         m_first_emitter[m] = int(m_emitters.size());
-        // Selection by the flux of the emission factor; a texture only modulates it.
-        const float radiance = luminance(mat.emission());
+        // Selection by the flux of the emission factor (a weight, not the radiance: a texture
+        // only modulates it, and sample_li/sample_le read the graph's emission).
+        const float radiance = luminance(scene.materials[mesh.material].emission());
         for (size_t t = 0; t < mesh.triangle_count(); ++t) {
             const TrianglePoints tri = triangle_points(mesh, int(t));
             Emitter e;
@@ -111,9 +111,7 @@ Rgb LightSampler::emitted_radiance(int mesh, int triangle, const Vec2& barycentr
     const TrianglePoints tri = triangle_points(m, triangle);
     const Vec3 n = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
     if (glm::dot(n, w) <= 0.0f) return Rgb(0.0f);
-    const scene::Material& mat = m_scene.materials[m.material];
-    return material::resolve_emission(mat, m_scene.textures,
-                                      interpolate_uv(m, triangle, barycentric));
+    return m_materials.emission(m.material, surface_point(m, triangle, barycentric));
 }
 
 std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick,
@@ -145,9 +143,7 @@ std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick
         const float cos_light = -glm::dot(s.n, s.wi);
         if (cos_light <= 0.0f) return std::nullopt;  // back face: one-sided emitter
         s.pdf = pick * dist2 / (cos_light * e.area);
-        const scene::Material& mat = m_scene.materials[mesh.material];
-        s.li =
-            material::resolve_emission(mat, m_scene.textures, interpolate_uv(mesh, e.triangle, b));
+        s.li = m_materials.emission(mesh.material, surface_point(mesh, e.triangle, b));
         if (!std::isfinite(s.pdf)) return std::nullopt;
         return s;
     }
@@ -213,9 +209,8 @@ std::optional<EmissionSample> LightSampler::sample_le(float u_pick, const Vec2& 
         s.direction = Frame(s.n).to_world(local);
         s.pdf_pos = 1.0f / e.area;
         s.pdf_dir = cosine_hemisphere_pdf(local.z);
-        const scene::Material& mat = m_scene.materials[mesh.material];
         const Rgb radiance =
-            material::resolve_emission(mat, m_scene.textures, interpolate_uv(mesh, e.triangle, b));
+            m_materials.emission(mesh.material, surface_point(mesh, e.triangle, b));
         s.le = radiance * (e.area / s.pick);
         // Le · cos θ / (pick · pdf_pos · cos θ/π): the cosine cancels exactly.
         s.throughput = radiance * (kPi * e.area / s.pick);

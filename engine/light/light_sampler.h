@@ -7,6 +7,7 @@
 
 #include "engine/core/color.h"
 #include "engine/core/math.h"
+#include "engine/material/scene_materials.h"
 #include "engine/scene/scene.h"
 
 namespace mvpl::light {
@@ -84,6 +85,7 @@ public:
 
 private:
     const scene::Scene& m_scene;
+    material::SceneMaterials m_materials;  // emission graphs (textured emitters)
     std::vector<Emitter> m_emitters;
     std::vector<float> m_cdf;          // cumulative power, m_cdf.back() == m_total_power
     std::vector<int> m_first_emitter;  // per mesh: index of its triangle 0, or −1

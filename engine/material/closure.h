@@ -1,6 +1,9 @@
 #pragma once
 // A surface closure: the material parameters resolved at one surface point (textures applied),
 // all that a BSDF needs. VPLs carry one; the G-buffer stores one per pixel.
+#include <algorithm>
+#include <cstdint>
+
 #include "engine/core/color.h"
 
 namespace mvpl::material {
@@ -20,7 +23,7 @@ struct ClosureParams {
 // The parameters limited to the ranges glTF allows (NaN becomes the lower bound): base_color,
 // metallic, roughness and specular in [0, 1]; specular_color and ior in [0, 1e6] (specular_color
 // may exceed 1 by KHR_materials_specular; the cap only keeps infinities out, since F0 saturates
-// at 1 long before). Bsdf applies this itself; resolve_closure returns it.
+// at 1 long before). Bsdf applies this itself; every closure node returns it.
 inline ClosureParams clamp_to_valid_ranges(const ClosureParams& p) {
     const auto unit = [](float x) { return x > 0.0f ? std::min(x, 1.0f) : 0.0f; };
     const auto non_negative = [](float x) { return x > 0.0f ? std::min(x, 1e6f) : 0.0f; };
@@ -33,6 +36,36 @@ inline ClosureParams clamp_to_valid_ranges(const ClosureParams& p) {
                            non_negative(p.specular_color.b));
     c.ior = non_negative(p.ior);
     return c;
+}
+
+// The closure with these parameters, limited to the glTF ranges: what every closure node
+// resolves to (GLSL: clamp_closure in glsl_library.cpp).
+inline ClosureParams make_closure(const Rgb& base_color, float metallic, float roughness,
+                                  float specular, const Rgb& specular_color, float ior) {
+    ClosureParams c;
+    c.base_color = base_color;
+    c.metallic = metallic;
+    c.roughness = roughness;
+    c.specular = specular;
+    c.specular_color = specular_color;
+    c.ior = ior;
+    return clamp_to_valid_ranges(c);
+}
+
+// Closure types the shading code distinguishes, narrowest first. closure_type() of a closure is
+// the narrowest type whose evaluator gives exactly Bsdf::eval.
+enum class ClosureType : uint32_t { Lambertian = 0, Conductor = 1, Dielectric = 2, MetalRough = 3 };
+inline constexpr int kClosureTypeCount = 4;
+inline constexpr uint32_t closure_type_bit(ClosureType t) {
+    return 1u << uint32_t(t);
+}
+
+inline ClosureType closure_type(const ClosureParams& params) {
+    const ClosureParams c = clamp_to_valid_ranges(params);
+    if (c.is_lambertian()) return ClosureType::Lambertian;
+    if (c.metallic >= 1.0f) return ClosureType::Conductor;
+    if (c.metallic <= 0.0f) return ClosureType::Dielectric;
+    return ClosureType::MetalRough;
 }
 
 }  // namespace mvpl::material

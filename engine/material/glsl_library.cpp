@@ -3,6 +3,8 @@
 #include <array>
 #include <vector>
 
+#include "engine/material/node_kind.h"
+
 namespace mvpl::material {
 namespace {
 
@@ -15,7 +17,7 @@ struct Entry {
 };
 
 // Line for line the C++ of fresnel.h, microfacet.*, lambertian.h, conductor.*,
-// dielectric_diffuse.*, bsdf.cpp and node_eval.*, in world space where the CPU uses the local
+// dielectric_diffuse.*, bsdf.cpp and closure.h, in world space where the CPU uses the local
 // frame: w.z = dot(n, w) and w.x² + w.y² = |n × w|² (the cross product keeps the small sines of
 // glossy lobes free of the cancellation in 1 − cos²).
 const Entry kEntries[] = {
@@ -26,7 +28,7 @@ const float kMinCos = 1e-7;    // microfacet.h
 )"},
     {"Closure",
      {},
-     R"(// A resolved closure (engine/material/closure.h) and its type (node_eval.h, ClosureType).
+     R"(// A resolved closure (engine/material/closure.h) and its type (closure.h, ClosureType).
 struct Closure {
     uint type;
     vec3 base_color;
@@ -39,7 +41,7 @@ struct Closure {
 )"},
     {"SurfacePoint",
      {},
-     R"(// What value and normal nodes read (node_eval.h, SurfacePoint): t, b, n is the tangent frame.
+     R"(// What value and normal nodes read (node_kind.h, SurfacePoint): t, b, n is the tangent frame.
 struct SurfacePoint {
     vec2 uv0;
     vec2 uv1;
@@ -122,7 +124,7 @@ bool ggx_reflection(vec3 n, vec3 wo, vec3 wi, float alpha, out float dv, out flo
 )"},
     {"clamp_closure",
      {"Closure"},
-     R"(// closure.h clamp_to_valid_ranges and node_eval.h closure_type.
+     R"(// closure.h: clamp_to_valid_ranges and closure_type.
 float clamp_unit(float x) { return x > 0.0 ? min(x, 1.0) : 0.0; }
 float clamp_non_negative(float x) { return x > 0.0 ? min(x, 1e6) : 0.0; }
 Closure clamp_closure(vec3 base_color, float metallic, float roughness, float specular,
@@ -143,127 +145,7 @@ Closure clamp_closure(vec3 base_color, float metallic, float roughness, float sp
     return c;
 }
 )"},
-    // Value nodes.
-    {"image_texture",
-     {},
-     R"(// scene::Texture::sample after TextureRef::transform, with texelFetch so that the wrap modes
-// (0 repeat, 1 clamp to edge, 2 mirrored repeat) and the bilinear filter (filter 1) are those of
-// the CPU bit for bit rather than the sampler's.
-float texture_reduce(float u, int wrap) {
-    if (isnan(u) || isinf(u)) return 0.0;
-    if (wrap == 0) return u - floor(u);
-    if (wrap == 2) return u - 2.0 * floor(0.5 * u);
-    return clamp(u, -1.0, 2.0);
-}
-int texture_wrap_index(int i, int size, int wrap) {
-    if (wrap == 0) {
-        const int m = i % size;
-        return m < 0 ? m + size : m;
-    }
-    if (wrap == 2) {
-        const int period = 2 * size;
-        int m = i % period;
-        if (m < 0) m += period;
-        return m < size ? m : period - 1 - m;
-    }
-    return clamp(i, 0, size - 1);
-}
-vec4 texture_texel(sampler2D tex, int i, int j, ivec2 size, int wrap_s, int wrap_t) {
-    return texelFetch(tex, ivec2(texture_wrap_index(i, size.x, wrap_s),
-                                 texture_wrap_index(j, size.y, wrap_t)), 0);
-}
-vec4 image_texture(sampler2D tex, vec2 uv, vec2 offset, float rotation, vec2 scale, int wrap_s,
-                   int wrap_t, int filter_mode, vec4 factor) {
-    vec2 st = uv * scale;
-    if (rotation != 0.0) {
-        const float c = cos(rotation);
-        const float s = sin(rotation);
-        st = vec2(c * st.x + s * st.y, -s * st.x + c * st.y);
-    }
-    st += offset;
-    const ivec2 size = textureSize(tex, 0);
-    const float x = texture_reduce(st.x, wrap_s) * float(size.x);
-    const float y = texture_reduce(st.y, wrap_t) * float(size.y);
-    if (filter_mode == 0) {
-        return factor * texture_texel(tex, int(floor(x)), int(floor(y)), size, wrap_s, wrap_t);
-    }
-    const float fx = x - 0.5;
-    const float fy = y - 0.5;
-    const int x0 = int(floor(fx));
-    const int y0 = int(floor(fy));
-    const float tx = fx - float(x0);
-    const float ty = fy - float(y0);
-    const vec4 top = mix(texture_texel(tex, x0, y0, size, wrap_s, wrap_t),
-                         texture_texel(tex, x0 + 1, y0, size, wrap_s, wrap_t), tx);
-    const vec4 bottom = mix(texture_texel(tex, x0, y0 + 1, size, wrap_s, wrap_t),
-                            texture_texel(tex, x0 + 1, y0 + 1, size, wrap_s, wrap_t), tx);
-    return factor * mix(top, bottom, ty);
-}
-)"},
-    {"vertex_color", {}, R"(vec4 vertex_color(vec4 factor, vec4 color) {
-    return factor * color;
-}
-)"},
-    {"mix_node", {}, R"(vec4 mix_node(vec4 a, vec4 b, float t) {
-    const float f = clamp(t, 0.0, 1.0);
-    return a + (b - a) * f;
-}
-)"},
-    {"emission", {}, R"(vec4 emission(vec4 colour, float strength) {
-    return vec4(colour.rgb * strength, 1.0);
-}
-)"},
-    {"normal_map", {"SurfacePoint"}, R"(vec3 normal_map(vec3 texel, float scale, SurfacePoint s) {
-    vec3 n_ts = 2.0 * texel - vec3(1.0);
-    n_ts.xy *= scale;
-    const vec3 n = s.t * n_ts.x + s.b * n_ts.y + s.n * n_ts.z;
-    const float len2 = dot(n, n);
-    if (!(len2 > 1e-12) || isinf(len2)) return s.n;
-    return n / sqrt(len2);
-}
-)"},
-    {"bump_map",
-     {"SurfacePoint"},
-     R"(vec3 bump_map(float h, float h_u, float h_v, float du, float dv, float scale, SurfacePoint s) {
-    const float dh_du = du > 0.0 ? (h_u - h) / du : 0.0;
-    const float dh_dv = dv > 0.0 ? (h_v - h) / dv : 0.0;
-    const vec3 n = s.n - scale * (dh_du * s.t + dh_dv * s.b);
-    const float len2 = dot(n, n);
-    if (!(len2 > 1e-12) || isinf(len2)) return s.n;
-    return n / sqrt(len2);
-}
-)"},
-    // Closure nodes: resolution (G-buffer) ...
-    {"lambertian", {"clamp_closure"}, R"(Closure lambertian(vec3 base_color) {
-    return clamp_closure(base_color, 0.0, 1.0, 0.0, vec3(1.0), 1.5);
-}
-)"},
-    {"ggx_conductor", {"clamp_closure"}, R"(Closure ggx_conductor(vec3 f0, float roughness) {
-    return clamp_closure(f0, 1.0, roughness, 1.0, vec3(1.0), 1.5);
-}
-)"},
-    {"dielectric_diffuse",
-     {"clamp_closure"},
-     R"(Closure dielectric_diffuse(vec3 base_color, float roughness, float specular,
-                           vec3 specular_color, float ior) {
-    return clamp_closure(base_color, 0.0, roughness, specular, specular_color, ior);
-}
-)"},
-    {"metal_rough",
-     {"clamp_closure"},
-     R"(Closure metal_rough(vec3 base_color, float metallic, float roughness, float specular,
-                    vec3 specular_color, float ior) {
-    return clamp_closure(base_color, metallic, roughness, specular, specular_color, ior);
-}
-)"},
-    {"rough_dielectric",
-     {"clamp_closure"},
-     R"(// The reflection lobe only: a dielectric layer over a black base (node_graph.h).
-Closure rough_dielectric(float roughness, float specular, vec3 specular_color, float ior) {
-    return clamp_closure(vec3(0.0), 0.0, roughness, specular, specular_color, ior);
-}
-)"},
-    // ... and evaluation f(wo, wi) without the cosine (shading), for the closure types.
+    // The closure types' evaluation f(wo, wi) without the cosine (shading).
     {"lambertian_eval",
      {"Closure", "constants"},
      R"(vec3 lambertian_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
@@ -332,6 +214,11 @@ const GlslFunction* find_glsl_function(std::string_view name) {
             while (n < e.deps.size() && !e.deps[n].empty())
                 ++n;
             out.push_back({e.name, std::span<const std::string_view>(e.deps.data(), n), e.code});
+        }
+        // Each node kind's own function (nodes/*.cpp); constants have none.
+        for (const NodeKind* kind : node_kinds()) {
+            if (!kind->glsl.empty())
+                out.push_back({kind->name, kind->glsl_dependencies, kind->glsl});
         }
         return out;
     }();

@@ -1,6 +1,7 @@
 #pragma once
-// The GLSL side of the material nodes: one function per node kind (named as node_name() and as
-// its C++ evaluator in node_eval.h), plus the helpers they need, each declaring its
+// The GLSL functions generated code may require by name: the shared helpers of the closures
+// (Fresnel, GGX, the closure types' evaluation, the Closure and SurfacePoint structs), defined
+// here, and each node kind's own function (NodeKind::glsl, nodes/*.cpp), each declaring its
 // dependencies. GlslModule (material_codegen.h) emits what a scene needs, dependencies first and
 // each once — Mitsuba 0.5's Shader::putDependencies/generateCode, but by function rather than
 // by node instance, so that two materials with the same node kind share one function.

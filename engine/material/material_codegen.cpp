@@ -1,6 +1,6 @@
 #include "engine/material/material_codegen.h"
 
-#include <cstdio>
+#include <algorithm>
 #include <map>
 #include <stdexcept>
 
@@ -31,25 +31,10 @@ std::string GlslModule::code() const {
     return out;
 }
 
-std::array<bool, kClosureTypeCount> possible_closure_types(NodeKind kind) {
+std::array<bool, kClosureTypeCount> possible_closure_types(const NodeKind& kind) {
     std::array<bool, kClosureTypeCount> t{};
-    const auto set = [&](ClosureType c) { t[size_t(c)] = true; };
-    switch (kind) {
-        case NodeKind::Lambertian:
-            set(ClosureType::Lambertian);
-            break;
-        case NodeKind::GgxConductor:
-            set(ClosureType::Conductor);
-            break;
-        case NodeKind::DielectricDiffuse:
-        case NodeKind::RoughDielectric:
-            // A specular input that reaches 0 somewhere leaves the Lambertian base.
-            set(ClosureType::Lambertian);
-            set(ClosureType::Dielectric);
-            break;
-        default:
-            t.fill(true);
-    }
+    for (int i = 0; i < kClosureTypeCount; ++i)
+        t[size_t(i)] = (kind.closure_types & closure_type_bit(ClosureType(i))) != 0;
     return t;
 }
 
@@ -71,7 +56,7 @@ std::array<bool, kClosureTypeCount> scene_closure_types(const std::vector<Materi
     std::array<bool, kClosureTypeCount> t{};
     for (const MaterialGraph& g : graphs) {
         if (g.closure < 0) continue;
-        const auto p = possible_closure_types(g.nodes[size_t(g.closure)].kind);
+        const auto p = possible_closure_types(*g.nodes[size_t(g.closure)].kind);
         for (int i = 0; i < kClosureTypeCount; ++i)
             t[size_t(i)] = t[size_t(i)] || p[size_t(i)];
     }
@@ -83,7 +68,7 @@ std::string generate_closure_eval(const std::array<bool, kClosureTypeCount>& typ
                                   std::vector<std::string>* emitted) {
     GlslModule module;
     std::string dispatch =
-        "// The closure types that occur in this scene (node_eval.h, ClosureType).\n"
+        "// The closure types that occur in this scene (closure.h, ClosureType).\n"
         "vec3 closure_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {\n";
     int last = -1;
     for (int i = 0; i < kClosureTypeCount; ++i)
@@ -108,44 +93,16 @@ std::string generate_closure_eval(const std::array<bool, kClosureTypeCount>& typ
 
 namespace {
 
-std::string number(float v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.9g", double(v));
-    std::string s(buf);
-    if (s.find_first_of(".e") == std::string::npos) s += ".0";
-    return s;
-}
-
-std::string vec(const Vec4& v) {
-    return "vec4(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ", " + number(v.w) +
-           ")";
-}
-
-std::string vec2(const Vec2& v) {
-    return "vec2(" + number(v.x) + ", " + number(v.y) + ")";
-}
-
-int wrap_code(scene::Wrap w) {
-    switch (w) {
-        case scene::Wrap::Repeat:
-            return 0;
-        case scene::Wrap::ClampToEdge:
-            return 1;
-        case scene::Wrap::MirroredRepeat:
-            return 2;
-    }
-    return 0;
-}
-
 bool reads_texture(const MaterialGraph& g, int index) {
     const Node& n = g.nodes.at(size_t(index));
-    if (n.kind == NodeKind::ImageTexture) return true;
+    if (n.texture.valid()) return true;
     for (const NodeInput& in : n.inputs) {
         if (in.node >= 0 && reads_texture(g, in.node)) return true;
     }
     return false;
 }
 
+// Writes the GLSL expressions of one material's graph; each node through its kind's glsl_call.
 class MaterialWriter {
 public:
     MaterialWriter(GlslModule& module, const std::vector<scene::Texture>& textures,
@@ -155,99 +112,67 @@ public:
           m_bindings(bindings),
           m_bind_textures(bind_textures) {}
 
-    // The vec4 expression of a node's value at the surface point `s`.
-    std::string value(const MaterialGraph& g, int index, const std::string& s) {
-        const Node& n = g.nodes.at(size_t(index));
-        const auto in = [&](int k) { return input(g, n.inputs[size_t(k)], s); };
-        switch (n.kind) {
-            case NodeKind::Constant:
-                return vec(n.value);
-            case NodeKind::ImageTexture: {
-                if (!n.texture.valid() || size_t(n.texture.texture) >= m_textures.size()) {
-                    return vec(n.value);
-                }
-                if (!m_bind_textures) return "/* texture not bound */ " + vec(n.value);
-                m_module.require("image_texture");
-                const scene::Texture& t = m_textures[size_t(n.texture.texture)];
-                const int slot = binding(n.texture.texture);
-                return "image_texture(texture_" + std::to_string(slot) + ", " + s +
-                       (n.texture.texcoord == 1 ? ".uv1" : ".uv0") + ", " + vec2(n.texture.offset) +
-                       ", " + number(n.texture.rotation) + ", " + vec2(n.texture.scale) + ", " +
-                       std::to_string(wrap_code(t.wrap_s)) + ", " +
-                       std::to_string(wrap_code(t.wrap_t)) + ", " +
-                       (t.filter == scene::Filter::Nearest ? "0" : "1") + ", " + vec(n.value) + ")";
-            }
-            case NodeKind::VertexColor:
-                m_module.require("vertex_color");
-                return "vertex_color(" + vec(n.value) + ", " + s + ".color)";
-            case NodeKind::Mix:
-                m_module.require("mix_node");
-                return "mix_node(" + in(0) + ", " + in(1) + ", " + scalar(g, n.inputs[2], s) + ")";
-            case NodeKind::Emission:
-                m_module.require("emission");
-                return "emission(" + in(0) + ", " + number(n.value.x) + ")";
-            default:
-                return "vec4(0.0)";
-        }
+    // Starts the material `name`: helper functions are named after it.
+    void begin(const MaterialGraph& g, const std::string& name) {
+        m_graph = &g;
+        m_name = name;
+        m_helpers.clear();
+        m_function_count = 0;
     }
+    // The helper functions written since begin(), to precede the material's function.
+    const std::string& helpers() const { return m_helpers; }
 
-    // A scalar input as a float expression; constants as plain literals (readable code).
-    std::string scalar(const MaterialGraph& g, const NodeInput& in, const std::string& s) {
-        if (in.node < 0) return "0.0";
-        const Node& n = g.nodes.at(size_t(in.node));
-        if (n.kind == NodeKind::Constant) return number(n.value[in.channel < 0 ? 0 : in.channel]);
-        return input(g, in, s) + ".x";
-    }
-    // An RGB input as a vec3 expression.
-    std::string rgb(const MaterialGraph& g, const NodeInput& in, const std::string& s) {
-        if (in.node >= 0 && g.nodes.at(size_t(in.node)).kind == NodeKind::Constant &&
-            in.channel == kAllChannels) {
-            const Vec4& v = g.nodes[size_t(in.node)].value;
-            return "vec3(" + number(v.x) + ", " + number(v.y) + ", " + number(v.z) + ")";
-        }
-        return input(g, in, s) + ".rgb";
-    }
-
-    std::string input(const MaterialGraph& g, const NodeInput& in, const std::string& s) {
+    // The expression of node `index`'s output (a vec4 for value nodes).
+    std::string node(int index);
+    // An input as a vec4 expression.
+    std::string input(const NodeInput& in) {
         if (in.node < 0) return "vec4(0.0)";
-        const std::string v = value(g, in.node, s);
+        const std::string v = value(in.node);
         if (in.channel == kAllChannels) return v;
         return "vec4(" + v + "." + "xyzw"[in.channel] + ")";
     }
-
-    std::string closure(const MaterialGraph& g, const std::string& s) {
-        if (g.closure < 0) {
-            m_module.require("lambertian");
-            return "lambertian(vec3(0.0))";
-        }
-        const Node& n = g.nodes[size_t(g.closure)];
-        m_module.require(node_name(n.kind));
-        const auto rgb = [&](int k) { return this->rgb(g, n.inputs[size_t(k)], s); };
-        const auto x = [&](int k) { return scalar(g, n.inputs[size_t(k)], s); };
-        std::string args;
-        switch (n.kind) {
-            case NodeKind::Lambertian:
-                args = rgb(0);
-                break;
-            case NodeKind::GgxConductor:
-                args = rgb(0) + ", " + x(1);
-                break;
-            case NodeKind::DielectricDiffuse:
-                args = rgb(0) + ", " + x(1) + ", " + x(2) + ", " + rgb(3) + ", " + x(4);
-                break;
-            case NodeKind::MetalRough:
-                args =
-                    rgb(0) + ", " + x(1) + ", " + x(2) + ", " + x(3) + ", " + rgb(4) + ", " + x(5);
-                break;
-            case NodeKind::RoughDielectric:
-                args = x(0) + ", " + x(1) + ", " + rgb(2) + ", " + x(3);
-                break;
-            default:
-                args = "vec3(0.0)";
-        }
-        return std::string(node_name(n.kind)) + "(" + args + ")";
+    // A scalar input as a float expression; constants as plain literals (readable code).
+    std::string scalar(const NodeInput& in) {
+        if (in.node < 0) return "0.0";
+        const Node& n = m_graph->nodes.at(size_t(in.node));
+        if (n.kind == &node_kind("constant"))
+            return glsl_number(n.value[in.channel < 0 ? 0 : in.channel]);
+        return input(in) + ".x";
     }
+    // An RGB input as a vec3 expression.
+    std::string rgb(const NodeInput& in) {
+        if (in.node >= 0 && m_graph->nodes.at(size_t(in.node)).kind == &node_kind("constant") &&
+            in.channel == kAllChannels) {
+            const Vec4& v = m_graph->nodes[size_t(in.node)].value;
+            return "vec3(" + glsl_number(v.x) + ", " + glsl_number(v.y) + ", " + glsl_number(v.z) +
+                   ")";
+        }
+        return input(in) + ".rgb";
+    }
+    // A generated `float f(SurfacePoint s)` returning the input's x.
+    std::string scalar_function(const NodeInput& in) {
+        const std::string name = m_name + "_f" + std::to_string(m_function_count++);
+        const std::string body = scalar(in);
+        m_helpers += "float " + name + "(SurfacePoint s) {\n    return " + body + ";\n}\n";
+        return name;
+    }
+    Vec2 texel_step(const NodeInput& in) const { return bump_step(*m_graph, in, m_textures); }
+    const scene::Texture* texture(const scene::TextureRef& ref) const {
+        if (!ref.valid() || size_t(ref.texture) >= m_textures.size()) return nullptr;
+        return &m_textures[size_t(ref.texture)];
+    }
+    std::string sampler(const scene::TextureRef& ref) {
+        if (!m_bind_textures) return "";
+        return "texture_" + std::to_string(binding(ref.texture));
+    }
+    void require(std::string_view function) { m_module.require(function); }
+    const MaterialGraph& graph() const { return *m_graph; }
 
+private:
+    std::string value(int index) {
+        if (!m_graph->nodes.at(size_t(index)).kind->value) return "vec4(0.0)";
+        return node(index);
+    }
     int binding(int texture) {
         const auto it = m_bindings.find(texture);
         if (it != m_bindings.end()) return it->second;
@@ -256,72 +181,119 @@ public:
         return slot;
     }
 
-private:
     GlslModule& m_module;
     const std::vector<scene::Texture>& m_textures;
     std::map<int, int>& m_bindings;
     bool m_bind_textures;
+    const MaterialGraph* m_graph = nullptr;
+    std::string m_name;
+    std::string m_helpers;
+    int m_function_count = 0;
 };
+
+// One node as its kind's glsl_call sees it.
+class WriterNodeContext final : public GlslCallContext {
+public:
+    WriterNodeContext(MaterialWriter& writer, const Node& node) : m_writer(writer), m_node(node) {}
+
+    const Node& node() const override { return m_node; }
+    std::string input(int k) override { return m_writer.input(slot(k)); }
+    std::string scalar(int k) override { return m_writer.scalar(slot(k)); }
+    std::string rgb(int k) override { return m_writer.rgb(slot(k)); }
+    std::string scalar_function(int k) override { return m_writer.scalar_function(slot(k)); }
+    Vec2 texel_step(int k) const override { return m_writer.texel_step(slot(k)); }
+    const scene::Texture* texture() const override { return m_writer.texture(m_node.texture); }
+    std::string sampler() override { return m_writer.sampler(m_node.texture); }
+    void require(std::string_view function) override { m_writer.require(function); }
+
+private:
+    const NodeInput& slot(int k) const { return m_node.inputs[size_t(k)]; }
+
+    MaterialWriter& m_writer;
+    const Node& m_node;
+};
+
+std::string MaterialWriter::node(int index) {
+    const Node& n = m_graph->nodes.at(size_t(index));
+    WriterNodeContext context(*this, n);
+    return n.kind->glsl_call(context);
+}
 
 }  // namespace
 
 MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
                                     const std::vector<scene::Texture>& textures,
-                                    uint32_t first_binding, bool bind_textures) {
+                                    uint32_t first_binding, bool bind_textures,
+                                    const std::vector<bool>& used) {
     GlslModule module;
     module.require("Closure");
     module.require("SurfacePoint");
     std::map<int, int> bindings;
     MaterialWriter writer(module, textures, bindings, bind_textures);
+    // Written with a placeholder name so that materials whose code is the same share one
+    // function (real models repeat materials), which is then named after its first material.
+    const std::string placeholder = "material_@";
+    std::vector<std::string> bodies;  // with the placeholder, one per distinct function
+    std::vector<size_t> first_of;     // the first material of each distinct function
+    std::vector<int> function_of(graphs.size(), -1);
     std::string materials;
     for (size_t i = 0; i < graphs.size(); ++i) {
+        if (!used.empty() && (i >= used.size() || !used[i])) continue;
         const MaterialGraph& g = graphs[i];
-        const std::string name = "material_" + std::to_string(i);
+        writer.begin(g, placeholder);
         std::string body;
-        body += "    c = " + writer.closure(g, "s") + ";\n";
-        body += "    e = " +
-                (g.emission >= 0 ? writer.value(g, g.emission, "s") + ".rgb" : "vec3(0.0)") + ";\n";
-        std::string helper;
-        if (g.normal < 0) {
+        if (g.closure >= 0 && g.nodes[size_t(g.closure)].kind->closure) {
+            body += "    c = " + writer.node(g.closure) + ";\n";
+        } else {
+            module.require("lambertian");
+            body += "    c = lambertian(vec3(0.0));\n";
+        }
+        body +=
+            "    e = " + (g.emission >= 0 ? writer.node(g.emission) + ".rgb" : "vec3(0.0)") + ";\n";
+        if (g.normal < 0 || !g.nodes[size_t(g.normal)].kind->normal) {
             body += "    n = s.n;\n";
         } else if (!bind_textures && reads_texture(g, g.normal)) {
             // The interpolated normal stays: the pass that binds the textures maps it.
             body += "    n = s.n;  // normal from an unbound texture\n";
         } else {
-            const Node& nn = g.nodes[size_t(g.normal)];
-            module.require(node_name(nn.kind));
-            if (nn.kind == NodeKind::NormalMap) {
-                body += "    n = normal_map(" + writer.rgb(g, nn.inputs[0], "s") + ", " +
-                        number(nn.value.x) + ", s);\n";
-            } else {
-                // The height at (u, v) and one step along u and v (graph_eval.cpp).
-                const Vec2 step = bump_step(g, nn.inputs[0], textures);
-                helper = "float " + name + "_height(SurfacePoint s) {\n    return " +
-                         writer.scalar(g, nn.inputs[0], "s") + ";\n}\n";
-                body += "    SurfacePoint su = s;\n    su.uv0.x += " + number(step.x) +
-                        ";\n    su.uv1.x += " + number(step.x) + ";\n";
-                body += "    SurfacePoint sv = s;\n    sv.uv0.y += " + number(step.y) +
-                        ";\n    sv.uv1.y += " + number(step.y) + ";\n";
-                body += "    n = bump_map(" + name + "_height(s), " + name + "_height(su), " +
-                        name + "_height(sv), " + number(step.x) + ", " + number(step.y) + ", " +
-                        number(nn.value.x) + ", s);\n";
-            }
+            body += "    n = " + writer.node(g.normal) + ";\n";
         }
-        materials += "// " + name + "\n" + helper + "void " + name +
-                     "(SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n" + body + "}\n";
+        const std::string code = writer.helpers() + "void " + placeholder +
+                                 "(SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n" +
+                                 body + "}\n";
+        const auto same = std::find(bodies.begin(), bodies.end(), code);
+        if (same != bodies.end()) {
+            function_of[i] = int(same - bodies.begin());
+            continue;
+        }
+        function_of[i] = int(bodies.size());
+        bodies.push_back(code);
+        first_of.push_back(i);
+        const std::string name = "material_" + std::to_string(i);
+        std::string named = code;
+        for (size_t at = named.find(placeholder); at != std::string::npos;
+             at = named.find(placeholder, at + name.size()))
+            named.replace(at, placeholder.size(), name);
+        materials += "// " + name + "\n" + named;
     }
+    const auto function_name = [&](int f) {
+        return "material_" + std::to_string(first_of[size_t(f)]);
+    };
+    // Materials that share the default's function, and unused ones, take the default branch.
+    const int fallback = bodies.empty() ? -1 : 0;
     std::string dispatch =
         "void resolve_material(uint m, SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n"
         "    switch (m) {\n";
-    for (size_t i = 1; i < graphs.size(); ++i) {
-        dispatch += "        case " + std::to_string(i) + "u: material_" + std::to_string(i) +
+    for (size_t i = 0; i < graphs.size(); ++i) {
+        if (function_of[i] < 0 || function_of[i] == fallback) continue;
+        dispatch += "        case " + std::to_string(i) + "u: " + function_name(function_of[i]) +
                     "(s, c, e, n); return;\n";
     }
     dispatch += "        default: " +
-                std::string(graphs.empty() ? "c = lambertian(vec3(0.0)); e = vec3(0.0); n = s.n;"
-                                           : "material_0(s, c, e, n);") +
+                (fallback < 0 ? std::string("c = lambertian(vec3(0.0)); e = vec3(0.0); n = s.n;")
+                              : function_name(fallback) + "(s, c, e, n);") +
                 " return;\n    }\n}\n";
-    if (graphs.empty()) module.require("lambertian");
+    if (bodies.empty()) module.require("lambertian");
 
     MaterialCode out;
     out.textures.resize(bindings.size());

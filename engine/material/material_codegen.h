@@ -9,7 +9,6 @@
 #include <string_view>
 #include <vector>
 
-#include "engine/material/node_eval.h"
 #include "engine/material/node_graph.h"
 
 namespace mvpl::material {
@@ -27,9 +26,8 @@ private:
     std::vector<std::string> m_order;
 };
 
-// The closure types a closure node kind can produce at run time (e.g. a dielectric-diffuse node
-// with a specular texture can be Lambertian where the texture is 0).
-std::array<bool, kClosureTypeCount> possible_closure_types(NodeKind kind);
+// The closure types a closure node kind can produce at run time (NodeKind::closure_types).
+std::array<bool, kClosureTypeCount> possible_closure_types(const NodeKind& kind);
 std::string_view closure_eval_name(ClosureType type);
 
 struct MaterialCode {
@@ -37,7 +35,7 @@ struct MaterialCode {
     // binding first_binding + position in `textures`), empty without textures.
     std::string bindings;
     // The node functions and `void material_N(SurfacePoint s, out Closure c, out vec3 e,
-    // out vec3 n)` for every material, then `resolve_material(uint m, …)`.
+    // out vec3 n)` for every distinct used material, then `resolve_material(uint m, …)`.
     std::string functions;
     std::vector<int> textures;                // scene texture indices, in binding order
     std::vector<std::string> node_functions;  // what `functions` emitted, in order
@@ -45,9 +43,14 @@ struct MaterialCode {
 
 // GLSL for the G-buffer. first_binding: the binding of the first texture. bind_textures false:
 // image textures read as their factor alone (for a pipeline that has no texture bindings).
+// used (empty: all): the materials that something is drawn with; the others get no code, their
+// index the default branch. Materials whose code is the same share one function, named
+// material_I after the first of them (I its index), so that code grows with the distinct
+// materials a scene draws, not with the materials it lists.
 MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
                                     const std::vector<scene::Texture>& textures,
-                                    uint32_t first_binding, bool bind_textures = true);
+                                    uint32_t first_binding, bool bind_textures = true,
+                                    const std::vector<bool>& used = {});
 
 // `vec3 closure_eval(Closure c, vec3 n, vec3 wo, vec3 wi)` with a branch per present type, and
 // the functions it needs.

@@ -1,43 +1,19 @@
 #include "engine/material/node_graph.h"
 
+#include <algorithm>
+#include <stdexcept>
+
 namespace mvpl::material {
 
-std::string_view node_name(NodeKind kind) {
-    switch (kind) {
-        case NodeKind::Constant:
-            return "constant";
-        case NodeKind::ImageTexture:
-            return "image_texture";
-        case NodeKind::VertexColor:
-            return "vertex_color";
-        case NodeKind::Mix:
-            return "mix_node";
-        case NodeKind::Emission:
-            return "emission";
-        case NodeKind::NormalMap:
-            return "normal_map";
-        case NodeKind::BumpMap:
-            return "bump_map";
-        case NodeKind::Lambertian:
-            return "lambertian";
-        case NodeKind::GgxConductor:
-            return "ggx_conductor";
-        case NodeKind::DielectricDiffuse:
-            return "dielectric_diffuse";
-        case NodeKind::MetalRough:
-            return "metal_rough";
-        case NodeKind::RoughDielectric:
-            return "rough_dielectric";
-    }
-    return "unknown";
+int MaterialGraph::add(const Node& node) {
+    if (!node.kind) throw std::logic_error("material graph: a node without a kind");
+    nodes.push_back(node);
+    return int(nodes.size()) - 1;
 }
 
-bool is_closure_node(NodeKind kind) {
-    return kind >= NodeKind::Lambertian;
-}
-
-std::array<bool, kNodeKindCount> MaterialGraph::kinds() const {
-    std::array<bool, kNodeKindCount> seen{};
+std::vector<const NodeKind*> MaterialGraph::kinds() const {
+    std::vector<bool> seen_node(nodes.size(), false);
+    std::vector<const NodeKind*> seen;
     std::vector<int> stack;
     for (const int root : {closure, emission, normal}) {
         if (root >= 0) stack.push_back(root);
@@ -45,128 +21,19 @@ std::array<bool, kNodeKindCount> MaterialGraph::kinds() const {
     while (!stack.empty()) {
         const int i = stack.back();
         stack.pop_back();
-        if (i < 0 || size_t(i) >= nodes.size()) continue;
-        seen[size_t(nodes[size_t(i)].kind)] = true;
-        for (const NodeInput& in : nodes[size_t(i)].inputs) {
+        if (i < 0 || size_t(i) >= nodes.size() || seen_node[size_t(i)]) continue;
+        seen_node[size_t(i)] = true;
+        const Node& n = nodes[size_t(i)];
+        if (std::find(seen.begin(), seen.end(), n.kind) == seen.end()) seen.push_back(n.kind);
+        for (const NodeInput& in : n.inputs) {
             if (in.node >= 0) stack.push_back(in.node);
         }
     }
-    return seen;
-}
-
-namespace {
-
-Node constant(const Vec4& v) {
-    Node n;
-    n.kind = NodeKind::Constant;
-    n.value = v;
-    return n;
-}
-
-Node texture(const scene::TextureRef& ref, const Vec4& factor) {
-    Node n;
-    n.kind = NodeKind::ImageTexture;
-    n.texture = ref;
-    n.value = factor;
-    return n;
-}
-
-// One material parameter: the texture channel times the factor, or the factor alone.
-class Builder {
-public:
-    explicit Builder(MaterialGraph& graph) : m_graph(graph) {}
-
-    NodeInput value(const scene::TextureRef& ref, const Vec4& factor, int channel) {
-        if (ref.valid()) return {m_graph.add(texture(ref, factor)), channel};
-        return {m_graph.add(constant(factor)), channel};
+    std::vector<const NodeKind*> ordered;
+    for (const NodeKind* kind : node_kinds()) {
+        if (std::find(seen.begin(), seen.end(), kind) != seen.end()) ordered.push_back(kind);
     }
-    NodeInput scalar(float v) { return {m_graph.add(constant(Vec4(v))), 0}; }
-    bool is_constant(const NodeInput& in, float v) const {
-        const Node& n = m_graph.nodes[size_t(in.node)];
-        return n.kind == NodeKind::Constant && n.value[in.channel < 0 ? 0 : in.channel] == v;
-    }
-
-private:
-    MaterialGraph& m_graph;
-};
-
-}  // namespace
-
-MaterialGraph graph_from_gltf(const scene::Material& m) {
-    MaterialGraph g;
-    g.double_sided = m.double_sided;
-    Builder b(g);
-    NodeInput base = b.value(m.base_color_texture, Vec4(m.base_color, 1.0f), kAllChannels);
-    // metallicRoughnessTexture: roughness in G, metallic in B; one texture node serves both.
-    NodeInput metallic;
-    NodeInput roughness;
-    if (m.metallic_roughness_texture.valid()) {
-        const int t =
-            g.add(texture(m.metallic_roughness_texture, Vec4(1.0f, m.roughness, m.metallic, 1.0f)));
-        metallic = {t, 2};
-        roughness = {t, 1};
-    } else {
-        metallic = b.scalar(m.metallic);
-        roughness = b.scalar(m.roughness);
-    }
-    // KHR_materials_specular: strength in the texture's A channel.
-    const NodeInput specular =
-        m.specular_texture.valid()
-            ? b.value(m.specular_texture, Vec4(1.0f, 1.0f, 1.0f, m.specular), 3)
-            : b.scalar(m.specular);
-    const NodeInput specular_color =
-        b.value(m.specular_color_texture, Vec4(m.specular_color, 1.0f), kAllChannels);
-    const NodeInput ior = b.scalar(m.ior);
-
-    // KHR_materials_transmission as the reflection lobe: the base is scaled by (1 − t).
-    const NodeInput transmission = b.value(m.transmission_texture, Vec4(m.transmission), 0);
-    const bool opaque = b.is_constant(transmission, 0.0f);
-    const bool clear = b.is_constant(transmission, 1.0f);
-    if (!opaque && !clear) {
-        Node mix;
-        mix.kind = NodeKind::Mix;
-        mix.inputs[0] = base;
-        mix.inputs[1] = {g.add(constant(Vec4(0.0f, 0.0f, 0.0f, 1.0f))), kAllChannels};
-        mix.inputs[2] = transmission;
-        base = {g.add(mix), kAllChannels};
-    }
-
-    Node closure;
-    const bool metal_const = g.nodes[size_t(metallic.node)].kind == NodeKind::Constant;
-    if (metal_const && m.metallic <= 0.0f && clear) {
-        closure.kind = NodeKind::RoughDielectric;
-        closure.inputs = {roughness, specular, specular_color, ior, NodeInput{}, NodeInput{}};
-    } else if (metal_const && m.metallic <= 0.0f && b.is_constant(specular, 0.0f)) {
-        closure.kind = NodeKind::Lambertian;
-        closure.inputs[0] = base;
-    } else if (metal_const && m.metallic >= 1.0f) {
-        closure.kind = NodeKind::GgxConductor;
-        closure.inputs[0] = base;
-        closure.inputs[1] = roughness;
-    } else if (metal_const && m.metallic <= 0.0f) {
-        closure.kind = NodeKind::DielectricDiffuse;
-        closure.inputs = {base, roughness, specular, specular_color, ior, NodeInput{}};
-    } else {
-        closure.kind = NodeKind::MetalRough;
-        closure.inputs = {base, metallic, roughness, specular, specular_color, ior};
-    }
-    g.closure = g.add(closure);
-
-    if (m.is_emissive() || (m.emissive_texture.valid() && max_component(m.emission()) > 0.0f)) {
-        Node e;
-        e.kind = NodeKind::Emission;
-        e.value = Vec4(m.emissive_strength);
-        e.inputs[0] = b.value(m.emissive_texture, Vec4(m.emissive, 1.0f), kAllChannels);
-        g.emission = g.add(e);
-    }
-    if (m.normal_texture.valid()) {
-        Node n;
-        n.kind = NodeKind::NormalMap;
-        n.value = Vec4(m.normal_scale);
-        n.inputs[0] = b.value(m.normal_texture, Vec4(1.0f), kAllChannels);
-        g.normal = g.add(n);
-    }
-    return g;
+    return ordered;
 }
 
 }  // namespace mvpl::material

@@ -1,39 +1,18 @@
 #pragma once
-// The material node graph (DESIGN.md, "Shader chain"): every material is a small DAG of typed
-// nodes. Value nodes (constant, image texture, vertex colour, mix, emission) produce a vec4;
-// normal nodes (normal map, bump map) produce the shading normal; closure nodes (Lambertian, GGX
-// conductor, dielectric over diffuse, glTF metal-rough, rough dielectric) produce the
-// ClosureParams that Bsdf, the VPLs and the G-buffer carry. Each node kind has one C++ evaluator
-// (node_eval.h) and one GLSL generator (glsl_library.h, material_codegen.h).
+// The material node graph (DESIGN.md, "Shader chain"): every material is a small DAG of nodes of
+// the kinds that node_kind.h registers. Value nodes (constant, image texture, vertex colour, mix,
+// emission) produce a vec4; normal nodes (normal map, bump map) produce the shading normal;
+// closure nodes (Lambertian, GGX conductor, dielectric over diffuse, glTF metal-rough, rough
+// dielectric) produce the ClosureParams that Bsdf, the VPLs and the G-buffer carry. The CPU
+// (graph_eval.h) and the GPU (material_codegen.h) evaluate the same graphs.
 #include <array>
-#include <cstdint>
-#include <string_view>
 #include <vector>
 
 #include "engine/core/math.h"
+#include "engine/material/node_kind.h"
 #include "engine/scene/scene.h"
 
 namespace mvpl::material {
-
-enum class NodeKind : uint8_t {
-    Constant,
-    ImageTexture,
-    VertexColor,
-    Mix,
-    Emission,
-    NormalMap,
-    BumpMap,
-    Lambertian,
-    GgxConductor,
-    DielectricDiffuse,
-    MetalRough,
-    RoughDielectric,
-};
-inline constexpr int kNodeKindCount = 12;
-
-// The node's name as the generated GLSL calls it (one function per node kind).
-std::string_view node_name(NodeKind kind);
-bool is_closure_node(NodeKind kind);
 
 // Which part of an input's vec4 a node reads: all four, or one component.
 inline constexpr int kAllChannels = -1;
@@ -43,20 +22,12 @@ struct NodeInput {
     int channel = kAllChannels;
 };
 
-// Inputs per kind (unused slots stay -1):
-//   Mix:               a, b, factor (scalar)
-//   Emission:          colour (rgb); value.x = strength
-//   NormalMap:         texel (rgb); value.x = scale (glTF normalTexture.scale)
-//   BumpMap:           height (scalar); value.x = scale (height units per uv unit)
-//   Lambertian:        base colour
-//   GgxConductor:      f0 (rgb), roughness
-//   DielectricDiffuse: base colour, roughness, specular, specular colour, ior
-//   MetalRough:        base colour, metallic, roughness, specular, specular colour, ior
-//   RoughDielectric:   roughness, specular, specular colour, ior
+// A node's inputs are the slots its kind names (NodeKind::inputs); unused slots stay -1.
 // Constant: value. ImageTexture: texture (the reference, KHR_texture_transform included) and
 // value = the factor multiplied into the texel (glTF factors). VertexColor: value multiplied in.
+// Emission, NormalMap, BumpMap: value.x is the strength or scale.
 struct Node {
-    NodeKind kind = NodeKind::Constant;
+    const NodeKind* kind = nullptr;  // always set: MaterialGraph::add refuses a node without
     Vec4 value{1.0f};
     scene::TextureRef texture;
     std::array<NodeInput, 6> inputs{};
@@ -66,15 +37,13 @@ struct MaterialGraph {
     std::vector<Node> nodes;
     int closure = -1;   // a closure node; -1 never happens for graphs of graph_from_gltf
     int emission = -1;  // an Emission node or -1 (not emissive)
-    int normal = -1;    // a NormalMap or BumpMap node, or -1 (the interpolated normal)
+    int normal = -1;    // a normal node (NormalMap, BumpMap) or -1: the interpolated normal
     bool double_sided = false;
 
-    int add(const Node& node) {
-        nodes.push_back(node);
-        return int(nodes.size()) - 1;
-    }
-    // The kinds that occur, including those only reachable from the outputs.
-    std::array<bool, kNodeKindCount> kinds() const;
+    // Throws std::logic_error for a node without a kind.
+    int add(const Node& node);
+    // The distinct kinds reachable from the outputs, in registration order.
+    std::vector<const NodeKind*> kinds() const;
 };
 
 // A glTF metallic-roughness material as a graph. The closure node is the narrowest that

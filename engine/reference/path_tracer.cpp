@@ -7,9 +7,9 @@
 #include "engine/core/progress.h"
 #include "engine/core/sampling.h"
 #include "engine/core/timer.h"
-#include "engine/reference/shading_point.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/interaction.h"
+#include "engine/trace/shading_point.h"
 
 namespace mvpl::reference {
 
@@ -42,7 +42,7 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth,
         const Vec3 wo_world = -glm::normalize(ray.direction);
 
         // Emission, weighted against the light-sampling strategy that could have found it.
-        if (m_scene.materials[si.material].is_emissive()) {
+        if (m_accel.materials().is_emissive(si.material)) {
             const Rgb le =
                 m_lights.emitted_radiance(si.mesh, si.triangle, hit->barycentric, wo_world);
             if (!is_black(le)) {
@@ -57,7 +57,7 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth,
         }
         if (!unlimited && depth >= max_depth) break;
 
-        const ShadingPoint sp = make_shading_point(m_scene, si);
+        const trace::ShadingPoint sp = trace::make_shading_point(m_accel.materials(), si);
         const Vec3 wo = sp.frame.to_local(wo_world);
         if (wo.z <= 0.0f) break;  // seen from below the shading surface: black
 

@@ -1,6 +1,6 @@
 #include "engine/render/gpu_vpl.h"
 
-#include "engine/material/node_eval.h"
+#include "engine/material/closure.h"
 #include "engine/render/directional_frame.h"
 
 namespace mvpl::render {

@@ -1,7 +1,6 @@
 #include "engine/render/scene_geometry.h"
 
 #include "engine/gpu/gpu_error.h"
-#include "engine/material/material_eval.h"
 
 namespace mvpl::render {
 namespace {
@@ -17,13 +16,12 @@ void store(float out[3], const Vec3& v) {
 SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
     : m_features(scene_features(scene, ShaderOptions{})), m_textures(scene.textures) {
     for (const scene::Material& m : scene.materials) {
-        m_materials.push_back({material::clamp_to_valid_ranges(material::factor_closure(m)),
-                               m.emission(), m.double_sided});
+        m_materials.push_back({m.emission(), m.double_sided});
         m_graphs.push_back(material::graph_from_gltf(m));
     }
     if (m_materials.empty()) {
         m_materials.push_back({});
-        // The same closure as GeometryMaterial's default ClosureParams.
+        // The default ClosureParams, for a scene without materials.
         scene::Material fallback;
         const material::ClosureParams c;
         fallback.base_color = c.base_color;

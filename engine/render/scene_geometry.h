@@ -29,9 +29,8 @@ struct GeometryVertex {
 };
 static_assert(sizeof(GeometryVertex) == 68);
 
-// A material's factors (textures not applied), for tests and the host side.
+// What the host side draws a material with (the GPU reads the rest from the material graph).
 struct GeometryMaterial {
-    material::ClosureParams closure;  // clamped to the glTF ranges, as Bsdf does
     Rgb emission{0.0f};
     bool double_sided = false;
 };

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "engine/light/vpl.h"
-#include "engine/material/node_eval.h"
+#include "engine/material/closure.h"
 #include "engine/material/node_graph.h"
 #include "engine/scene/scene.h"
 

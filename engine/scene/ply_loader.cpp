@@ -312,8 +312,8 @@ Scene load_ply(const std::string& path) {
                 }
             }
             if (is_vertex) {
-                const Vec3 p(float(values[size_t(xyz[0])]), float(values[size_t(xyz[1])]),
-                             float(values[size_t(xyz[2])]));
+                const Vec3 p = Vec3(float(values[size_t(xyz[0])]), float(values[size_t(xyz[1])]),
+                                    float(values[size_t(xyz[2])]));
                 if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
                     throw InputError(path, "vertex " + std::to_string(n) +
                                                " has a non-finite position (NaN, infinity or "

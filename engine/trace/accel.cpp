@@ -29,7 +29,7 @@ static void embree_error(void* user, RTCError code, const char* message) {
                       (message ? message : ""));
 }
 
-Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()) {
+Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_materials(scene) {
     m_impl->device = rtcNewDevice(nullptr);
     if (!m_impl->device) throw std::runtime_error("cannot create an Embree device");
     rtcSetDeviceErrorFunction(m_impl->device, embree_error, &m_impl->error);

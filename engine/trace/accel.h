@@ -1,10 +1,13 @@
 #pragma once
-// Embree 3 BVH over every triangle of a scene. Embree's headers stay in accel.cpp.
+// Embree 3 BVH over every triangle of a scene, with the scene's material graphs: what a ray
+// hits and what is there to shade (pbrt's aggregate of primitives with their materials).
+// Embree's headers stay in accel.cpp.
 #include <cstdint>
 #include <memory>
 #include <optional>
 
 #include "engine/core/math.h"
+#include "engine/material/scene_materials.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/ray.h"
 
@@ -30,9 +33,13 @@ public:
     // Rays traced so far (closest-hit and shadow), for Mrays/s reports.
     uint64_t ray_count() const;
 
+    // The graphs that shading points at this BVH's hits evaluate (make_shading_point).
+    const material::SceneMaterials& materials() const { return m_materials; }
+
 private:
     struct Impl;
     std::unique_ptr<Impl> m_impl;
+    material::SceneMaterials m_materials;
 };
 
 }  // namespace mvpl::trace

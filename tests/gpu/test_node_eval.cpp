@@ -1,6 +1,7 @@
 // CPU ≡ GPU for every material node and closure type: a compute shader assembled by the material
 // code generator (GlslModule) evaluates each node's GLSL function at 12 000 random inputs, and the
-// node's C++ evaluator (node_eval.h, the closures' eval functions) must agree.
+// node's C++ evaluator (NodeKind's evaluator from nodes/*.cpp, the closures' eval functions) must
+// agree.
 //
 // Tolerance: |gpu − cpu| ≤ 1e-4 · |cpu| + 1e-6. The relative bound is the acceptance criterion;
 // the absolute 1e-6 covers values that cancel to ~0 (a BRDF term times a Schlick weight ~1e-10
@@ -27,7 +28,7 @@
 #include "engine/material/dielectric_diffuse.h"
 #include "engine/material/lambertian.h"
 #include "engine/material/material_codegen.h"
-#include "engine/material/node_eval.h"
+#include "engine/material/node_graph.h"
 #include "tests/gpu/gpu_test.h"
 
 namespace mvpl::gpu {
@@ -156,6 +157,54 @@ Record make_record(std::mt19937& rng) {
     return r;
 }
 
+// A node's C++ evaluator on given input values, as the graph would have evaluated them: `inputs`
+// at the point, and for bump mapping the height one step along u (`along_u`) and along v.
+class GivenInputs final : public NodeContext {
+public:
+    GivenInputs(const Node& node, const SurfacePoint& point, std::vector<Vec4> inputs,
+                const scene::Texture* texture = nullptr)
+        : m_node(node), m_point(point), m_inputs(std::move(inputs)), m_texture(texture) {}
+    void set_bump(const Vec2& step, const Vec4& along_u, const Vec4& along_v) {
+        m_step = step;
+        m_along_u = along_u;
+        m_along_v = along_v;
+    }
+
+    const Node& node() const override { return m_node; }
+    const SurfacePoint& point() const override { return m_point; }
+    Vec4 input_at(int k, const SurfacePoint& p) const override {
+        if (p.uv0.x > m_point.uv0.x) return m_along_u;
+        if (p.uv0.y > m_point.uv0.y) return m_along_v;
+        return size_t(k) < m_inputs.size() ? m_inputs[size_t(k)] : Vec4(0.0f);
+    }
+    Vec2 texel_step(int) const override { return m_step; }
+    const scene::Texture* texture() const override { return m_texture; }
+
+private:
+    const Node& m_node;
+    const SurfacePoint& m_point;
+    std::vector<Vec4> m_inputs;
+    const scene::Texture* m_texture;
+    Vec2 m_step{0.0f};
+    Vec4 m_along_u{0.0f};
+    Vec4 m_along_v{0.0f};
+};
+
+Node node_of(std::string_view kind, const Vec4& value = Vec4(1.0f)) {
+    Node n;
+    n.kind = &node_kind(kind);
+    n.value = value;
+    return n;
+}
+
+Vec4 scalar(float v) {
+    return Vec4(v);
+}
+
+Vec4 colour(const Vec3& v) {
+    return Vec4(v, 1.0f);
+}
+
 // The C++ evaluators on the same record.
 std::vector<float> cpu_eval(const Record& r, const scene::Texture& base_texture) {
     const float* x = r.in;
@@ -172,31 +221,52 @@ std::vector<float> cpu_eval(const Record& r, const scene::Texture& base_texture)
     t.wrap_t = scene::Wrap(int(x[8]));
     // GLSL filter 0 is nearest (material_codegen.cpp).
     t.filter = int(x[9]) == 0 ? scene::Filter::Nearest : scene::Filter::Linear;
-    scene::TextureRef ref;
-    ref.texture = 0;
-    ref.offset = v2(2);
-    ref.rotation = x[4];
-    ref.scale = v2(5);
-    out(0, image_texture(t, ref, v4(10), v2(0)), 4);
-    out(4, vertex_color(v4(10), v4(14)), 4);
-    out(8, mix_node(v4(18), v4(22), x[26]), 4);
-    out(12, emission(v4(14), x[27]), 4);
+    Node texture = node_of("image_texture", v4(10));
+    texture.texture.texture = 0;
+    texture.texture.offset = v2(2);
+    texture.texture.rotation = x[4];
+    texture.texture.scale = v2(5);
+    SurfacePoint at_uv;
+    at_uv.uv0 = v2(0);
+    out(0, texture.kind->value(GivenInputs(texture, at_uv, {}, &t)), 4);
+    SurfacePoint coloured;
+    coloured.color = v4(14);
+    const Node vertex = node_of("vertex_color", v4(10));
+    out(4, vertex.kind->value(GivenInputs(vertex, coloured, {})), 4);
+    const SurfacePoint plain;
+    const Node mix = node_of("mix_node");
+    out(8, mix.kind->value(GivenInputs(mix, plain, {v4(18), v4(22), scalar(x[26])})), 4);
+    const Node emission = node_of("emission", Vec4(x[27]));
+    out(12, emission.kind->value(GivenInputs(emission, plain, {v4(14)})), 4);
     const Frame frame(v3(57), v3(60), v3(28));
-    out(16, normal_map(v3(32), x[31], frame), 3);
-    out(19, bump_map(x[35], x[36], x[37], x[38], x[39], x[31], frame), 3);
+    SurfacePoint framed;
+    framed.frame = frame;
+    const Node normal = node_of("normal_map", Vec4(x[31]));
+    out(16, normal.kind->normal(GivenInputs(normal, framed, {colour(v3(32))})), 3);
+    const Node bump = node_of("bump_map", Vec4(x[31]));
+    GivenInputs heights(bump, framed, {scalar(x[35])});
+    heights.set_bump(v2(38), scalar(x[36]), scalar(x[37]));
+    out(19, bump.kind->normal(heights), 3);
     const int kind = int(x[50]);
-    const Rgb base(v3(40));
+    const Vec4 base = colour(v3(40));
+    const Vec4 spec = colour(v3(46));
     ClosureParams c;
+    const auto closure = [&](std::string_view name, std::vector<Vec4> inputs) {
+        const Node n = node_of(name);
+        return n.kind->closure(GivenInputs(n, plain, std::move(inputs)));
+    };
     if (kind == 0)
-        c = lambertian(base);
+        c = closure("lambertian", {base});
     else if (kind == 1)
-        c = ggx_conductor(base, x[44]);
+        c = closure("ggx_conductor", {base, scalar(x[44])});
     else if (kind == 2)
-        c = dielectric_diffuse(base, x[44], x[45], Rgb(v3(46)), x[49]);
+        c = closure("dielectric_diffuse",
+                    {base, scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
     else if (kind == 3)
-        c = metal_rough(base, x[43], x[44], x[45], Rgb(v3(46)), x[49]);
+        c = closure("metal_rough",
+                    {base, scalar(x[43]), scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
     else
-        c = rough_dielectric(x[44], x[45], Rgb(v3(46)), x[49]);
+        c = closure("rough_dielectric", {scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
     y[22] = float(uint32_t(closure_type(c)));
     out(23, c.base_color, 3);
     y[26] = c.metallic;

@@ -1,12 +1,41 @@
-// resolve_closure, resolve_emission and apply_normal_map: factors, texture channels as glTF
-// assigns them, and the normal-map fallbacks. Textures here are 1×1 (or 2×1 with nearest
-// filtering) so the results do not depend on filtering details of scene::Texture.
+// A glTF material through its graph (graph_from_gltf, then graph_eval.h, as every CPU caller
+// evaluates it): factors, texture channels as glTF assigns them, and the normal-map fallbacks.
+// Textures here are 1×1 (or 2×1 with nearest filtering) so the results do not depend on
+// filtering details of scene::Texture.
 #include <gtest/gtest.h>
 
-#include "engine/material/material_eval.h"
+#include "engine/material/graph_eval.h"
 
 namespace mvpl::material {
 namespace {
+
+struct SurfaceUv {
+    Vec2 uv0{0.0f};
+    Vec2 uv1{0.0f};
+};
+
+SurfacePoint at(const SurfaceUv& uv, const Frame& frame = Frame()) {
+    SurfacePoint p;
+    p.uv0 = uv.uv0;
+    p.uv1 = uv.uv1;
+    p.frame = frame;
+    return p;
+}
+
+ClosureParams resolve_closure(const scene::Material& m, const std::vector<scene::Texture>& t,
+                              const SurfaceUv& uv) {
+    return evaluate_closure(graph_from_gltf(m), t, at(uv));
+}
+
+Rgb resolve_emission(const scene::Material& m, const std::vector<scene::Texture>& t,
+                     const SurfaceUv& uv) {
+    return evaluate_emission(graph_from_gltf(m), t, at(uv));
+}
+
+Vec3 apply_normal_map(const scene::Material& m, const std::vector<scene::Texture>& t,
+                      const SurfaceUv& uv, const Frame& frame) {
+    return evaluate_normal(graph_from_gltf(m), t, at(uv, frame));
+}
 
 scene::Texture constant_texture(const Vec4& texel) {
     scene::Texture t;

@@ -1,6 +1,6 @@
-// The material graph of a glTF material evaluates to what material_eval.h resolves (the CPU
-// path tracer's and the VPLs' closures), node kinds are the narrowest that represent the
-// material, and the GLSL module emits each function once, dependencies first.
+// The material graph of a glTF material evaluates to what the glTF specification's formulas give
+// (gltf_reference.h, an implementation without the graph), node kinds are the narrowest that
+// represent the material, and the GLSL module emits each function once, dependencies first.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -9,10 +9,15 @@
 #include "engine/material/bsdf.h"
 #include "engine/material/graph_eval.h"
 #include "engine/material/material_codegen.h"
-#include "engine/material/material_eval.h"
+#include "tests/material/gltf_reference.h"
 
 namespace mvpl::material {
 namespace {
+
+using testing::apply_normal_map;
+using testing::resolve_closure;
+using testing::resolve_emission;
+using testing::SurfaceUv;
 
 scene::Texture random_texture(std::mt19937& rng) {
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
@@ -117,26 +122,27 @@ TEST(MaterialGraph, PicksTheNarrowestClosureNode) {
     m.metallic = 0.0f;
     m.specular = 0.0f;
     EXPECT_EQ(graph_from_gltf(m).nodes[size_t(graph_from_gltf(m).closure)].kind,
-              NodeKind::Lambertian);
+              &node_kind("lambertian"));
     m.specular = 1.0f;
     MaterialGraph g = graph_from_gltf(m);
-    EXPECT_EQ(g.nodes[size_t(g.closure)].kind, NodeKind::DielectricDiffuse);
+    EXPECT_EQ(g.nodes[size_t(g.closure)].kind, &node_kind("dielectric_diffuse"));
     m.metallic = 1.0f;
     g = graph_from_gltf(m);
-    EXPECT_EQ(g.nodes[size_t(g.closure)].kind, NodeKind::GgxConductor);
+    EXPECT_EQ(g.nodes[size_t(g.closure)].kind, &node_kind("ggx_conductor"));
     m.metallic = 0.5f;
     g = graph_from_gltf(m);
-    EXPECT_EQ(g.nodes[size_t(g.closure)].kind, NodeKind::MetalRough);
+    EXPECT_EQ(g.nodes[size_t(g.closure)].kind, &node_kind("metal_rough"));
     m.metallic = 0.0f;
     m.transmission = 1.0f;
     g = graph_from_gltf(m);
-    EXPECT_EQ(g.nodes[size_t(g.closure)].kind, NodeKind::RoughDielectric);
+    EXPECT_EQ(g.nodes[size_t(g.closure)].kind, &node_kind("rough_dielectric"));
     // The reflection lobe alone: a black base.
     EXPECT_EQ(evaluate_closure(g, {}, SurfacePoint{}).base_color, Rgb(0.0f));
     m.transmission = 0.25f;
     m.base_color = Rgb(0.8f);
     g = graph_from_gltf(m);
-    EXPECT_TRUE(g.kinds()[size_t(NodeKind::Mix)]);
+    const std::vector<const NodeKind*> kinds = g.kinds();
+    EXPECT_TRUE(std::count(kinds.begin(), kinds.end(), &node_kind("mix_node")) == 1);
     EXPECT_NEAR(evaluate_closure(g, {}, SurfacePoint{}).base_color.r, 0.6f, 1e-6f);
 }
 
@@ -151,11 +157,11 @@ TEST(MaterialGraph, BumpMapTiltsAgainstTheHeightGradient) {
         ramp.texels.emplace_back(float(i) / 4.0f);
     MaterialGraph g;
     Node t;
-    t.kind = NodeKind::ImageTexture;
+    t.kind = &node_kind("image_texture");
     t.texture.texture = 0;
     const int height = g.add(t);
     Node bump;
-    bump.kind = NodeKind::BumpMap;
+    bump.kind = &node_kind("bump_map");
     bump.value = Vec4(0.5f);
     bump.inputs[0] = {height, 0};
     g.normal = g.add(bump);
@@ -204,6 +210,30 @@ TEST(MaterialCodegen, OneFunctionPerMaterialNamedAfterItsNodes) {
     EXPECT_EQ(b.bindings, "layout(set = 0, binding = 3) uniform sampler2D texture_0;\n");
     EXPECT_EQ(b.textures, std::vector<int>{0});
     EXPECT_NE(b.functions.find("image_texture(texture_0, s.uv0"), std::string::npos);
+}
+
+// Code grows with the distinct materials drawn: a repeated material shares its twin's function
+// (and dispatches through it), an unused one gets none.
+TEST(MaterialCodegen, SharesIdenticalMaterialsAndSkipsUnusedOnes) {
+    scene::Material grey;
+    grey.metallic = 0.0f;
+    grey.specular = 0.0f;
+    grey.base_color = Rgb(0.5f);
+    scene::Material dark = grey;
+    dark.base_color = Rgb(0.2f);
+    const std::vector<MaterialGraph> graphs = {graph_from_gltf(grey), graph_from_gltf(dark),
+                                               graph_from_gltf(grey)};
+    const MaterialCode all = generate_material_code(graphs, {}, 0);
+    EXPECT_NE(all.functions.find("void material_0("), std::string::npos);
+    EXPECT_NE(all.functions.find("void material_1("), std::string::npos);
+    EXPECT_EQ(all.functions.find("void material_2("), std::string::npos);
+    EXPECT_NE(all.functions.find("case 1u: material_1("), std::string::npos);
+    EXPECT_EQ(all.functions.find("case 2u:"), std::string::npos);  // material_0's, the default
+    const MaterialCode some = generate_material_code(graphs, {}, 0, true, {false, true, true});
+    EXPECT_EQ(some.functions.find("void material_0("), std::string::npos);
+    EXPECT_NE(some.functions.find("void material_1("), std::string::npos);
+    EXPECT_NE(some.functions.find("case 2u: material_2("), std::string::npos);
+    EXPECT_NE(some.functions.find("default: material_1("), std::string::npos);
 }
 
 }  // namespace

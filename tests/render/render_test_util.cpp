@@ -1,6 +1,6 @@
 #include "tests/render/render_test_util.h"
 
-#include "engine/material/material_eval.h"
+#include "engine/material/graph_eval.h"
 
 #include <glm/glm.hpp>
 
@@ -122,7 +122,8 @@ Rgb cpu_contribution(const light::Vpl& vpl, const Vec3& p, const Vec3& n,
 }
 
 material::ClosureParams closure_of(const scene::Material& m) {
-    return material::clamp_to_valid_ranges(material::factor_closure(m));
+    // The graph with no texture bound reads each texture as its factor.
+    return material::evaluate_closure(material::graph_from_gltf(m), {}, material::SurfacePoint{});
 }
 
 }  // namespace mvpl::render::testing

@@ -94,11 +94,8 @@ TEST(ShaderProgram, ATexturedGlossyMaterialAddsExactlyItsNodes) {
     material::GlslModule alone;
     alone.require("Closure");
     alone.require("SurfacePoint");
-    const auto kinds = g.kinds();
-    for (int k = 0; k < material::kNodeKindCount; ++k) {
-        if (kinds[size_t(k)] && material::NodeKind(k) != material::NodeKind::Constant) {
-            alone.require(material::node_name(material::NodeKind(k)));
-        }
+    for (const material::NodeKind* kind : g.kinds()) {
+        if (kind != &material::node_kind("constant")) alone.require(kind->name);
     }
     const std::set<std::string> b = as_set(before.node_functions);
     const std::set<std::string> a = as_set(after.node_functions);

@@ -1,8 +1,8 @@
 // The shader chain end to end on a textured, normal-mapped, glossy scene (assets/textured, made
 // by tools/make_textured_scene.py): the GPU's G-buffer resolves the material graphs with their
 // textures and normal map, so the GPU image agrees with the CPU oracle (same VPLs, exact
-// visibility, material_eval.h on the CPU), and with the path tracer within the bias that
-// clamping explains.
+// visibility, the same material graphs evaluated on the CPU), and with the path tracer within the
+// bias that clamping explains.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -12,15 +12,14 @@
 #include "engine/core/image_metrics.h"
 #include "engine/gpu/command_list.h"
 #include "engine/light/light_sampler.h"
-#include "engine/material/material_eval.h"
 #include "engine/reference/path_tracer.h"
-#include "engine/reference/shading_point.h"
 #include "engine/render/g_buffer_pass.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
 #include "engine/trace/interaction.h"
+#include "engine/trace/shading_point.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/support/vpl_render.h"
 
@@ -32,7 +31,7 @@ using TexturedSceneTest = gpu::testing::GpuTest;
 const char* const kScene = MVPL_ASSETS_DIR "/textured/textured.gltf";
 
 // The G-buffer's closure and shading normal at each pixel against the CPU's at the same camera
-// ray's hit (make_shading_point: resolve_closure and the normal map on the CPU). Pixels whose
+// ray's hit (make_shading_point: the material graph and its normal map on the CPU). Pixels whose
 // CPU hit is within 1e-3 of a triangle edge in uv are skipped (the rasteriser and Embree may
 // then pick different triangles). Tolerance 1e-3: the interpolated uv differ by the rounding of
 // the two intersection computations (~1e-6 relative), which the texture's bilinear slope (≤ 1
@@ -57,7 +56,7 @@ TEST_F(TexturedSceneTest, GBufferResolvesTexturesAndNormalMapsAsTheCpu) {
             if (!hit || !t.covered) continue;
             const trace::SurfaceInteraction si = trace::make_interaction(s, *hit, ray);
             if (int(t.material) != si.material) continue;  // a silhouette pixel
-            const reference::ShadingPoint sp = reference::make_shading_point(s, si);
+            const trace::ShadingPoint sp = trace::make_shading_point(accel.materials(), si);
             const material::ClosureParams& c = sp.bsdf.params();
             const material::ClosureParams expected = material::clamp_to_valid_ranges(c);
             // The G-buffer keeps the unflipped normal (the shading pass flips back faces).

@@ -1,12 +1,13 @@
 #pragma once
 // A surface point made ready for shading: the side the ray arrived on decided (glTF doubleSided),
-// the normal map applied, the closure resolved.
+// the material graph's normal node applied, the closure resolved — what the path tracer, the
+// light tracer and the VPL receivers all evaluate.
 #include "engine/core/math.h"
 #include "engine/material/bsdf.h"
-#include "engine/scene/scene.h"
+#include "engine/material/scene_materials.h"
 #include "engine/trace/interaction.h"
 
-namespace mvpl::reference {
+namespace mvpl::trace {
 
 struct ShadingPoint {
     Vec3 p;
@@ -17,6 +18,7 @@ struct ShadingPoint {
 
 // A back-face hit on a one-sided material shades with the unflipped normal, so its BSDF is zero
 // for the arriving direction: the surface is black from behind, as Mitsuba's one-sided BSDFs.
-ShadingPoint make_shading_point(const scene::Scene& scene, const trace::SurfaceInteraction& si);
+ShadingPoint make_shading_point(const material::SceneMaterials& materials,
+                                const SurfaceInteraction& si);
 
-}  // namespace mvpl::reference
+}  // namespace mvpl::trace

@@ -1,8 +1,12 @@
-#include "engine/material/material_eval.h"
+// The glTF 2.0 metallic-roughness material read straight from the specification (§3.9.2,
+// §3.9.3, KHR_materials_specular), without the node graph: the independent computation that
+// test_material_graph.cpp holds the graph's CPU evaluation to. (It was the engine's own CPU path
+// until every caller evaluated the graphs; transmission is not part of it.)
+#include "tests/material/gltf_reference.h"
 
 #include <optional>
 
-namespace mvpl::material {
+namespace mvpl::material::testing {
 
 namespace {
 
@@ -72,4 +76,4 @@ Vec3 apply_normal_map(const scene::Material& material, const std::vector<scene::
     return is_finite(result) ? result : tangent_frame.n;
 }
 
-}  // namespace mvpl::material
+}  // namespace mvpl::material::testing

@@ -1,0 +1,102 @@
+#include "engine/light/vpl_contribution.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "engine/trace/interaction.h"
+
+namespace mvpl::light {
+namespace {
+
+// The VPL's own factor towards the receiver: spot(axis·ω), max(0, n_j·ω) or
+// f_j(ω_in, ω)·max(0, n_j·ω) (vpl.h), ω the unit direction from the VPL to the receiver.
+Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w) {
+    const Vpl& v = *pv.vpl;
+    switch (v.type) {
+        case VplType::Point:
+            return Rgb(1.0f);
+        case VplType::Spot: {
+            // KHR_lights_punctual falloff from the VPL's own cone (spot_attenuation's).
+            const float scale = 1.0f / std::max(1e-3f, v.cos_inner - v.cos_outer);
+            const float t = std::clamp((glm::dot(v.normal, w) - v.cos_outer) * scale, 0.0f, 1.0f);
+            return Rgb(t * t);
+        }
+        case VplType::Area:
+            return Rgb(std::max(0.0f, glm::dot(v.normal, w)));
+        case VplType::Surface: {
+            const float cos_j = glm::dot(v.normal, w);
+            if (!(cos_j > 0.0f)) return Rgb(0.0f);
+            return pv.bsdf->eval(pv.wi_local, pv.frame.to_local(w)) * cos_j;
+        }
+        case VplType::Directional:
+            break;
+    }
+    return Rgb(0.0f);
+}
+
+}  // namespace
+
+PreparedVpl prepare_vpl(const Vpl& vpl) {
+    PreparedVpl pv;
+    pv.vpl = &vpl;
+    if (vpl.type == VplType::Surface) {
+        pv.bsdf.emplace(vpl.closure);
+        pv.frame = Frame(vpl.shading_normal);
+        pv.wi_local = pv.frame.to_local(vpl.wi);
+    }
+    return pv;
+}
+
+std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
+                                      const trace::Ray& camera_ray, Rgb* emitted) {
+    const std::optional<trace::Hit> hit = accel.intersect(camera_ray);
+    if (!hit) return std::nullopt;
+    const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, camera_ray);
+    // Emitters emit from their front face only, whatever doubleSided says.
+    if (emitted && si.front_face) {
+        material::SurfacePoint point;
+        point.uv0 = si.uv0;
+        point.uv1 = si.uv1;
+        *emitted += accel.materials().emission(si.material, point);
+    }
+    Receiver r{trace::make_shading_point(accel.materials(), si), Vec3(0.0f, 0.0f, 1.0f)};
+    r.wo = r.sp.frame.to_local(-glm::normalize(camera_ray.direction));
+    if (!(r.wo.z > 0.0f)) return std::nullopt;  // seen from below the shading surface: black
+    return r;
+}
+
+Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const PreparedVpl& pv,
+                     float d_min2) {
+    const trace::ShadingPoint& sp = receiver.sp;
+    const Vpl& v = *pv.vpl;
+    Vec3 to_light;  // unit, receiver → VPL
+    float inv_d2 = 1.0f;
+    Rgb factor(1.0f);
+    if (v.type == VplType::Directional) {
+        to_light = -v.normal;
+    } else {
+        const Vec3 d = v.position - sp.p;
+        const float dist2 = glm::dot(d, d);
+        if (!(dist2 > 0.0f)) return Rgb(0.0f);
+        to_light = d / std::sqrt(dist2);
+        inv_d2 = 1.0f / std::max(dist2, d_min2);
+        factor = emitter_factor(pv, -to_light);
+    }
+    if (is_black(factor)) return Rgb(0.0f);
+    if (!(glm::dot(to_light, sp.ng) > 0.0f)) return Rgb(0.0f);  // below the geometric surface
+    const Vec3 wi = sp.frame.to_local(to_light);
+    if (!(wi.z > 0.0f)) return Rgb(0.0f);  // cos θ' = max(0, n'·(−ω))
+    const Rgb f = sp.bsdf.eval(receiver.wo, wi);
+    if (is_black(f)) return Rgb(0.0f);
+    const Rgb c = v.power * f * factor * (wi.z * inv_d2);
+    if (is_black(c)) return Rgb(0.0f);
+    const bool on_surface = v.type == VplType::Area || v.type == VplType::Surface;
+    const trace::Ray shadow =
+        v.type == VplType::Directional
+            ? trace::spawn_ray(sp.p, sp.ng, to_light)
+            : trace::spawn_ray_to(sp.p, sp.ng, v.position, on_surface ? v.normal : Vec3(0.0f));
+    if (accel.occluded(shadow)) return Rgb(0.0f);
+    return c;
+}
+
+}  // namespace mvpl::light

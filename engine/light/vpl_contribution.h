@@ -1,0 +1,41 @@
+#pragma once
+// One VPL's contribution to one receiver (the formulas of vpl.h, Embree visibility): the one
+// implementation that the CPU oracle (reference::gather_vpls) and the Metropolis sampler's target
+// (sampler/importance.h) share, so that the target sees exactly what the oracle shades.
+#include <optional>
+
+#include "engine/core/color.h"
+#include "engine/core/math.h"
+#include "engine/light/vpl.h"
+#include "engine/material/bsdf.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+#include "engine/trace/ray.h"
+#include "engine/trace/shading_point.h"
+
+namespace mvpl::light {
+
+// What is fixed per VPL, prepared once rather than per receiver.
+struct PreparedVpl {
+    const Vpl* vpl = nullptr;
+    std::optional<material::Bsdf> bsdf;  // Surface only
+    Frame frame;                         // Surface only: around the VPL's shading normal
+    Vec3 wi_local{0.0f, 0.0f, 1.0f};     // Surface only
+};
+PreparedVpl prepare_vpl(const Vpl& vpl);
+
+// A camera ray's first hit made ready to receive VPL light.
+struct Receiver {
+    trace::ShadingPoint sp;
+    Vec3 wo{0.0f, 0.0f, 1.0f};  // towards the camera, in sp.frame; wo.z > 0
+};
+// The receiver at the first hit of `camera_ray`, if any and seen from above its shading surface;
+// `emitted` (optional) receives the emitted radiance seen there (front face only).
+std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
+                                      const trace::Ray& camera_ray, Rgb* emitted = nullptr);
+
+// One VPL's contribution to one receiver (vpl.h), Embree visibility included; d_min2 = d_min².
+Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const PreparedVpl& pv,
+                     float d_min2);
+
+}  // namespace mvpl::light

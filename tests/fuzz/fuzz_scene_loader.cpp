@@ -1,0 +1,71 @@
+// libFuzzer target for the scene loaders (glTF .gltf/.glb, PLY, OBJ): whatever the bytes, a load
+// either succeeds with a scene whose every position is finite and every index in range, or throws
+// InputError. Anything else — a crash, a sanitizer report, another exception, a hang — is a
+// finding. The format is chosen from the bytes as a user's file extension would choose it: the
+// GLB magic, "ply", a '{' (JSON) or else OBJ. tests/fuzz/README.md says how to run it.
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "engine/core/error.h"
+#include "engine/scene/scene_loader.h"
+
+namespace {
+
+std::string extension_of(const uint8_t* data, size_t size) {
+    const auto starts = [&](const char* prefix) {
+        const size_t n = std::char_traits<char>::length(prefix);
+        return size >= n && std::char_traits<char>::compare(
+                                reinterpret_cast<const char*>(data), prefix, n) == 0;
+    };
+    if (starts("glTF")) return ".glb";
+    if (starts("ply")) return ".ply";
+    for (size_t i = 0; i < size; ++i) {
+        const char c = char(data[i]);
+        if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
+        return c == '{' ? ".gltf" : ".obj";
+    }
+    return ".obj";
+}
+
+// One file per process and format, rewritten for every input (the loaders read paths).
+std::string write_input(const uint8_t* data, size_t size, const std::string& extension) {
+    const char* dir = std::getenv("TMPDIR");
+    const std::string path = std::string(dir ? dir : "/tmp") + "/mvpl-fuzz-" +
+                             std::to_string(getpid()) + extension;
+    FILE* f = std::fopen(path.c_str(), "wb");
+    if (!f) std::abort();
+    if (size > 0 && std::fwrite(data, 1, size, f) != size) std::abort();
+    std::fclose(f);
+    return path;
+}
+
+void check(const mvpl::scene::Scene& scene) {
+    for (const mvpl::scene::Mesh& mesh : scene.meshes) {
+        for (const mvpl::Vec3& p : mesh.positions) {
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) std::abort();
+        }
+        for (const uint32_t i : mesh.indices) {
+            if (i >= mesh.positions.size()) std::abort();
+        }
+        if (mesh.normals.size() != mesh.positions.size()) std::abort();
+        if (mesh.material < 0 || size_t(mesh.material) >= scene.materials.size()) std::abort();
+    }
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+    const std::string path = write_input(data, size, extension_of(data, size));
+    try {
+        check(mvpl::scene::load_scene(path));
+    } catch (const mvpl::InputError&) {
+        // The expected refusal of a bad file.
+    }
+    std::remove(path.c_str());
+    return 0;
+}
