@@ -12,7 +12,8 @@
 # safe, including `)"` and UTF-8 in comments), NUL-terminated so that lookups can hand out
 # std::string_view and C strings alike. Names are paths relative to the directory, with '/'.
 
-set(MVPL_SHADER_PATTERNS *.glsl *.comp *.vert *.frag *.geom *.tesc *.tese)
+# *.h: the layouts under shaders/shared, which C++ includes too (shaders/shared/prelude.h).
+set(MVPL_SHADER_PATTERNS *.glsl *.h *.comp *.vert *.frag *.geom *.tesc *.tese)
 
 if(CMAKE_SCRIPT_MODE_FILE)
   if(NOT SHADER_DIR OR NOT OUTPUT)

@@ -40,32 +40,22 @@ namespace mvpl::sampler {
 
 struct MetropolisOptions {
     uint64_t seed = 0;
-    // Measured on two-room, 128², 20 s budgets (relMSE against a 16384-spp reference, seed 1):
-    // 16 chains 0.030, 256 chains 0.020 (β 0.3) / 0.015 (β 0.1), 1024 chains 0.0128 (β 0.3) /
-    // 0.0119 (β 0.1). Few long chains leave the split between the scene's modes (VPLs that light
-    // the wall seen through the hole, VPLs in the camera's room) to their few starts; many short
-    // chains resample the bootstrap ∝ I' and stay close to it.
+    // Many short chains: they resample the bootstrap ∝ I' and keep the split between the scene's
+    // modes, which few long chains leave to their few starts (two-room, 20 s: relMSE 0.030 with 16
+    // chains, 0.0128 with 1024; measured: docs/results.md, "Metropolis defaults", Chains).
     int chains = 1024;
-    // With ε = 1 (below), β = 0.3 and a 65536-path bootstrap: two-room, 16² CPU-oracle image
-    // against 2M Monte Carlo paths, 32 seeds, 3000 steps (≈ 8 s on lavapipe, the larger
-    // bootstrap's time included) relMSE 0.0053, where β = 0.1 and 32768 paths gave 0.0078 at
-    // 3255 steps; 128² renders, 8 s, seeds 1–4, against the path-traced reference: 0.0083 vs
-    // 0.0108. At such budgets each chain takes a few steps only, so the image is close to the
-    // bootstrap resampled ∝ I': a larger bootstrap has more distinct start states in the rare
-    // camera-room mode.
+    // β 0.3 with a 65536-path bootstrap beat β 0.1 with 32768: at interactive budgets each chain
+    // takes a few steps, and a larger bootstrap has more start states in the rare camera-room mode
+    // (measured: docs/results.md, "Metropolis defaults", Large-step probability β).
     float large_step = 0.3f;  // β
     float sigma = 0.01f;      // small-step width in primary sample space
-    // Independent paths for b and the chains' starts. Paths without rendering are cheap next to
-    // shading a VPL (two-room, lavapipe: ≈ 10 µs against ≈ 2 ms), and b's error scales the whole
-    // image, so the bootstrap is large.
+    // Independent paths for b and the chains' starts: cheap next to shading a VPL, and b's error
+    // scales the whole image, so the bootstrap is large (docs/results.md, the same section).
     uint64_t bootstrap = 65536;
-    // ε of the defensive target. Measured on two-room, 16² CPU-oracle image against 2M Monte
-    // Carlo paths, 3255 steps (an 8 s budget on lavapipe), 16 seeds: relMSE 0.015 at ε = 0.05,
-    // 0.0097 at 0.2, 0.0071 at 1, 0.0069 at 4; the image mean's error (rms over seeds) 12% at
-    // 0.05, 4.5% at 1. A small ε leaves the VPLs that the point set sees badly (lit pixels
-    // between points, the wall seen through the hole) to rare states of weight b/(ε·mean(I)):
-    // a heavy tail that shows as a global brightness and colour error. ε = 1 spends about half
-    // the chains' mass like independent paths and half on the target.
+    // ε of the defensive target: a small ε leaves the VPLs the point set sees badly to rare heavy
+    // states, a global brightness error (the mean's error 12% at ε 0.05, 4.5% at 1; measured:
+    // docs/results.md, "Metropolis defaults", Defensive ε). ε = 1 spends about half the chains'
+    // mass like independent paths and half on the target.
     double defensive = 1.0;
     // One (default): a state is a light path and one of its m VPLs, picked by the primary sample
     // read before the path (dimension 0) and carrying m × its power, so that the target is that

@@ -16,8 +16,10 @@ import gzip
 import json
 import math
 import os
-import struct
 import sys
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gltf_writer import ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, FLOAT, UINT, Buffer  # noqa: E402
 
 WHITE = [0.885809, 0.698859, 0.666422, 1]
 RED = [0.570068, 0.0430135, 0.0443706, 1]
@@ -130,7 +132,6 @@ def main():
     normals = smooth_normals(positions, faces)
     meshes = [(3, (positions, normals, faces))] + room()
 
-    blob = bytearray()
     gltf = {"asset": {"version": "2.0", "generator": "mvpl tools/make_dragon_scene.py"},
             "extensionsUsed": ["KHR_materials_emissive_strength", "KHR_materials_specular"],
             "scene": 0, "scenes": [{"nodes": []}], "nodes": [], "meshes": [],
@@ -142,13 +143,10 @@ def main():
             "cameras": [{"type": "perspective", "perspective": {
                 "yfov": 0.6860487863861751, "znear": 0.01, "aspectRatio": 1}}]}
 
+    buffer = Buffer(gltf["bufferViews"])
+
     def add_view(data, target, count, component, kind, bounds=None):
-        while len(blob) % 4:
-            blob.append(0)
-        gltf["bufferViews"].append({"buffer": 0, "byteOffset": len(blob),
-                                    "byteLength": len(data), "target": target})
-        blob.extend(data)
-        acc = {"bufferView": len(gltf["bufferViews"]) - 1, "componentType": component,
+        acc = {"bufferView": buffer.view(data, target), "componentType": component,
                "count": count, "type": kind}
         if bounds:
             acc["min"], acc["max"] = bounds
@@ -164,21 +162,21 @@ def main():
                 a.byteswap()
         lo = [min(p[i] for p in pos) for i in range(3)]
         hi = [max(p[i] for p in pos) for i in range(3)]
-        attributes = {"POSITION": add_view(flat_p.tobytes(), 34962, len(pos), 5126, "VEC3",
+        attributes = {"POSITION": add_view(flat_p.tobytes(), ARRAY_BUFFER, len(pos), FLOAT, "VEC3",
                                            (lo, hi)),
-                      "NORMAL": add_view(flat_n.tobytes(), 34962, len(nrm), 5126, "VEC3")}
-        indices = add_view(flat_i.tobytes(), 34963, len(flat_i), 5125, "SCALAR")
+                      "NORMAL": add_view(flat_n.tobytes(), ARRAY_BUFFER, len(nrm), FLOAT, "VEC3")}
+        indices = add_view(flat_i.tobytes(), ELEMENT_ARRAY_BUFFER, len(flat_i), UINT, "SCALAR")
         gltf["meshes"].append({"primitives": [{"attributes": attributes, "indices": indices,
                                                "material": m}]})
         gltf["nodes"].append({"mesh": len(gltf["meshes"]) - 1})
     # Camera on +Z looking down -Z at the room's centre, like the Cornell box's.
     gltf["nodes"].append({"name": "camera", "camera": 0, "translation": [0, 1, 3.85]})
     gltf["scenes"][0]["nodes"] = list(range(len(gltf["nodes"])))
-    gltf["buffers"] = [{"uri": "dragon.bin", "byteLength": len(blob)}]
+    gltf["buffers"] = [{"uri": "dragon.bin", "byteLength": len(buffer.data)}]
 
     os.makedirs(out_dir, exist_ok=True)
     with open(os.path.join(out_dir, "dragon.bin"), "wb") as f:
-        f.write(blob)
+        f.write(buffer.data)
     with open(os.path.join(out_dir, "dragon.gltf"), "w") as f:
         json.dump(gltf, f, indent=1)
     print(f"{out_dir}/dragon.gltf: dragon {len(faces)} triangles, "

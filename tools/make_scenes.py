@@ -25,10 +25,8 @@ import sys
 
 ROOT = os.path.normpath(os.path.join(os.path.dirname(os.path.abspath(__file__)), ".."))
 
-FLOAT = 5126
-UINT = 5125
-ARRAY_BUFFER = 34962
-ELEMENT_ARRAY_BUFFER = 34963
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from gltf_writer import ARRAY_BUFFER, ELEMENT_ARRAY_BUFFER, FLOAT, UINT, Buffer  # noqa: E402
 
 
 # --------------------------------------------------------------------------------------------
@@ -217,7 +215,7 @@ class Gltf:
             "bufferViews": [],
             "buffers": [],
         }
-        self.bin = bytearray()
+        self.buffer = Buffer(self.doc["bufferViews"])
         self.material_index = {}
         self.shared_index_accessors = {}
 
@@ -250,20 +248,9 @@ class Gltf:
         self.doc["materials"].append(m)
         return self.material_index[name]
 
-    def _view(self, data, target, stride=None):
-        while len(self.bin) % 4:
-            self.bin.append(0)
-        view = {"buffer": 0, "byteOffset": len(self.bin), "byteLength": len(data)}
-        if stride:
-            view["byteStride"] = stride
-        view["target"] = target
-        self.bin += data
-        self.doc["bufferViews"].append(view)
-        return len(self.doc["bufferViews"]) - 1
-
     def _vec3_accessor(self, values, with_bounds):
         data = b"".join(struct.pack("<3f", *v) for v in values)
-        acc = {"bufferView": self._view(data, ARRAY_BUFFER, 12), "byteOffset": 0,
+        acc = {"bufferView": self.buffer.view(data, ARRAY_BUFFER, 12), "byteOffset": 0,
                "componentType": FLOAT, "count": len(values), "type": "VEC3"}
         if with_bounds:
             stored = [tuple(f32(c) for c in v) for v in values]
@@ -278,7 +265,7 @@ class Gltf:
         if key in self.shared_index_accessors:
             return self.shared_index_accessors[key]
         data = struct.pack("<%dI" % len(indices), *indices)
-        acc = {"bufferView": self._view(data, ELEMENT_ARRAY_BUFFER), "byteOffset": 0,
+        acc = {"bufferView": self.buffer.view(data, ELEMENT_ARRAY_BUFFER), "byteOffset": 0,
                "componentType": UINT, "count": len(indices), "type": "SCALAR",
                "min": [min(indices)], "max": [max(indices)]}
         self.doc["accessors"].append(acc)
@@ -320,9 +307,8 @@ class Gltf:
                        "extensions": {"KHR_lights_punctual": {"light": len(lights) - 1}}})
 
     def finish(self, bin_name):
-        while len(self.bin) % 4:
-            self.bin.append(0)
-        self.doc["buffers"].append({"uri": bin_name, "byteLength": len(self.bin)})
+        self.buffer.pad()
+        self.doc["buffers"].append({"uri": bin_name, "byteLength": len(self.buffer.data)})
         self.doc["extensionsUsed"].sort()
         if not self.doc["extensionsUsed"]:
             del self.doc["extensionsUsed"]
@@ -330,7 +316,7 @@ class Gltf:
         for k in ("accessors", "bufferViews", "buffers"):
             self.doc[k] = self.doc.pop(k)
         text = json.dumps(self.doc, indent=1) + "\n"
-        return text, bytes(self.bin)
+        return text, bytes(self.buffer.data)
 
 
 # --------------------------------------------------------------------------------------------

@@ -12,28 +12,16 @@ import math
 import os
 import struct
 import sys
-import zlib
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gltf_writer  # noqa: E402  (found beside this file)
 
 
 def write_png(path, width, height, channels, pixel):
     """pixel(x, y) -> tuple of `channels` ints in 0..255; row 0 is the top."""
-    raw = bytearray()
-    for y in range(height):
-        raw.append(0)  # filter: none
-        for x in range(width):
-            raw.extend(pixel(x, y))
-
-    def chunk(tag, data):
-        body = tag + data
-        return struct.pack(">I", len(data)) + body + struct.pack(">I", zlib.crc32(body) & 0xFFFFFFFF)
-
-    colour_type = {3: 2, 4: 6}[channels]
-    header = struct.pack(">IIBBBBB", width, height, 8, colour_type, 0, 0, 0)
+    samples = [v for y in range(height) for x in range(width) for v in pixel(x, y)]
     with open(path, "wb") as f:
-        f.write(b"\x89PNG\r\n\x1a\n")
-        f.write(chunk(b"IHDR", header))
-        f.write(chunk(b"IDAT", zlib.compress(bytes(raw), 9)))
-        f.write(chunk(b"IEND", b""))
+        f.write(gltf_writer.png(width, height, channels, samples, level=9))
 
 
 def checker(x, y):
@@ -66,19 +54,15 @@ def stripes_mr(x, y):
 
 class Builder:
     def __init__(self):
-        self.data = bytearray()
-        self.views = []
+        self.buffer = gltf_writer.Buffer()
         self.accessors = []
         self.meshes = []
         self.nodes = []
 
     def _add(self, values, fmt, count, type_, with_bounds=False):
-        while len(self.data) % 4:
-            self.data.append(0)
-        offset = len(self.data)
-        self.data.extend(struct.pack("<" + fmt * len(values), *values))
-        self.views.append({"buffer": 0, "byteOffset": offset, "byteLength": len(self.data) - offset})
-        acc = {"bufferView": len(self.views) - 1, "componentType": 5126 if fmt == "f" else 5125,
+        view = self.buffer.view(struct.pack("<" + fmt * len(values), *values))
+        acc = {"bufferView": view,
+               "componentType": gltf_writer.FLOAT if fmt == "f" else gltf_writer.UINT,
                "count": count, "type": type_}
         if with_bounds:
             comps = len(values) // count
@@ -162,12 +146,12 @@ def main():
                      {"magFilter": 9728, "minFilter": 9728, "wrapS": 33071, "wrapT": 33648}],
         "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 0},
                      {"source": 2, "sampler": 1}],
-        "buffers": [{"uri": "textured.bin", "byteLength": len(b.data)}],
-        "bufferViews": b.views,
+        "buffers": [{"uri": "textured.bin", "byteLength": len(b.buffer.data)}],
+        "bufferViews": b.buffer.views,
         "accessors": b.accessors,
     }
     with open(os.path.join(out, "textured.bin"), "wb") as f:
-        f.write(bytes(b.data))
+        f.write(bytes(b.buffer.data))
     with open(os.path.join(out, "textured.gltf"), "w") as f:
         json.dump(gltf, f, indent=1)
         f.write("\n")

@@ -15,6 +15,8 @@
 #include <stdexcept>
 
 #include "engine/core/error.h"
+#include "engine/core/file_extension.h"
+#include "engine/core/png.h"
 
 namespace mvpl {
 
@@ -35,15 +37,8 @@ float srgb_to_linear(float v) {
     return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
-static std::string extension_of(const std::string& path) {
-    std::string ext = std::filesystem::path(path).extension().string();
-    std::transform(ext.begin(), ext.end(), ext.begin(),
-                   [](unsigned char c) { return std::tolower(c); });
-    return ext;
-}
-
 void write_image(const Image& image, const std::string& path, float exposure) {
-    const std::string ext = extension_of(path);
+    const std::string ext = lower_extension(path);
     // The last guard: a non-finite value is never written silently (finite_check.h).
     require_finite(image, path + " not written");
     if (ext == ".exr") {
@@ -86,8 +81,12 @@ void write_png(const Image& image, const std::string& path, float exposure) {
                 static_cast<unsigned char>(std::lround(255.0f * linear_to_srgb(p[c] * scale)));
         }
     }
-    if (!stbi_write_png(path.c_str(), image.width(), image.height(), 3, bytes.data(),
-                        image.width() * 3)) {
+    write_png_rgb8(path, bytes, image.width(), image.height());
+}
+
+void write_png_rgb8(const std::string& path, std::span<const uint8_t> rgb, int width, int height) {
+    if (rgb.size() != size_t(width) * size_t(height) * 3 ||
+        !stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3)) {
         throw std::runtime_error(path + ": cannot write PNG");
     }
 }

@@ -9,22 +9,13 @@
 #include "engine/gpu/shader_compiler.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shader_program.h"
+#include "shaders/shared/push_constants.h"
 
 namespace mvpl::render {
 namespace {
 
-// Mirrors GBufferPush in shaders/render/g_buffer_push.glsl.
-struct GBufferPush {
-    float view_proj[16];
-    uint32_t material_flags;
-    uint32_t material;
-};
-static_assert(sizeof(GBufferPush) == 72);
-
-// Mirrors MaterialPush in shaders/render/material_template.glsl.
-struct MaterialPush {
-    uint32_t size[2];
-};
+using shared::GBufferPush;
+using shared::MaterialPush;
 
 gpu::GraphicsLayout g_buffer_layout() {
     gpu::GraphicsLayout layout;

@@ -2,15 +2,17 @@
 
 #include "engine/material/closure.h"
 #include "engine/render/directional_frame.h"
+#include "engine/render/host_vec3.h"
 
 namespace mvpl::render {
 namespace {
 
-void store(float out[3], const Vec3& v) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
-}
+// The GLSL side reads VplType through these (shaders/shared/gpu_vpl.h).
+static_assert(shared::kVplPoint == uint32_t(light::VplType::Point));
+static_assert(shared::kVplSpot == uint32_t(light::VplType::Spot));
+static_assert(shared::kVplArea == uint32_t(light::VplType::Area));
+static_assert(shared::kVplSurface == uint32_t(light::VplType::Surface));
+static_assert(shared::kVplDirectional == uint32_t(light::VplType::Directional));
 
 }  // namespace
 

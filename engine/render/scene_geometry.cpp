@@ -1,17 +1,9 @@
 #include "engine/render/scene_geometry.h"
 
 #include "engine/gpu/gpu_error.h"
+#include "engine/render/host_vec3.h"
 
 namespace mvpl::render {
-namespace {
-
-void store(float out[3], const Vec3& v) {
-    out[0] = v.x;
-    out[1] = v.y;
-    out[2] = v.z;
-}
-
-}  // namespace
 
 SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
     : m_features(scene_features(scene, ShaderOptions{})), m_textures(scene.textures) {

@@ -39,21 +39,64 @@ std::vector<std::string> enabled_names(const ShaderFeatures& f) {
     return out;
 }
 
-}  // namespace
-
-ShaderFeatures ShaderFeatures::all() {
-    ShaderFeatures f;
-    f.vpl_types.fill(true);
-    f.closure_types.fill(true);
-    return f;
+// `#include "x"` as glslang's includer resolves it (engine/gpu/shader_compiler.cpp): next to the
+// including file (dir), then from shaders/. Returns the embedded name.
+std::string resolve_include(const std::string& dir, const std::string& file) {
+    if (gpu::find_embedded_shader(dir + file)) return dir + file;
+    if (gpu::find_embedded_shader(file)) return file;
+    throw gpu::GpuError("shader template: cannot find '" + file + "' included from " +
+                        (dir.empty() ? std::string("shaders/") : dir));
 }
 
-std::string expand_template(std::string_view text, const std::vector<std::string>& enabled,
-                            const std::vector<std::pair<std::string, std::string>>& inserts) {
+// An open #if/#ifdef/#ifndef of the file being expanded. The C++ side of a shared header
+// (shaders/shared/prelude.h: `#ifdef __cplusplus` … `#else` … `#endif`) is left out here, so that
+// a stage holds GLSL only (no <cstdint>, no templates); other conditionals are glslang's.
+struct Conditional {
+    bool cplusplus;  // tests __cplusplus
+    bool in_cxx;     // … and the lines now are its C++ branch
+};
+
+// Handles a preprocessor conditional line t; true when the line is consumed (not to be emitted).
+// *drop: whether the lines that follow belong to a C++ branch.
+bool conditional_line(const std::string& t, std::vector<Conditional>& open, bool* drop) {
+    if (!t.starts_with("#")) return false;
+    std::istringstream words(t.substr(1));
+    std::string directive;
+    std::string argument;
+    words >> directive >> argument;
+    bool consumed = false;
+    if (directive == "ifdef" || directive == "ifndef" || directive == "if") {
+        const bool cplusplus = directive != "if" && argument == "__cplusplus";
+        open.push_back({cplusplus, cplusplus && directive == "ifdef"});
+        consumed = cplusplus;
+    } else if (!open.empty() && (directive == "else" || directive == "elif")) {
+        if (open.back().cplusplus && directive == "elif")
+            throw gpu::GpuError("shader template: #elif after #ifdef __cplusplus");
+        if (open.back().cplusplus) open.back().in_cxx = !open.back().in_cxx;
+        consumed = open.back().cplusplus;
+    } else if (!open.empty() && directive == "endif") {
+        consumed = open.back().cplusplus;
+        open.pop_back();
+    } else {
+        return false;
+    }
+    *drop = std::any_of(open.begin(), open.end(),
+                        [](const Conditional& c) { return c.cplusplus && c.in_cxx; });
+    return consumed;
+}
+
+// dir: the including file's directory ("render/"); included: the files already expanded, each
+// inlined once (their include guards would drop a repeat anyway; this keeps dumps short).
+std::string expand(std::string_view text, const std::string& dir,
+                   const std::vector<std::string>& enabled,
+                   const std::vector<std::pair<std::string, std::string>>& inserts,
+                   std::vector<std::string>& included) {
     std::istringstream in{std::string(text)};
     std::string out;
     std::string line;
     std::vector<bool> keep{true};
+    std::vector<Conditional> conditionals;
+    bool cxx = false;  // in the C++ branch of a shared header
     while (std::getline(in, line)) {
         const std::string t = trim(line);
         if (t.starts_with("//@if ")) {
@@ -65,6 +108,8 @@ std::string expand_template(std::string_view text, const std::vector<std::string
             continue;
         }
         if (!keep.back()) continue;
+        const bool was_cxx = cxx;
+        if (conditional_line(t, conditionals, &cxx) || was_cxx) continue;
         if (t.starts_with("//@insert ")) {
             const std::string name = trim(t.substr(10));
             const auto it = std::find_if(inserts.begin(), inserts.end(),
@@ -76,14 +121,32 @@ std::string expand_template(std::string_view text, const std::vector<std::string
         }
         if (t.starts_with("#extension GL_GOOGLE_include_directive")) continue;
         if (t.starts_with("#include \"")) {
-            const std::string file = t.substr(10, t.size() - 11);
-            out += expand_template(gpu::embedded_shader("render/" + file), enabled, inserts);
+            const std::string name = resolve_include(dir, t.substr(10, t.size() - 11));
+            if (std::find(included.begin(), included.end(), name) != included.end()) continue;
+            included.push_back(name);
+            out += expand(gpu::embedded_shader(name), name.substr(0, name.rfind('/') + 1), enabled,
+                          inserts, included);
             continue;
         }
         out += line;
         out += '\n';
     }
     return out;
+}
+
+}  // namespace
+
+std::string expand_template(std::string_view text, const std::vector<std::string>& enabled,
+                            const std::vector<std::pair<std::string, std::string>>& inserts) {
+    std::vector<std::string> included;
+    return expand(text, "render/", enabled, inserts, included);
+}
+
+ShaderFeatures ShaderFeatures::all() {
+    ShaderFeatures f;
+    f.vpl_types.fill(true);
+    f.closure_types.fill(true);
+    return f;
 }
 
 ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& options) {
@@ -118,10 +181,8 @@ ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& op
 StageSource generate_shading_source(const ShaderFeatures& features,
                                     std::vector<std::string>* functions) {
     const std::string closures = material::generate_closure_eval(features.closure_types, functions);
-    const std::string vpl = expand_template(gpu::embedded_shader("render/vpl.glsl"), {}, {});
-    return {"shading.comp",
-            expand_template(gpu::embedded_shader("render/shading_template.glsl"),
-                            enabled_names(features), {{"vpl", vpl}, {"closures", closures}})};
+    return {"shading.comp", expand_template(gpu::embedded_shader("render/shading_template.glsl"),
+                                            enabled_names(features), {{"closures", closures}})};
 }
 
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,

@@ -81,7 +81,9 @@ StageSource generate_shading_source(const ShaderFeatures& features,
 void dump_shaders(const std::string& dir, const std::vector<const StageSource*>& stages);
 
 // Expands the template markers of shaders/render (`//@insert NAME`, `//@if a|b` … `//@endif`)
-// and `#include "x.glsl"` of embedded shaders. Exposed for tests.
+// and `#include "x"` of embedded shaders (each inlined once, found next to the includer, then
+// from shaders/: "shared/gpu_vpl.h"), so that a stage's source, and the SPIR-V cache's hash of
+// it, holds everything it is compiled from. Exposed for tests.
 std::string expand_template(std::string_view text, const std::vector<std::string>& enabled,
                             const std::vector<std::pair<std::string, std::string>>& inserts);
 

@@ -8,26 +8,16 @@
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
 #include "engine/render/gpu_vpl.h"
+#include "shaders/shared/push_constants.h"
 
 namespace mvpl::render {
 namespace {
 
-// Mirrors ShadingPush in shaders/render/shading.comp.
-struct ShadingPush {
-    float camera_position[4];
-    float d_min2;
-    float texel_angle;
-    uint32_t vpl_count;
-    uint32_t flags;
-    uint32_t size[2];
-};
-constexpr uint32_t kAddEmission = 1u;
-constexpr uint32_t kShadows = 2u;
+using shared::kAddEmission;
+using shared::kMaxShadingBatch;
+using shared::kShadows;
+using shared::ShadingPush;
 constexpr uint32_t kGroupSize = 8;
-// The VPL array of shading.comp, a uniform buffer (lavapipe reads it ~1.5–2× faster than a
-// storage buffer): 512 × 128 bytes = 64 KiB, the maxUniformBufferRange of lavapipe and desktop
-// GPUs. A device with the spec's minimum of 16 KiB would need a smaller constant here.
-constexpr uint32_t kMaxShadingBatch = 512;
 
 // Binding 3, the shadow cubes, is a storage image: the shader picks face and texel itself
 // (shading_template.glsl, cube_texel). Binding 4 (the directional maps) exists only in programs

@@ -8,23 +8,13 @@
 #include "engine/gpu/shader_compiler.h"
 #include "engine/render/directional_frame.h"
 #include "engine/render/scene_geometry.h"
+#include "shaders/shared/push_constants.h"
 
 namespace mvpl::render {
 namespace {
 
-// Mirrors ShadowPush in shaders/render/shadow_push.glsl.
-struct ShadowPush {
-    float vpl_near[4];
-    uint32_t face[4];
-};
-
-// Mirrors OrthoPush in shaders/render/shadow_ortho.vert.
-struct OrthoPush {
-    float u_origin[4];
-    float v_origin[4];
-    float dir_origin[4];
-    float extents[4];
-};
+using shared::OrthoPush;
+using shared::ShadowPush;
 
 // The near plane as a fraction of the scene diagonal: scale-free, and small enough that only
 // the surface a VPL lies on (distance 0) falls in front of it in practice.

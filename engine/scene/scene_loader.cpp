@@ -6,6 +6,7 @@
 #include <numeric>
 
 #include "engine/core/error.h"
+#include "engine/core/file_extension.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/obj_loader.h"
 #include "engine/scene/ply_loader.h"
@@ -52,9 +53,7 @@ void make_flat(Mesh& mesh) {
 }  // namespace
 
 Scene load_scene(const std::string& path) {
-    std::string extension = std::filesystem::path(path).extension().string();
-    std::transform(extension.begin(), extension.end(), extension.begin(),
-                   [](unsigned char c) { return char(std::tolower(c)); });
+    const std::string extension = lower_extension(path);
     if (extension == ".gltf" || extension == ".glb") return load_gltf(path);
     if (extension == ".ply") return load_ply(path);
     if (extension == ".obj") return load_obj(path);

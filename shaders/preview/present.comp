@@ -1,4 +1,5 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
 // mvpl preview: the running VPL estimate scale · Σ contributions + emitted radiance, exposed and
 // sRGB-encoded exactly as engine/core/image.cpp writes a PNG (linear_to_srgb, then
 // round(255 · v)), into the 8-bit display image that is blitted to the window; the HUD's text
@@ -10,20 +11,8 @@ layout(set = 0, binding = 1, rgba32f) readonly uniform image2DArray g_buffer;
 layout(set = 0, binding = 2, rgba8) writeonly uniform image2D display;
 layout(set = 0, binding = 3, rgba8) readonly uniform image2D hud;
 
-layout(push_constant) uniform Params {
-    float scale;           // 1 / light paths so far (the stream's scale())
-    float exposure_scale;  // 2^exposure
-    uint width;  // the display image (the window)
-    uint height;
-    uint source_width;  // the accumulation: smaller while the camera moves
-    uint source_height;
-    int hud_x;
-    int hud_y;
-    uint hud_width;  // 0: no HUD
-    uint hud_height;
-    uint emission_layer;  // kGBufferEmission
-    uint linear_target;   // 1: the window's format encodes sRGB itself
-} params;
+#include "shared/present_push.h"
+layout(push_constant) uniform PresentPushBlock { PresentPush params; };
 
 // engine/core/image.cpp's linear_to_srgb, branch for branch.
 float linear_to_srgb(float v) {

@@ -6,9 +6,8 @@
 layout(local_size_x = 8, local_size_y = 8) in;
 layout(set = 0, binding = 0, rgba32f) uniform image2DArray g_buffer;
 //@insert bindings
-layout(push_constant) uniform MaterialPush {
-    uvec2 size;
-} pc;
+#include "shared/push_constants.h"
+layout(push_constant) uniform MaterialPushBlock { MaterialPush pc; };
 //@insert materials
 
 void main() {

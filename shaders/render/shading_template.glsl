@@ -7,12 +7,9 @@
 // `//@insert X` lines are replaced by generated code and `//@if a|b` … `//@endif` blocks are kept
 // only when the scene has one of the named VPL types, so that the program holds only the closure
 // types and light types that occur.
-//@insert vpl
+#include "shared/gpu_vpl.h"
+#include "shared/push_constants.h"
 //@insert closures
-
-// kMaxShadingBatch in shading_pass.cpp: 64 KiB, the maxUniformBufferRange of lavapipe and of
-// desktop GPUs.
-const uint kMaxShadingBatch = 512u;
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -28,17 +25,7 @@ layout(set = 0, binding = 3, r32f) uniform readonly image2DArray shadow_cubes;
 layout(set = 0, binding = 4) uniform sampler2DArray ortho_shadows;
 //@endif
 
-const uint kAddEmission = 1u;
-const uint kShadows = 2u;
-
-layout(push_constant) uniform ShadingPush {
-    vec4 camera_position;  // xyz
-    float d_min2;          // squared clamping distance of the geometric term
-    float texel_angle;     // angle of a shadow texel at the centre of a face: 2 / resolution
-    uint vpl_count;
-    uint flags;
-    uvec2 size;
-} pc;
+layout(push_constant) uniform ShadingPushBlock { ShadingPush pc; };
 
 // Shadow test against the VPL's distance cube. Nearest sampling reads the texel that contains
 // the direction w to the receiver; what that texel stores is the distance rasterised along its

@@ -4,7 +4,8 @@
 // maps a direction to a texel (spec, "Cube Map Face Selection": s_c, t_c and the major axis m_a),
 // so that the texel a direction is rendered into is the texel textureLod reads for it:
 // clip = (s_c, t_c, near, m_a), i.e. ndc = (s_c, t_c) / |m_a| and reversed depth near / m_a.
-#include "shadow_push.glsl"
+#include "shared/push_constants.h"
+layout(push_constant) uniform ShadowPushBlock { ShadowPush pc; };
 
 layout(location = 0) in vec3 in_position;
 layout(location = 0) out vec3 out_offset;

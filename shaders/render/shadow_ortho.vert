@@ -1,14 +1,11 @@
 #version 460
+#extension GL_GOOGLE_include_directive : require
 // Orthographic shadow map of a directional VPL (engine/render/directional_frame.h): map
 // coordinates (u, v) / extent → ndc, reversed depth 1 − w / depth so that the surface nearest to
 // the light wins, and w (the distance along the direction of travel from the map's near plane)
 // handed to shadow.frag as the length of a vector.
-layout(push_constant) uniform OrthoPush {
-    vec4 u_origin;    // xyz: map x axis, w: its origin
-    vec4 v_origin;    // map y axis and origin
-    vec4 dir_origin;  // direction of travel and the near plane's w
-    vec4 extents;     // x: window side, y: depth range
-} pc;
+#include "shared/push_constants.h"
+layout(push_constant) uniform OrthoPushBlock { OrthoPush pc; };
 
 layout(location = 0) in vec3 in_position;
 layout(location = 0) out vec3 out_offset;

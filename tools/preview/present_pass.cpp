@@ -12,25 +12,13 @@
 #include "engine/gpu/image.h"
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/vk_check.h"
+#include "shaders/shared/present_push.h"
 #include "tools/preview/hud.h"
 
 namespace mvpl::preview {
 namespace {
 
-struct Push {
-    float scale;
-    float exposure_scale;
-    uint32_t width;
-    uint32_t height;
-    uint32_t source_width;
-    uint32_t source_height;
-    int32_t hud_x;
-    int32_t hud_y;
-    uint32_t hud_width;
-    uint32_t hud_height;
-    uint32_t emission_layer;
-    uint32_t linear_target;
-};
+using Push = shared::PresentPush;
 
 constexpr uint32_t kGroup = 8;  // present.comp's local size
 

@@ -1,7 +1,5 @@
 #include "tools/preview/preview_app.h"
 
-#include <stb_image_write.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -10,7 +8,9 @@
 #include <optional>
 
 #include "engine/core/error.h"
+#include "engine/core/file_extension.h"
 #include "engine/core/image.h"
+#include "engine/core/png.h"
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/swapchain.h"
@@ -44,20 +44,13 @@ constexpr uint32_t kMaxMotionDivisor = 4;
 // more than this in one accumulate(): a wrong estimate costs one frame, not seconds.
 constexpr uint64_t kMaxUnitsPerCall = 64;
 
-bool has_extension(const std::string& path, const char* ext) {
-    std::string e = std::filesystem::path(path).extension().string();
-    std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
-    return e == ext;
-}
-
 void write_rgba_png(const std::string& path, const std::vector<uint8_t>& rgba, uint32_t width,
                     uint32_t height) {
     std::vector<uint8_t> rgb(size_t(width) * height * 3);
     for (size_t i = 0; i < size_t(width) * height; ++i)
         for (int c = 0; c < 3; ++c)
             rgb[3 * i + size_t(c)] = rgba[4 * i + size_t(c)];
-    if (!stbi_write_png(path.c_str(), int(width), int(height), 3, rgb.data(), int(width) * 3))
-        throw std::runtime_error(path + ": cannot write PNG");
+    write_png_rgb8(path, rgb, int(width), int(height));
 }
 
 class PreviewApp {
@@ -296,7 +289,7 @@ void PreviewApp::update_hud(bool force) {
 }
 
 void PreviewApp::save(const std::string& path, bool png_from_display) {
-    if (has_extension(path, ".exr")) {
+    if (lower_extension(path) == ".exr") {
         write_exr(m_renderer.resolve(m_scale), path);
     } else if (png_from_display) {
         uint32_t w = 0, h = 0;

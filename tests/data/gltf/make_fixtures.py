@@ -12,12 +12,13 @@ import json
 import math
 import pathlib
 import struct
-import zlib
+import sys
 
 HERE = pathlib.Path(__file__).resolve().parent
 BAD = HERE.parent / "bad"
 
-FLOAT, UBYTE, USHORT, UINT = 5126, 5121, 5123, 5125
+sys.path.insert(0, str(HERE.parents[2] / "tools"))
+from gltf_writer import FLOAT, UBYTE, UINT, USHORT, Buffer, png  # noqa: E402  (tools/)
 POINTS, LINES, TRIANGLES, STRIP, FAN = 0, 1, 4, 5, 6
 NEAREST, LINEAR = 9728, 9729
 REPEAT, CLAMP, MIRROR = 10497, 33071, 33648
@@ -26,23 +27,12 @@ INF = "@@1e999@@"
 NAN = "@@NaN@@"
 
 
-class Builder:
-    """One binary buffer with its buffer views and accessors."""
+class Builder(Buffer):
+    """One binary buffer with its buffer views (tools/gltf_writer.py) and accessors."""
 
     def __init__(self):
-        self.data = bytearray()
-        self.views = []
+        super().__init__()
         self.accessors = []
-
-    def view(self, payload, stride=None):
-        while len(self.data) % 4:
-            self.data.append(0)
-        view = {"buffer": 0, "byteOffset": len(self.data), "byteLength": len(payload)}
-        if stride:
-            view["byteStride"] = stride
-        self.data += payload
-        self.views.append(view)
-        return len(self.views) - 1
 
     def accessor(self, view, ctype, count, type_, **extra):
         accessor = {"componentType": ctype, "count": count, "type": type_}
@@ -74,25 +64,6 @@ class Builder:
             doc["accessors"] = self.accessors
         doc.update(fields)
         return doc
-
-
-def png(width, height, channels, samples, bits=8):
-    colour_type = {1: 0, 2: 4, 3: 2, 4: 6}[channels]
-    raw = bytearray()
-    for y in range(height):
-        raw.append(0)  # filter: none
-        for x in range(width):
-            for c in range(channels):
-                v = samples[(y * width + x) * channels + c]
-                raw += struct.pack(">H", v) if bits == 16 else bytes([v])
-
-    def chunk(tag, data):
-        return (struct.pack(">I", len(data)) + tag + data +
-                struct.pack(">I", zlib.crc32(tag + data) & 0xFFFFFFFF))
-
-    header = struct.pack(">IIBBBBB", width, height, bits, colour_type, 0, 0, 0)
-    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", zlib.compress(bytes(raw))) +
-            chunk(b"IEND", b""))
 
 
 def png_uri(data):

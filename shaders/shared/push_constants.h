@@ -1,0 +1,71 @@
+// The push constants of the render passes, one definition for the C++ that pushes them and the
+// GLSL that reads them (prelude.h). A stage declares its block around one of these structs,
+//     layout(push_constant) uniform ShadowPushBlock { ShadowPush pc; };
+// which lays it out as the members would be laid out in the block itself (std430).
+#ifndef MVPL_SHADERS_SHARED_PUSH_CONSTANTS_H
+#define MVPL_SHADERS_SHARED_PUSH_CONSTANTS_H
+
+#include "prelude.h"
+
+MVPL_SHARED_BEGIN
+
+// The G-buffer pass (engine/render/g_buffer_pass.cpp; shaders/render/g_buffer_push.glsl): the
+// camera and which material the draw uses.
+struct GBufferPush {
+    mat4 view_proj;  // reversed infinite perspective, Vulkan clip space (image row 0 at the top)
+    uint material_flags;  // bit 0: double-sided
+    uint material;        // index of the scene material: resolve_material's argument
+};
+
+// The material pass of the G-buffer (g_buffer_pass.cpp; shaders/render/material_template.glsl).
+struct MaterialPush {
+    uvec2 size;
+};
+
+// A shadow cube face (engine/render/shadow_pass.cpp; shaders/render/shadow.vert).
+struct ShadowPush {
+    vec4 vpl_near;  // xyz: the VPL's position; w: the near distance (geometry closer is ignored)
+    uvec4 face;     // x: cube face, +X −X +Y −Y +Z −Z
+};
+
+// The orthographic map of a directional VPL (shadow_pass.cpp; shaders/render/shadow_ortho.vert).
+struct OrthoPush {
+    vec4 u_origin;    // xyz: map x axis, w: its origin
+    vec4 v_origin;    // map y axis and origin
+    vec4 dir_origin;  // direction of travel and the near plane's w
+    vec4 extents;     // x: window side, y: depth range
+};
+
+// A batch of the shading pass (engine/render/shading_pass.cpp;
+// shaders/render/shading_template.glsl).
+struct ShadingPush {
+    vec4 camera_position;  // xyz
+    float d_min2;          // squared clamping distance of the geometric term
+    float texel_angle;     // angle of a shadow texel at the centre of a face: 2 / resolution
+    uint vpl_count;
+    uint flags;  // kAddEmission | kShadows
+    uvec2 size;
+};
+const uint kAddEmission = 1u;  // ShadingPush::flags: add the G-buffer's emitted radiance
+const uint kShadows = 2u;      // ShadingPush::flags: test visibility in the shadow maps
+
+#ifdef __cplusplus
+MVPL_STD430_MEMBER(GBufferPush, view_proj);
+static_assert(sizeof(GBufferPush) == 72);
+MVPL_STD430_MEMBER(MaterialPush, size);
+MVPL_STD430_MEMBER(ShadowPush, vpl_near);
+MVPL_STD430_MEMBER(ShadowPush, face);
+static_assert(sizeof(ShadowPush) == 32);
+MVPL_STD430_MEMBER(OrthoPush, u_origin);
+MVPL_STD430_MEMBER(OrthoPush, v_origin);
+MVPL_STD430_MEMBER(OrthoPush, dir_origin);
+MVPL_STD430_MEMBER(OrthoPush, extents);
+static_assert(sizeof(OrthoPush) == 64);
+MVPL_STD430_MEMBER(ShadingPush, camera_position);
+MVPL_STD430_MEMBER(ShadingPush, size);
+static_assert(sizeof(ShadingPush) == 40);
+#endif
+
+MVPL_SHARED_END
+
+#endif
