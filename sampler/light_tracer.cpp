@@ -32,7 +32,7 @@ int LightTracer::max_path_length() const {
     return std::max(m_options.max_depth - 2, -1);
 }
 
-size_t LightTracer::trace(SampleStream& u, float scale, std::vector<light::Vpl>& out) const {
+size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
     const size_t first = out.size();
     // The emission dimensions are always read, so that the layout of u never shifts.
     const float u_pick = u.next();
@@ -46,7 +46,7 @@ size_t LightTracer::trace(SampleStream& u, float scale, std::vector<light::Vpl>&
     // The emitter VPL (path_length 0): the light itself, or the sampled point of an area light.
     light::Vpl emitter;
     emitter.position = es->p;
-    emitter.power = es->le * scale;
+    emitter.power = es->le;
     emitter.path_length = 0;
     trace::Ray ray{es->p, es->direction};
     switch (es->type) {
@@ -95,7 +95,7 @@ size_t LightTracer::trace(SampleStream& u, float scale, std::vector<light::Vpl>&
         vpl.normal = sp.ng;
         vpl.shading_normal = sp.frame.n;
         vpl.wi = wi_world;
-        vpl.power = beta * scale;
+        vpl.power = beta;
         vpl.closure = sp.bsdf.params();
         vpl.path_length = uint32_t(length);
         if (usable(vpl.power)) out.push_back(vpl);

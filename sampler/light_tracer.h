@@ -4,7 +4,7 @@
 //
 // A path x_0 (on a light), x_1, …, x_k leaves an emitter VPL at x_0 (path_length 0: direct light)
 // and a surface VPL at every x_j, j ≥ 1 (all our closures are non-specular). The VPL's power is
-// the path throughput at x_j divided by the number of light paths N:
+// the path throughput at x_j (not divided by the number of light paths: vpl.h):
 //   β_0 = Le·|cos θ_0| / (pick · pdf_pos · pdf_dir)                 (LightSampler::sample_le)
 //   β_j = β_{j−1} · f_{j−1} · |n_g,{j−1}·ω_out| / pdf  ·  |n_s,j·ω_in| / |n_g,j·ω_in|
 // The cosines at x_{j−1} towards x_j are geometric and the cosine at x_j towards x_{j−1} is the
@@ -39,9 +39,9 @@ public:
     LightTracer(const scene::Scene& scene, const trace::Accel& accel,
                 const light::LightSampler& lights, const LightTracerOptions& options = {});
 
-    // Traces one light path from `u` and appends its VPLs, powers scaled by `scale` (1/N), in
-    // path order (emitter VPL first). Returns the number of VPLs appended.
-    size_t trace(SampleStream& u, float scale, std::vector<light::Vpl>& out) const;
+    // Traces one light path from `u` and appends its VPLs in path order (emitter VPL first).
+    // Returns the number of VPLs appended.
+    size_t trace(SampleStream& u, std::vector<light::Vpl>& out) const;
 
     // Largest path_length a VPL may have for the options' max_depth (−1: none at all).
     int max_path_length() const;

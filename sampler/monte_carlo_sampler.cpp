@@ -22,7 +22,7 @@ MonteCarloSampler::MonteCarloSampler(const scene::Scene& scene, const trace::Acc
     : m_scene(scene), m_accel(accel), m_lights(lights) {}
 
 void trace_paths(const LightTracer& tracer, const MonteCarloOptions& options, uint64_t begin,
-                 uint64_t end, float scale, std::vector<light::Vpl>& out, Progress* progress) {
+                 uint64_t end, std::vector<light::Vpl>& out, Progress* progress) {
     if (end <= begin) return;
     const uint64_t seed = mix_bits(options.seed);
     // Streams: 2i for the path's primary samples, 2i + 1 for the One-mode pick.
@@ -43,10 +43,10 @@ void trace_paths(const LightTracer& tracer, const MonteCarloOptions& options, ui
                 path.clear();
                 if (options.qmc) {
                     HaltonStream u(i, shifts, seed, 2 * i);
-                    tracer.trace(u, scale, path);
+                    tracer.trace(u, path);
                 } else {
                     RandomStream u(seed, 2 * i);
-                    tracer.trace(u, scale, path);
+                    tracer.trace(u, path);
                 }
                 if (path.empty()) continue;
                 if (options.per_path == VplsPerPath::All) {
@@ -70,20 +70,20 @@ void trace_paths(const LightTracer& tracer, const MonteCarloOptions& options, ui
         out.insert(out.end(), block.begin(), block.end());
 }
 
-std::vector<light::Vpl> MonteCarloSampler::generate(const MonteCarloOptions& options,
-                                                    SamplerStats* stats) const {
+light::VplSet MonteCarloSampler::generate(const MonteCarloOptions& options,
+                                          SamplerStats* stats) const {
     Timer timer;
     const uint64_t rays_before = m_accel.ray_count();
     const LightTracer tracer(m_scene, m_accel, m_lights, options.tracer);
     const uint64_t n = options.paths;
-    const float scale = n > 0 ? float(1.0 / double(n)) : 0.0f;
     Progress progress("light paths", int64_t((n + kBlock - 1) / kBlock), options.quiet);
-    std::vector<light::Vpl> vpls;
-    if (!m_lights.empty()) trace_paths(tracer, options, 0, n, scale, vpls, &progress);
+    light::VplSet vpls;
+    vpls.scale = n > 0 ? 1.0 / double(n) : 0.0;
+    if (!m_lights.empty()) trace_paths(tracer, options, 0, n, vpls.vpls, &progress);
     progress.finish();
     if (stats) {
         stats->paths = n;
-        stats->vpls = vpls.size();
+        stats->vpls = vpls.vpls.size();
         stats->rays = m_accel.ray_count() - rays_before;
         stats->seconds = timer.seconds();
     }

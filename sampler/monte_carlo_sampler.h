@@ -6,10 +6,10 @@
 // random Cranley–Patterson shift per dimension from the seed, the rest random. Either way the
 // output depends on the seed and the path index only, never on the thread count.
 //
-// VPLs per path: `All` keeps every VPL of the path with power β/N. `One` (the seed report's
-// choice) keeps one VPL picked uniformly among the path's m VPLs with its power multiplied by m —
-// divided by its pick probability 1/m — so its expectation equals the sum of All; it trades more
-// variance for one VPL (one shadow map) per path.
+// VPLs per path: `All` keeps every VPL of the path with power β (the set's scale is 1/N). `One`
+// (the seed report's choice) keeps one VPL picked uniformly among the path's m VPLs with its power
+// multiplied by m — divided by its pick probability 1/m — so its expectation equals the sum of All;
+// it trades more variance for one VPL (one shadow map) per path.
 #include <cstdint>
 #include <vector>
 
@@ -46,9 +46,9 @@ public:
     MonteCarloSampler(const scene::Scene& scene, const trace::Accel& accel,
                       const light::LightSampler& lights);
 
-    // VPLs in path order (within a path, emitter VPL first).
-    std::vector<light::Vpl> generate(const MonteCarloOptions& options,
-                                     SamplerStats* stats = nullptr) const;
+    // VPLs in path order (within a path, emitter VPL first), powers not divided by N; the set's
+    // scale is 1/N (vpl.h).
+    light::VplSet generate(const MonteCarloOptions& options, SamplerStats* stats = nullptr) const;
 
 private:
     const scene::Scene& m_scene;
@@ -57,10 +57,9 @@ private:
 };
 
 // Appends the VPLs of paths [begin, end) of the sequence that `options` defines (seed, qmc,
-// per_path), powers scaled by `scale`, in path order: generate() and the progressive
-// MonteCarloStream produce the same VPLs. Parallel over blocks of paths, deterministic.
+// per_path), in path order: generate() and the progressive MonteCarloStream produce the same
+// VPLs. Parallel over blocks of paths, deterministic.
 void trace_paths(const LightTracer& tracer, const MonteCarloOptions& options, uint64_t begin,
-                 uint64_t end, float scale, std::vector<light::Vpl>& out,
-                 Progress* progress = nullptr);
+                 uint64_t end, std::vector<light::Vpl>& out, Progress* progress = nullptr);
 
 }  // namespace mvpl::sampler

@@ -10,7 +10,7 @@ MonteCarloStream::MonteCarloStream(const scene::Scene& scene, const trace::Accel
       m_no_lights(lights.empty()) {}
 
 void MonteCarloStream::next(uint64_t work, std::vector<light::Vpl>& out) {
-    if (!m_no_lights) trace_paths(m_tracer, m_options, m_paths, m_paths + work, 1.0f, out);
+    if (!m_no_lights) trace_paths(m_tracer, m_options, m_paths, m_paths + work, out);
     m_paths += work;
 }
 

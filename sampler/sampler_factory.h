@@ -7,7 +7,7 @@
 #include "engine/light/light_sampler.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
-#include "sampler/metropolis_sampler.h"
+#include "sampler/metropolis_stream.h"
 #include "sampler/monte_carlo_sampler.h"
 #include "sampler/vpl_stream.h"
 
@@ -23,7 +23,7 @@ struct SamplerSettings {
     // Metropolis (the image size and clamp also shape the importance points)
     int width = 256;
     int height = 256;
-    float clamp = 0.05f;
+    float clamp = ImportanceOptions{}.clamp;
     // Defaults are MetropolisOptions' own (measured there), not copies.
     float large_step = MetropolisOptions{}.large_step;
     float sigma = MetropolisOptions{}.sigma;

@@ -12,8 +12,10 @@
 //   Directional: power · V · f_r(ω_o, −axis) · cos θ'            (V from an orthographic map)
 //
 // with cos θ' = max(0, n'·(−ω)), f_r the receiver's BRDF and f_j the VPL's own closure evaluated
-// with its shading normal (seed eq. 5). `power` already holds the path throughput divided by all
-// sampling densities and by the number of light paths, so that an image is the plain sum.
+// with its shading normal (seed eq. 5). `power` holds the path throughput divided by all sampling
+// densities, NOT by the number of light paths (or chain steps): that factor is the VplSet's
+// `scale`, carried beside the VPLs, so that a sampler run progressively never needs to know its
+// final length. An image is scale · Σ contributions (+ the emission seen directly, unscaled).
 #include <cstdint>
 #include <vector>
 
@@ -24,6 +26,14 @@
 namespace mvpl::light {
 
 enum class VplType : uint32_t { Point = 0, Spot = 1, Area = 2, Surface = 3, Directional = 4 };
+
+// Default clamping distance d_min, as a fraction of the scene's bounding-box diagonal, for every
+// image formed from VPLs (renderer, CPU oracle, Metropolis importance, preview, command line).
+// Measured on the Cornell box (256 paths, 256², against Mitsuba): relMSE 0.039 unclamped, 0.015
+// at 0.01, 0.0073 at 0.02, 0.0034 at 0.05, 0.0032 at 0.1, while the mean darkens by 0.5–1% at
+// 0.05 and 1.5–2% at 0.1 — 0.05 removes nearly all of the singularity's noise for half the bias
+// of 0.1. 0 turns clamping off (unbiased).
+inline constexpr float kDefaultClamp = 0.05f;
 
 struct Vpl {
     VplType type = VplType::Surface;
@@ -38,6 +48,13 @@ struct Vpl {
     float cos_inner = 1.0f;           // Spot only
     float cos_outer = 0.0f;           // Spot only
     uint32_t path_length = 0;         // segments from the light: 0 for emitter VPLs
+};
+
+// VPLs and the factor that turns the sum of their contributions into an estimate: 1/N for N
+// Monte Carlo light paths, b/N for N Metropolis steps, 1 for hand-placed lights.
+struct VplSet {
+    std::vector<Vpl> vpls;
+    double scale = 1.0;
 };
 
 }  // namespace mvpl::light

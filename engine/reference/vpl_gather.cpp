@@ -17,8 +17,8 @@ namespace mvpl::reference {
 namespace {
 
 Rgb shade(const scene::Scene& scene, const trace::Accel& accel,
-          const std::vector<light::PreparedVpl>& vpls, const trace::Ray& camera_ray, float d_min2,
-          bool show_emitters) {
+          const std::vector<light::PreparedVpl>& vpls, double scale, const trace::Ray& camera_ray,
+          float d_min2, bool show_emitters) {
     Rgb L(0.0f);
     const std::optional<light::Receiver> receiver =
         light::make_receiver(scene, accel, camera_ray, show_emitters ? &L : nullptr);
@@ -26,19 +26,18 @@ Rgb shade(const scene::Scene& scene, const trace::Accel& accel,
     DVec3 sum(0.0);
     for (const light::PreparedVpl& pv : vpls)
         sum += DVec3(light::vpl_contribution(accel, *receiver, pv, d_min2));
-    return L + Rgb(sum);
+    return L + Rgb(sum * scale);
 }
 
 }  // namespace
 
-Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel,
-                  const std::vector<light::Vpl>& vpls, const GatherOptions& options,
-                  GatherStats* stats) {
+Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const light::VplSet& vpls,
+                  const GatherOptions& options, GatherStats* stats) {
     Timer timer;
     const uint64_t rays_before = accel.ray_count();
     std::vector<light::PreparedVpl> prepared;
-    prepared.reserve(vpls.size());
-    for (const light::Vpl& v : vpls)
+    prepared.reserve(vpls.vpls.size());
+    for (const light::Vpl& v : vpls.vpls)
         prepared.push_back(light::prepare_vpl(v));
     const float d_min = options.clamp * scene.bounds().diagonal();
     const bool show_emitters = options.max_depth < 0 || options.max_depth >= 1;
@@ -51,7 +50,7 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel,
                 const scene::CameraRay cr =
                     scene::generate_camera_ray(scene.camera, options.width, options.height, film);
                 image.at(x, int(y)) =
-                    shade(scene, accel, prepared, trace::Ray{cr.origin, cr.direction},
+                    shade(scene, accel, prepared, vpls.scale, trace::Ray{cr.origin, cr.direction},
                           d_min * d_min, show_emitters);
             }
             progress.advance();

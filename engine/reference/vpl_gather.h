@@ -6,8 +6,8 @@
 //
 // One camera ray per pixel through the pixel centre (the G-buffer rasterises pixel centres). At
 // its first hit: the emitted radiance seen directly (front face only, when max_depth ≥ 1 or
-// unlimited) plus the sum over VPLs of their contributions, with d_min = clamp · (diagonal of the
-// scene's bounding box); clamp 0 turns clamping off.
+// unlimited) plus the VplSet's scale times the sum over VPLs of their contributions, with
+// d_min = clamp · (diagonal of the scene's bounding box); clamp 0 turns clamping off.
 #include <vector>
 
 #include "engine/core/image.h"
@@ -20,7 +20,7 @@ namespace mvpl::reference {
 struct GatherOptions {
     int width = 256;
     int height = 256;
-    float clamp = 0.0f;  // d_min as a fraction of the scene's bounding-box diagonal
+    float clamp = light::kDefaultClamp;  // d_min as a fraction of the scene's diagonal
     // Mitsuba's max_depth; it only decides whether emitters seen directly are shown (≥ 1 or < 0).
     // Which VPLs exist for that depth is the sampler's business (LightTracer).
     int max_depth = 6;
@@ -33,8 +33,7 @@ struct GatherStats {
 };
 
 // Deterministic, whatever the thread count.
-Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel,
-                  const std::vector<light::Vpl>& vpls, const GatherOptions& options,
-                  GatherStats* stats = nullptr);
+Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const light::VplSet& vpls,
+                  const GatherOptions& options, GatherStats* stats = nullptr);
 
 }  // namespace mvpl::reference

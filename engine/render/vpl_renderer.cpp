@@ -85,12 +85,12 @@ VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene)
 
 VplRenderer::~VplRenderer() = default;
 
-Image VplRenderer::render(const std::vector<light::Vpl>& vpls, const RenderOptions& options,
+Image VplRenderer::render(const light::VplSet& vpls, const RenderOptions& options,
                           RenderTimings* timings) {
     const auto start = std::chrono::steady_clock::now();
     begin(m_impl->camera, options);
-    accumulate(vpls);
-    Image image = resolve(1.0);
+    accumulate(vpls.vpls);
+    Image image = resolve(vpls.scale);
     if (timings) {
         *timings = m_impl->timings;
         timings->wall_ms = milliseconds_since(start);

@@ -1,9 +1,9 @@
 #pragma once
 // The GPU VPL renderer: G-buffer once per view, then per batch of VPLs the shadow cubes and the
-// shading, accumulated into one linear radiance image (DESIGN.md, "GPU passes"). render() takes
-// VPLs whose `power` is already divided by the number of light paths (vpl.h), so its resolve is
-// a plain read-back; the progressive interface (begin/accumulate/resolve) takes any VPL powers and
-// a scale at the end (sampler/vpl_stream.h), for time budgets and the interactive preview.
+// shading, accumulated into one linear radiance image (DESIGN.md, "GPU passes"). VPL powers are
+// not divided by the number of light paths (vpl.h): render() takes a VplSet and applies its scale
+// in the resolve; the progressive interface (begin/accumulate/resolve) takes the scale at the end
+// (sampler/vpl_stream.h), for time budgets and the interactive preview.
 // Tonemapping happens when a PNG is written. Vulkan-free to include (pimpl).
 #include <cstdint>
 #include <functional>
@@ -28,7 +28,7 @@ struct RenderOptions {
     uint32_t shadow_resolution = 256;  // side of a shadow cube face in texels
     uint32_t batch = 32;               // VPLs per shadow/shading batch
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.
-    float clamp = 0.0f;
+    float clamp = light::kDefaultClamp;
     bool shadows = true;  // false: every VPL unshadowed (tests, debugging)
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
@@ -57,9 +57,9 @@ public:
     VplRenderer(const VplRenderer&) = delete;
     VplRenderer& operator=(const VplRenderer&) = delete;
 
-    // Linear radiance seen by the scene camera, row 0 at the top. Emitted radiance of surfaces
-    // seen directly is included once.
-    Image render(const std::vector<light::Vpl>& vpls, const RenderOptions& options,
+    // Linear radiance seen by the scene camera, row 0 at the top: vpls.scale · Σ contributions
+    // plus the emitted radiance of surfaces seen directly (once, unscaled).
+    Image render(const light::VplSet& vpls, const RenderOptions& options,
                  RenderTimings* timings = nullptr);
 
     // Progressive rendering. begin() renders the G-buffer seen by `camera` and clears the

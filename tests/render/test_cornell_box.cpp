@@ -76,7 +76,7 @@ TEST_F(CornellBoxTest, RendersSixtyFourVplsAndReportsPassTimes) {
     options.batch = 32;
     options.clamp = 0.01f;
     RenderTimings timings;
-    const Image image = renderer.render(vpls, options, &timings);
+    const Image image = renderer.render({vpls}, options, &timings);
 
     bool finite = true;
     for (const Rgb& p : image.pixels())
@@ -102,7 +102,7 @@ TEST_F(CornellBoxTest, RendersSixtyFourVplsAndReportsPassTimes) {
             for (bool shadows : {true, false}) {
                 options.batch = batch;
                 options.shadows = shadows;
-                renderer.render(vpls, options, &timings);
+                renderer.render({vpls}, options, &timings);
                 std::cout << "batch " << batch << " shadows " << shadows << ": g-buffer "
                           << timings.g_buffer_ms << " shadow " << timings.shadow_ms << " shading "
                           << timings.shading_ms << " wall " << timings.wall_ms << "\n";

@@ -14,6 +14,7 @@
 #include "engine/trace/accel.h"
 #include "sampler/monte_carlo_sampler.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/support/scaled_vpls.h"
 
 namespace mvpl::render {
 namespace {
@@ -24,7 +25,8 @@ constexpr uint64_t kPaths = 48;
 
 struct CornellBox {
     scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
-    std::vector<light::Vpl> vpls;  // powers divided by kPaths, as render() takes them
+    light::VplSet set;             // powers as traced, scale 1/kPaths
+    std::vector<light::Vpl> vpls;  // the same with the scale folded into the powers
 
     CornellBox() {
         const trace::Accel accel(scene);
@@ -32,7 +34,8 @@ struct CornellBox {
         sampler::MonteCarloOptions o;
         o.paths = kPaths;
         o.seed = 3;
-        vpls = sampler::MonteCarloSampler(scene, accel, lights).generate(o);
+        set = sampler::MonteCarloSampler(scene, accel, lights).generate(o);
+        vpls = test::with_scale_applied(set);
     }
 };
 
@@ -45,9 +48,10 @@ RenderOptions small_options() {
     return o;
 }
 
-// Both images sum the same float contributions, the progressive one with powers ×N and the
-// result ×1/N: each pixel differs by float rounding only — a few ulps of the sum of at most
-// ~200 terms, far below 1e-5 relative (plus an absolute 1e-7 for pixels that are ~0).
+// Both images sum the same float contributions, in other chunks or with the scale folded into
+// the powers instead of applied at the resolve: each pixel differs by float rounding only — a few
+// ulps of the sum of at most ~200 terms, far below 1e-5 relative (plus an absolute 1e-7 for
+// pixels that are ~0).
 void expect_same_image(const Image& a, const Image& b) {
     ASSERT_EQ(a.width(), b.width());
     ASSERT_EQ(a.height(), b.height());
@@ -66,11 +70,9 @@ TEST_F(ProgressiveRenderTest, UnevenChunksWithAScaleEqualTheOneShotRender) {
     const CornellBox box;
     ASSERT_GT(box.vpls.size(), 20u);
     VplRenderer renderer(context(), box.scene);
-    const Image one_shot = renderer.render(box.vpls, small_options());
+    const Image one_shot = renderer.render(box.set, small_options());
 
-    std::vector<light::Vpl> unscaled = box.vpls;
-    for (light::Vpl& v : unscaled)
-        v.power = v.power * float(kPaths);
+    const std::vector<light::Vpl>& unscaled = box.set.vpls;
     renderer.begin(box.scene.camera, small_options());
     // Chunks that straddle batches: 1, 7, 13, then the rest.
     size_t first = 0;
@@ -112,14 +114,14 @@ TEST_F(ProgressiveRenderTest, ScaleMultipliesTheVplsButNotTheEmission) {
 TEST_F(ProgressiveRenderTest, BeginClearsTheAccumulationAndTakesTheNewCamera) {
     const CornellBox box;
     VplRenderer renderer(context(), box.scene);
-    const Image one_shot = renderer.render(box.vpls, small_options());
+    const Image one_shot = renderer.render({box.vpls}, small_options());
 
     // The moved view must look like a renderer built for a scene with that camera.
     scene::Scene moved_scene = box.scene;
     const float step = 0.1f * box.scene.bounds().diagonal();
     moved_scene.camera.camera_to_world[3] += Vec4(step, 0.5f * step, 0.0f, 0.0f);
     const Image moved_one_shot =
-        VplRenderer(context(), moved_scene).render(box.vpls, small_options());
+        VplRenderer(context(), moved_scene).render({box.vpls}, small_options());
     renderer.begin(moved_scene.camera, small_options());
     renderer.accumulate(box.vpls);
     const Image other_view = renderer.resolve(1.0);

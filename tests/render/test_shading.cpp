@@ -43,7 +43,8 @@ TEST_F(ShadingTest, APointVplOverADiffusePlaneGivesTheAnalyticDirectLight) {
     options.width = options.height = kSize;
     options.shadow_resolution = 32;
     options.batch = 4;
-    const Image image = renderer.render({vpl}, options);
+    options.clamp = 0.0f;
+    const Image image = renderer.render({{vpl}}, options);
 
     int lit = 0;
     float worst = 0.0f;
@@ -117,7 +118,7 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
     options.shadow_resolution = 32;
     options.batch = 3;      // two batches: accumulation across batches is part of the test
     options.clamp = 0.05f;  // d_min = 0.05 · diagonal ≈ 0.28: active for the nearby pixels
-    const Image image = renderer.render(vpls, options);
+    const Image image = renderer.render({vpls}, options);
 
     const float d_min = options.clamp * std::sqrt(32.0f);  // the floor's diagonal
     const material::ClosureParams receiver = testing::closure_of(glossy);
@@ -162,9 +163,10 @@ TEST_F(ShadingTest, EmittedRadianceIsAddedOnceWhateverTheNumberOfBatches) {
     options.width = options.height = 16;
     options.shadow_resolution = 16;
     options.batch = 1;
+    options.clamp = 0.0f;
     RenderTimings timings;
     for (const std::vector<light::Vpl>& list : {std::vector<light::Vpl>{}, vpls}) {
-        const Image image = renderer.render(list, options, &timings);
+        const Image image = renderer.render({list}, options, &timings);
         EXPECT_EQ(timings.batches, uint32_t(list.size()));
         int covered = 0;
         for (int y = 0; y < 16; ++y) {

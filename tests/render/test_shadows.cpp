@@ -45,6 +45,7 @@ RenderOptions small_options() {
     options.width = options.height = kSize;
     options.shadow_resolution = kShadowResolution;
     options.batch = 8;
+    options.clamp = 0.0f;
     return options;
 }
 
@@ -103,7 +104,7 @@ TEST_F(ShadowTest, AnOccluderCastsASharpShadowWithinTheShadowMapResolution) {
     const scene::Scene scene = occluder_scene();
     const light::Vpl vpl = point_vpl();
     VplRenderer renderer(context(), scene);
-    const Image image = renderer.render({vpl}, small_options());
+    const Image image = renderer.render({{vpl}}, small_options());
 
     // Where a shadow-map lookup may legitimately disagree with an exact shadow ray: a cube texel
     // at a face centre subtends 2/res rad (less towards the corners); the nearest lookup reads a
@@ -138,7 +139,7 @@ TEST_F(ShadowTest, ADirectionalVplCastsAShadowThroughItsOrthographicMap) {
     vpl.normal = glm::normalize(Vec3(0.25f, -1.0f, 0.15f));
     vpl.power = Rgb(1.5f, 1.0f, 0.5f);
     VplRenderer renderer(context(), scene);
-    const Image image = renderer.render({vpl}, small_options());
+    const Image image = renderer.render({{vpl}}, small_options());
 
     // The map's texels are extent/res wide across the direction; the same 1.25-texel tolerance
     // as for cubes, carried onto the occluder's plane (normal +y) by 1/|dir.y|.
@@ -185,7 +186,7 @@ TEST_F(ShadowTest, TheImageDoesNotDependOnTheSceneScale) {
         VplRenderer renderer(context(), scene);
         RenderOptions options = small_options();
         options.clamp = 0.02f;  // relative to the scene's diagonal: scales along
-        images.push_back(renderer.render(vpls, options));
+        images.push_back(renderer.render({vpls}, options));
     }
     for (size_t i = 1; i < images.size(); ++i) {
         int differ = 0;

@@ -86,7 +86,7 @@ TEST_F(TexturedSceneTest, GBufferResolvesTexturesAndNormalMapsAsTheCpu) {
 TEST_F(TexturedSceneTest, GpuAgreesWithTheOracleWithTexturesAndNormalMaps) {
     const scene::Scene s = scene::load_scene(kScene);
     ASSERT_EQ(s.textures.size(), 3u);
-    const std::vector<light::Vpl> vpls = test::monte_carlo_vpls(s, 48, 6, 3);
+    const light::VplSet vpls = test::monte_carlo_vpls(s, 48, 6, 3);
     const test::VplRenderSettings settings{.res = 64, .shadow_res = 256, .clamp = 0.05f};
     const Image oracle = test::oracle_render(s, vpls, settings);
     const Image gpu = test::gpu_render(context(), s, vpls, settings);
@@ -168,7 +168,7 @@ TEST_F(TexturedSceneTest, GpuMatchesThePathTracerWithinTheClampingBias) {
     Rgb oracle_clamped(0.0f);
     Rgb oracle_unclamped(0.0f);
     for (int g = 0; g < kGroups; ++g) {
-        const std::vector<light::Vpl> vpls = test::monte_carlo_vpls(s, 128, 6, uint64_t(100 + g));
+        const light::VplSet vpls = test::monte_carlo_vpls(s, 128, 6, uint64_t(100 + g));
         emitted.seed = uint64_t(300 + g);
         const Rgb emitted_box = tracer.render(emitted).mean();
         gpu_runs.push_back(test::gpu_render(context(), s, vpls, clamped).mean() - emitted_centres +

@@ -22,14 +22,13 @@ namespace {
 using VplPipelineTest = gpu::testing::GpuTest;
 using test::monte_carlo_vpls;
 
-Image gpu_render(gpu::Context& context, const scene::Scene& s, const std::vector<light::Vpl>& vpls,
-                 int res, int shadow_res, float clamp) {
+Image gpu_render(gpu::Context& context, const scene::Scene& s, const light::VplSet& vpls, int res,
+                 int shadow_res, float clamp) {
     return test::gpu_render(context, s, vpls,
                             {.res = res, .shadow_res = shadow_res, .clamp = clamp});
 }
 
-Image oracle_render(const scene::Scene& s, const std::vector<light::Vpl>& vpls, int res,
-                    float clamp) {
+Image oracle_render(const scene::Scene& s, const light::VplSet& vpls, int res, float clamp) {
     return test::oracle_render(s, vpls, {.res = res, .clamp = clamp});
 }
 
@@ -44,7 +43,7 @@ TEST_F(VplPipelineTest, GpuAgreesWithTheOracleWithinTheShadowMapResolution) {
     for (const char* path : {"/cornell-box/cbox.gltf", "/two-room/two-room.gltf"}) {
         SCOPED_TRACE(path);
         const scene::Scene s = scene::load_scene(std::string(MVPL_ASSETS_DIR) + path);
-        const std::vector<light::Vpl> vpls = monte_carlo_vpls(s, 48, 6, 3);
+        const light::VplSet vpls = monte_carlo_vpls(s, 48, 6, 3);
         const Image oracle = oracle_render(s, vpls, 64, 0.05f);
         const double coarse =
             compare_images(gpu_render(context(), s, vpls, 64, 128, 0.05f), oracle).rel_mse;
@@ -66,7 +65,7 @@ TEST_F(VplPipelineTest, GpuAgreesWithTheOracleWithinTheShadowMapResolution) {
 TEST_F(VplPipelineTest, CornellBoxMatchesMitsubaWithClampingOff) {
     const scene::Scene s = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
     constexpr int kRes = 128;
-    const std::vector<light::Vpl> vpls = monte_carlo_vpls(s, 1024, 6, 1);
+    const light::VplSet vpls = monte_carlo_vpls(s, 1024, 6, 1);
     const Rgb with_vpls = gpu_render(context(), s, vpls, kRes, 128, 0.0f).mean();
     const Rgb emitted_centres = gpu_render(context(), s, {}, kRes, 128, 0.0f).mean();
     const trace::Accel accel(s);
@@ -88,9 +87,10 @@ TEST_F(VplPipelineTest, CornellBoxMatchesMitsubaWithClampingOff) {
 TEST_F(VplPipelineTest, PointLightDirectLightIsAnalytic) {
     const scene::Light l = test::example_point_light();
     const scene::Scene s = test::make_lit_plane(l);
-    const std::vector<light::Vpl> vpls = monte_carlo_vpls(s, 16, 2, 0);
+    const light::VplSet set = monte_carlo_vpls(s, 16, 2, 0);
+    const std::vector<light::Vpl>& vpls = set.vpls;
     ASSERT_FALSE(vpls.empty());
-    const Image image = gpu_render(context(), s, vpls, 32, 64, 0.0f);
+    const Image image = gpu_render(context(), s, set, 32, 64, 0.0f);
     double worst = 0.0;
     for (int y = 0; y < 32; ++y) {
         for (int x = 0; x < 32; ++x) {

@@ -35,12 +35,14 @@ void expect_oracle_matches_analytic(const scene::Scene& s) {
     sampler::MonteCarloOptions o;
     o.paths = 1;
     o.tracer.max_depth = 2;
-    const auto vpls = sampler::MonteCarloSampler(s, accel, lights).generate(o);
+    const light::VplSet set = sampler::MonteCarloSampler(s, accel, lights).generate(o);
+    const std::vector<light::Vpl>& vpls = set.vpls;
     ASSERT_EQ(vpls.size(), 1u);
     reference::GatherOptions g;
     g.width = g.height = kRes;
     g.max_depth = 2;
-    const Image image = reference::gather_vpls(s, accel, vpls, g);
+    g.clamp = 0.0f;
+    const Image image = reference::gather_vpls(s, accel, set, g);
     double lit = 0.0;
     for (int y = 0; y < kRes; ++y) {
         for (int x = 0; x < kRes; ++x) {

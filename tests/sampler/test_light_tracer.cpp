@@ -11,6 +11,7 @@
 #include "sampler/monte_carlo_sampler.h"
 #include "sampler/sample_stream.h"
 #include "tests/sampler/vpl_test_util.h"
+#include "tests/support/scaled_vpls.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl {
@@ -43,7 +44,8 @@ protected:
         delete s_scene;
     }
     std::vector<light::Vpl> generate(const MonteCarloOptions& o) const {
-        return sampler::MonteCarloSampler(*s_scene, *s_accel, *s_lights).generate(o);
+        return test::with_scale_applied(
+            sampler::MonteCarloSampler(*s_scene, *s_accel, *s_lights).generate(o));
     }
     static scene::Scene* s_scene;
     static trace::Accel* s_accel;
@@ -147,7 +149,8 @@ TEST(EmitterVpls, PowersFollowTheDensities) {
     MonteCarloOptions o;
     o.paths = 400;
     o.tracer.max_depth = 2;
-    const auto vpls = sampler::MonteCarloSampler(s, accel, lights).generate(o);
+    const auto vpls =
+        test::with_scale_applied(sampler::MonteCarloSampler(s, accel, lights).generate(o));
     ASSERT_EQ(vpls.size(), o.paths);
     const float n = float(o.paths);
     const float pick_point = lights.emitters().back().power / lights.total_power();

@@ -11,9 +11,10 @@
 #include "engine/light/light_sampler.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/metropolis_sampler.h"
+#include "sampler/metropolis_stream.h"
 #include "sampler/monte_carlo_stream.h"
 #include "sampler/sampler_factory.h"
+#include "tests/support/scaled_vpls.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl {
@@ -59,7 +60,8 @@ TEST(MonteCarloStream, MatchesGenerate) {
     sampler::MonteCarloOptions o;
     o.paths = 700;
     o.seed = 3;
-    const auto whole = sampler::MonteCarloSampler(l.scene, l.accel, l.lights).generate(o);
+    const auto whole = test::with_scale_applied(
+        sampler::MonteCarloSampler(l.scene, l.accel, l.lights).generate(o));
     sampler::MonteCarloStream stream(l.scene, l.accel, l.lights, o);
     std::vector<light::Vpl> parts;
     stream.next(300, parts);

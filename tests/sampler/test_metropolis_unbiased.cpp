@@ -9,7 +9,7 @@
 #include "engine/reference/vpl_gather.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/metropolis_sampler.h"
+#include "sampler/metropolis_stream.h"
 #include "sampler/monte_carlo_stream.h"
 
 namespace mvpl {
@@ -44,9 +44,7 @@ TEST(MetropolisUnbiased, CornellBoxMatchesMonteCarlo) {
     auto estimate = [&](sampler::VplStream& s) {
         std::vector<light::Vpl> v;
         s.next(kWork, v);
-        for (light::Vpl& x : v)
-            x.power *= float(s.scale());
-        return regions(reference::gather_vpls(scene, accel, v, g));
+        return regions(reference::gather_vpls(scene, accel, {std::move(v), s.scale()}, g));
     };
     std::vector<std::vector<double>> mc, metro;
     for (int r = 0; r < kRuns; ++r) {

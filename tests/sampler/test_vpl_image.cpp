@@ -47,6 +47,7 @@ TEST(VplImage, CornellBoxIsUnbiased) {
     reference::GatherOptions g;
     g.width = g.height = kRes;
     g.max_depth = 1;
+    g.clamp = 0.0f;
     const Rgb emitted_centres = reference::gather_vpls(s, accel, {}, g).mean();
     reference::PathTracerOptions p;
     p.width = p.height = kRes;
@@ -146,15 +147,18 @@ TEST(VplImage, Throughput) {
     sampler::MonteCarloOptions o;
     o.paths = 50000;
     sampler::SamplerStats stats;
-    const auto vpls = mc.generate(o, &stats);
+    const light::VplSet all = mc.generate(o, &stats);
+    const std::vector<light::Vpl>& vpls = all.vpls;
     const double vpl_rate = double(stats.vpls) / stats.seconds;
     o.paths = 300;
-    auto subset = mc.generate(o);
-    subset.resize(std::min<size_t>(subset.size(), 1000));
+    light::VplSet set = mc.generate(o);
+    set.vpls.resize(std::min<size_t>(set.vpls.size(), 1000));
+    const std::vector<light::Vpl>& subset = set.vpls;
     reference::GatherOptions g;
     g.width = g.height = 128;
+    g.clamp = 0.0f;
     reference::GatherStats gs;
-    reference::gather_vpls(s, accel, subset, g, &gs);
+    reference::gather_vpls(s, accel, set, g, &gs);
     const double per_1000 = gs.seconds * 1000.0 / double(subset.size());
     std::printf("light tracer: %llu paths, %llu VPLs in %.3f s = %.0f VPL/s (%.2f Mrays/s)\n",
                 (unsigned long long)stats.paths, (unsigned long long)stats.vpls, stats.seconds,

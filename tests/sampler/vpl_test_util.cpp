@@ -31,6 +31,7 @@ BatchedImage batched_oracle(const scene::Scene& scene, sampler::MonteCarloOption
     reference::GatherOptions g;
     g.width = g.height = resolution;
     g.max_depth = max_depth;
+    g.clamp = 0.0f;
     options.tracer.max_depth = max_depth;
     BatchedImage out;
     const uint64_t seed = options.seed;

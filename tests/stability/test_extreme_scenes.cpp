@@ -64,10 +64,11 @@ TEST_F(ExtremeSceneTest, SameImageAtAnyScaleWithAreaAndPointLights) {
 TEST_F(ExtremeSceneTest, IntegratingSphereOfAlbedo099MatchesTheAnalyticRadiance) {
     constexpr float kAlbedo = 0.99f, kRadius = 2.0f, kIntensity = 5.0f;
     const scene::Scene s = test::make_integrating_sphere(kAlbedo, kRadius, kIntensity);
-    const std::vector<light::Vpl> vpls = test::monte_carlo_vpls(s, 8192, -1, 21);
+    const light::VplSet set = test::monte_carlo_vpls(s, 8192, -1, 21);
+    const std::vector<light::Vpl>& vpls = set.vpls;
     ASSERT_GT(vpls.size(), 8192u * 20u) << "paths should be long at albedo 0.99";
     const Image image = test::gpu_render(
-        context(), s, vpls,
+        context(), s, set,
         {.res = 8, .shadow_res = 16, .clamp = 0.0f, .shadows = false, .batch = 256});
     EXPECT_EQ(non_finite_pixels(image), 0);
     const double expected = kAlbedo * kIntensity / (kPi * kRadius * kRadius * (1.0 - kAlbedo));
@@ -114,15 +115,16 @@ TEST_F(ExtremeSceneTest, ImageScalesLinearlyWithLightIntensity) {
 // GPU agrees with the oracle as on any scene (the bound of tests/render/test_vpl_pipeline.cpp).
 TEST_F(ExtremeSceneTest, DegenerateAndSliverTrianglesGiveFiniteImages) {
     const scene::Scene s = test::make_degenerate_scene();
-    const std::vector<light::Vpl> vpls = test::monte_carlo_vpls(s, 256, 6, 2);
+    const light::VplSet set = test::monte_carlo_vpls(s, 256, 6, 2);
+    const std::vector<light::Vpl>& vpls = set.vpls;
     for (const light::Vpl& v : vpls) {
         ASSERT_TRUE(is_finite(v.position) && is_finite(v.normal) && is_finite(v.shading_normal));
         ASSERT_TRUE(std::isfinite(v.power.r) && std::isfinite(v.power.g) &&
                     std::isfinite(v.power.b));
     }
     const test::VplRenderSettings settings{.res = 48, .shadow_res = 256, .clamp = 0.05f};
-    const Image gpu = test::gpu_render(context(), s, vpls, settings);
-    const Image oracle = test::oracle_render(s, vpls, settings);
+    const Image gpu = test::gpu_render(context(), s, set, settings);
+    const Image oracle = test::oracle_render(s, set, settings);
     EXPECT_EQ(non_finite_pixels(gpu), 0);
     EXPECT_EQ(non_finite_pixels(oracle), 0);
     EXPECT_GT(oracle.mean().g, 0.0f);

@@ -33,7 +33,7 @@ int non_finite_pixels(const Image& image) {
 // oracle's is bounded by its own finite sums.
 TEST_F(PrecisionTest, NearMirrorAtGrazingAnglesAgreesWithTheOracle) {
     const scene::Scene s = test::make_near_mirror_scene();
-    const std::vector<light::Vpl> vpls = test::monte_carlo_vpls(s, 96, 6, 7);
+    const light::VplSet vpls = test::monte_carlo_vpls(s, 96, 6, 7);
     const test::VplRenderSettings settings{.res = 64, .shadow_res = 256, .clamp = 0.05f};
     const Image gpu = test::gpu_render(context(), s, vpls, settings);
     const Image oracle = test::oracle_render(s, vpls, settings);
@@ -90,7 +90,7 @@ TEST_F(PrecisionTest, VplTouchingItsReceiverWithClampingOffIsFinite) {
         EXPECT_NO_THROW(image = renderer.resolve(1.0)) << "shadows " << shadows;
         EXPECT_EQ(non_finite_pixels(image), 0);
     }
-    EXPECT_EQ(non_finite_pixels(test::oracle_render(s, vpls, {.res = kRes, .clamp = 0.0f})), 0);
+    EXPECT_EQ(non_finite_pixels(test::oracle_render(s, {vpls}, {.res = kRes, .clamp = 0.0f})), 0);
 }
 
 // 10⁵ point VPLs with powers over six orders of magnitude, unshadowed, summed in float by the GPU

@@ -8,8 +8,8 @@
 
 namespace mvpl::test {
 
-std::vector<light::Vpl> monte_carlo_vpls(const scene::Scene& scene, uint64_t paths, int max_depth,
-                                         uint64_t seed) {
+light::VplSet monte_carlo_vpls(const scene::Scene& scene, uint64_t paths, int max_depth,
+                               uint64_t seed) {
     const trace::Accel accel(scene);
     const light::LightSampler lights(scene);
     sampler::MonteCarloOptions o;
@@ -19,8 +19,8 @@ std::vector<light::Vpl> monte_carlo_vpls(const scene::Scene& scene, uint64_t pat
     return sampler::MonteCarloSampler(scene, accel, lights).generate(o);
 }
 
-Image gpu_render(gpu::Context& context, const scene::Scene& scene,
-                 const std::vector<light::Vpl>& vpls, const VplRenderSettings& settings) {
+Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::VplSet& vpls,
+                 const VplRenderSettings& settings) {
     render::VplRenderer renderer(context, scene);
     render::RenderOptions o;
     o.width = o.height = uint32_t(settings.res);
@@ -31,7 +31,7 @@ Image gpu_render(gpu::Context& context, const scene::Scene& scene,
     return renderer.render(vpls, o);
 }
 
-Image oracle_render(const scene::Scene& scene, const std::vector<light::Vpl>& vpls,
+Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
                     const VplRenderSettings& settings) {
     const trace::Accel accel(scene);
     reference::GatherOptions o;

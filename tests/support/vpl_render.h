@@ -14,9 +14,9 @@ class Context;
 
 namespace mvpl::test {
 
-// VPLs of `paths` Monte Carlo light paths (every VPL of a path kept, powers divided by paths).
-std::vector<light::Vpl> monte_carlo_vpls(const scene::Scene& scene, uint64_t paths, int max_depth,
-                                         uint64_t seed);
+// VPLs of `paths` Monte Carlo light paths (every VPL of a path kept; scale 1/paths).
+light::VplSet monte_carlo_vpls(const scene::Scene& scene, uint64_t paths, int max_depth,
+                               uint64_t seed);
 
 struct VplRenderSettings {
     int res = 64;          // square image
@@ -27,10 +27,10 @@ struct VplRenderSettings {
 };
 
 // The GPU renderer's image of `vpls` seen by the scene camera.
-Image gpu_render(gpu::Context& context, const scene::Scene& scene,
-                 const std::vector<light::Vpl>& vpls, const VplRenderSettings& settings);
+Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::VplSet& vpls,
+                 const VplRenderSettings& settings);
 // The CPU oracle's image of the same VPLs (exact visibility; settings.shadow_res unused).
-Image oracle_render(const scene::Scene& scene, const std::vector<light::Vpl>& vpls,
+Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
                     const VplRenderSettings& settings);
 
 }  // namespace mvpl::test

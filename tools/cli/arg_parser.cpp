@@ -88,6 +88,10 @@ void ArgParser::add_positional(const std::string& name, std::string* target,
     m_positional_help.push_back(help);
 }
 
+void ArgParser::add_check(std::function<void()> check) {
+    m_checks.push_back(std::move(check));
+}
+
 const ArgParser::Option* ArgParser::find(const std::string& name) const {
     for (const Option& o : m_options) {
         if (o.name == name) return &o;
@@ -137,6 +141,8 @@ bool ArgParser::parse(const std::vector<std::string>& args) {
         throw UsageError(m_command + ": missing " + m_positionals[positional].first +
                          " (see mvpl " + m_command + " --help)");
     }
+    for (const auto& check : m_checks)
+        check();
     return true;
 }
 

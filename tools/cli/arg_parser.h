@@ -1,6 +1,8 @@
 #pragma once
 // A small declarative command-line parser: each command binds its options to variables, then
-// parse() fills them or throws UsageError with one line naming the offending argument.
+// parse() fills them or throws UsageError with one line naming the offending argument. Checks
+// (add_check) run after every argument was read, so that an option group (option_groups.h)
+// declares its options and their ranges in one place.
 #include <cstdint>
 #include <functional>
 #include <string>
@@ -24,6 +26,10 @@ public:
     void add_resolution(const std::string& name, int* width, int* height, const std::string& help);
     // Positional arguments, in order; all required.
     void add_positional(const std::string& name, std::string* target, const std::string& help);
+    // Runs after a successful parse, in the order added; throws UsageError on a bad value.
+    void add_check(std::function<void()> check);
+    // The command name, the prefix of every error message ("render: --batch must be …").
+    const std::string& command() const { return m_command; }
 
     // Returns false when --help was given (usage already printed to stdout).
     bool parse(const std::vector<std::string>& args);
@@ -43,6 +49,7 @@ private:
     std::vector<Option> m_options;
     std::vector<std::pair<std::string, std::string*>> m_positionals;
     std::vector<std::string> m_positional_help;
+    std::vector<std::function<void()>> m_checks;
 };
 
 }  // namespace mvpl::cli

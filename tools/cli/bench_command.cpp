@@ -15,14 +15,13 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/memory.h"
-#include "engine/light/light_sampler.h"
 #include "engine/render/vpl_renderer.h"
-#include "engine/scene/scene_loader.h"
-#include "engine/trace/accel.h"
 #include "sampler/monte_carlo_sampler.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/bench_report.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/option_groups.h"
+#include "tools/session/scene_session.h"
 
 namespace mvpl::cli {
 
@@ -31,13 +30,6 @@ namespace {
 // --sweep: batch sizes × shadow face sides, around the defaults (32, 256).
 constexpr int kSweepBatches[] = {8, 16, 32, 64, 128};
 constexpr int kSweepShadowResolutions[] = {128, 256, 512};
-
-// Bounded like `mvpl render`'s options (the renderer's limits).
-void check_config(const BenchConfig& c) {
-    if (c.shadow_resolution < 4 || c.shadow_resolution > 4096)
-        throw UsageError("bench: --shadow-res must be in 4..4096");
-    if (c.batch < 1 || c.batch > 256) throw UsageError("bench: --batch must be in 1..256");
-}
 
 render::RenderOptions render_options(const BenchConfig& c, float clamp, bool shadows) {
     render::RenderOptions ro;
@@ -50,14 +42,14 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     return ro;
 }
 
-// One progressive render of all VPLs (powers already divided by the path count).
+// One progressive render of all VPLs.
 RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& camera,
-                         const std::vector<light::Vpl>& vpls, const BenchConfig& config,
-                         float clamp, bool shadows) {
+                         const light::VplSet& vpls, const BenchConfig& config, float clamp,
+                         bool shadows) {
     Timer wall;
     renderer.begin(camera, render_options(config, clamp, shadows));
-    renderer.accumulate(vpls);
-    [[maybe_unused]] const Image image = renderer.resolve(1.0);  // read-back is part of the cost
+    renderer.accumulate(vpls.vpls);
+    [[maybe_unused]] const Image image = renderer.resolve(vpls.scale);  // read-back costs too
     RenderSample s;
     s.wall_s = wall.seconds();
     const render::RenderTimings& t = renderer.timings();
@@ -88,9 +80,8 @@ int run_bench(const Args& args) {
     BenchConfig config;
     uint64_t paths = 256;
     int repeat = 3;
-    int max_depth = 6;
-    uint64_t seed = 0;
-    float clamp = 0.05f;
+    sampler::MonteCarloOptions mc;
+    RendererArgs renderer_args;
     std::string json_path;
     bool sweep = false, quiet = false, no_shadows = false;
     ArgParser parser("bench",
@@ -99,13 +90,10 @@ int run_bench(const Args& args) {
                      "Every number is the median of --repeat runs.");
     parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .ply, .obj)");
     parser.add_resolution("--res", &config.width, &config.height, "image size WxH");
-    parser.add_int("--shadow-res", &config.shadow_resolution,
-                   "side of a shadow cube face in texels");
-    parser.add_int("--batch", &config.batch, "VPLs per shadow/shading batch");
+    add_renderer_options(parser, renderer_args);
     parser.add_uint64("--vpls", &paths, "light paths to trace, one VPL per bounce");
-    parser.add_int("--max-depth", &max_depth, "path segments camera to light (-1 unlimited)");
-    parser.add_float("--clamp", &clamp, "clamping distance / scene diagonal");
-    parser.add_uint64("--seed", &seed, "random seed");
+    add_max_depth_option(parser, mc.tracer.max_depth);
+    add_seed_option(parser, mc.seed);
     parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported");
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512²");
@@ -115,11 +103,14 @@ int run_bench(const Args& args) {
     parser.add_string("--json", &json_path, "write the results as JSON to this file");
     parser.add_flag("--quiet", &quiet, "no progress bar and no table");
     if (!parser.parse(args)) return 0;
-    check_config(config);
+    config.shadow_resolution = renderer_args.shadow_res;
+    config.batch = renderer_args.batch;
+    const float clamp = renderer_args.clamp;
+    mc.paths = paths;
+    const int max_depth = mc.tracer.max_depth;
     if (paths < 1 || paths > (uint64_t(1) << 24))
         throw UsageError("bench: --vpls must be in 1..2^24");
     if (repeat < 1 || repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
-    if (!(clamp >= 0.0f && clamp <= 1.0f)) throw UsageError("bench: --clamp must be in [0, 1]");
     if (max_depth < -1 || max_depth == 0)
         throw UsageError("bench: --max-depth must be -1 or at least 1");
 
@@ -149,18 +140,12 @@ int run_bench(const Args& args) {
     Progress progress("bench", int64_t(repeat) * int64_t(1 + sweep_configs.size()), quiet);
     for (int k = 0; k < repeat; ++k) {
         // Everything from scratch each repeat, so that start-up is measured K times too.
+        const session::SceneSession session(scene_path);
+        const scene::Scene& scene = session.scene();
+        load_s.push_back(session.load_seconds());
+        bvh_s.push_back(session.bvh_seconds());
+        session.warn_if_no_light("nothing to bench", k > 0 || quiet);
         Timer t;
-        const scene::Scene scene = scene::load_scene(scene_path);
-        load_s.push_back(t.seconds());
-        t.reset();
-        const trace::Accel accel(scene);
-        bvh_s.push_back(t.seconds());
-        const light::LightSampler lights(scene);
-        if (k == 0 && lights.empty() && !quiet) {
-            std::fprintf(stderr, "mvpl: warning: %s: the scene has no light; nothing to bench\n",
-                         scene_path.c_str());
-        }
-        t.reset();
         gpu::Context context;
         context_s.push_back(t.seconds());
         t.reset();
@@ -170,15 +155,11 @@ int run_bench(const Args& args) {
         renderer.begin(scene.camera, render_options(config, clamp, !no_shadows));
         renderer_s.push_back(t.seconds());
 
-        sampler::MonteCarloOptions mc;
-        mc.paths = paths;
-        mc.seed = seed;
-        mc.tracer.max_depth = max_depth;
         t.reset();
-        const std::vector<light::Vpl> vpls =
-            sampler::MonteCarloSampler(scene, accel, lights).generate(mc);
+        const light::VplSet vpls =
+            sampler::MonteCarloSampler(scene, session.accel(), session.lights()).generate(mc);
         sampling_s.push_back(t.seconds());
-        report.vpls = vpls.size();
+        report.vpls = vpls.vpls.size();
         report.triangles = scene.triangle_count();
         report.device = context.device_info().name;
 

@@ -9,15 +9,14 @@
 #include "engine/core/error.h"
 #include "engine/core/image.h"
 #include "engine/gpu/context.h"
-#include "engine/light/light_sampler.h"
 #include "engine/render/vpl_renderer.h"
-#include "engine/scene/scene_loader.h"
-#include "engine/trace/accel.h"
 #include "sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/convergence_analysis.h"
 #include "tools/cli/convergence_runs.h"
+#include "tools/cli/option_groups.h"
+#include "tools/session/scene_session.h"
 
 namespace mvpl::cli {
 
@@ -86,9 +85,9 @@ int run_convergence(const Args& args) {
     std::string scene_path, ref_path, out_dir = "convergence";
     std::string methods_text = "pt,mc,metropolis";
     float budget = 10.0f;
-    int max_depth = 6, width = 0, height = 0, shadow_res = 256, batch = 32;
-    float clamp = 0.05f;
-    uint64_t seed = 0;
+    int width = 0, height = 0;
+    sampler::SamplerSettings settings;  // max depth and seed; the rest is each sampler's default
+    RendererArgs renderer_args;
     bool quiet = false, no_plot = false;
     ArgParser parser(
         "convergence",
@@ -100,25 +99,18 @@ int run_convergence(const Args& args) {
     parser.add_string("--ref", &ref_path, "reference image (.exr); its size is the image size");
     parser.add_float("--budget", &budget, "seconds per method");
     parser.add_string("--out", &out_dir, "output directory");
-    parser.add_int("--max-depth", &max_depth, "path segments camera to light (-1 unlimited)");
+    add_max_depth_option(parser, settings.tracer.max_depth);
     parser.add_resolution("--res", &width, &height,
                           "image size WxH (default and only allowed: the reference's)");
     parser.add_string("--methods", &methods_text, "comma-separated: pt,mc,metropolis");
-    parser.add_float("--clamp", &clamp, "VPL clamping distance, fraction of the scene diagonal");
-    parser.add_int("--shadow-res", &shadow_res, "side of a shadow cube face in texels");
-    parser.add_int("--batch", &batch, "VPLs per shadow/shading batch");
-    parser.add_uint64("--seed", &seed, "random seed");
+    add_renderer_options(parser, renderer_args);
+    add_seed_option(parser, settings.seed);
     parser.add_flag("--no-plot", &no_plot, "write the CSV only");
     parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
     if (!parser.parse(args)) return 0;
     if (ref_path.empty()) throw UsageError("convergence: --ref REF.exr is required");
     if (!(budget > 0.0f && budget <= 1e6f))
         throw UsageError("convergence: --budget must be in (0, 1e6] seconds");
-    if (!(clamp >= 0.0f && clamp <= 1.0f))
-        throw UsageError("convergence: --clamp must be in [0, 1]");
-    if (shadow_res < 4 || shadow_res > 4096)
-        throw UsageError("convergence: --shadow-res must be in 4..4096");
-    if (batch < 1 || batch > 256) throw UsageError("convergence: --batch must be in 1..256");
     const std::vector<std::string> methods = split_commas(methods_text);
     if (methods.empty()) throw UsageError("convergence: --methods names no method");
     for (const std::string& m : methods) {
@@ -134,19 +126,20 @@ int run_convergence(const Args& args) {
                          std::to_string(reference.width()) + "x" +
                          std::to_string(reference.height()));
     }
-    const scene::Scene scene = scene::load_scene(scene_path);
-    const trace::Accel accel(scene);
-    const light::LightSampler lights(scene);
+    const session::SceneSession session(scene_path);
     std::filesystem::create_directories(out_dir);
 
     ConvergenceRun run;
-    run.scene = &scene;
-    run.accel = &accel;
-    run.lights = &lights;
+    run.session = &session;
     run.reference = &reference;
     run.budget_seconds = budget;
-    run.max_depth = max_depth;
-    run.seed = seed;
+    run.max_depth = settings.tracer.max_depth;
+    run.seed = settings.seed;
+    settings.width = reference.width();
+    settings.height = reference.height();
+    settings.clamp = renderer_args.clamp;
+    render::RenderOptions render_options;
+    renderer_args.apply(render_options);
     run.quiet = quiet;
 
     std::vector<ConvergencePoint> all;
@@ -159,16 +152,9 @@ int run_convergence(const Args& args) {
         } else {
             if (!renderer) {
                 context = std::make_unique<gpu::Context>(gpu::ContextOptions{});
-                renderer = std::make_unique<render::VplRenderer>(*context, scene);
+                renderer = std::make_unique<render::VplRenderer>(*context, session.scene());
             }
-            sampler::SamplerSettings settings;
-            settings.seed = seed;
-            settings.tracer.max_depth = max_depth;
-            settings.width = reference.width();
-            settings.height = reference.height();
-            settings.clamp = clamp;
-            points = run_vpl_sampler(run, method, settings, *renderer, clamp, uint32_t(shadow_res),
-                                     uint32_t(batch));
+            points = run_vpl_sampler(run, method, settings, *renderer, render_options);
         }
         all.insert(all.end(), points.begin(), points.end());
     }

@@ -33,7 +33,8 @@ ConvergencePoint measure(const std::string& method, double seconds, uint64_t sam
 }
 
 std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run) {
-    const reference::PathTracer tracer(*run.scene, *run.accel, *run.lights);
+    const session::SceneSession& s = *run.session;
+    const reference::PathTracer tracer(s.scene(), s.accel(), s.lights());
     const int w = run.reference->width(), h = run.reference->height();
     std::vector<ConvergencePoint> points;
     Image sum(w, h);
@@ -72,18 +73,16 @@ std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run) {
 
 std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const std::string& name,
                                               const sampler::SamplerSettings& settings,
-                                              render::VplRenderer& renderer, float clamp,
-                                              uint32_t shadow_resolution, uint32_t batch) {
+                                              render::VplRenderer& renderer,
+                                              const render::RenderOptions& options) {
     Timer timer;
-    const std::unique_ptr<sampler::VplStream> stream = sampler::make_vpl_stream(
-        name, *run.scene, *run.accel, *run.lights, run.scene->camera, settings);
-    render::RenderOptions o;
+    const session::SceneSession& s = *run.session;
+    const std::unique_ptr<sampler::VplStream> stream =
+        sampler::make_vpl_stream(name, s.scene(), s.accel(), s.lights(), s.camera(), settings);
+    render::RenderOptions o = options;
     o.width = uint32_t(run.reference->width());
     o.height = uint32_t(run.reference->height());
-    o.shadow_resolution = shadow_resolution;
-    o.batch = batch;
-    o.clamp = clamp;
-    renderer.begin(run.scene->camera, o);
+    renderer.begin(s.camera(), o);
 
     std::vector<ConvergencePoint> points;
     Progress progress(name, tenths(run.budget_seconds), run.quiet);

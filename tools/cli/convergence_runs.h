@@ -8,22 +8,15 @@
 #include <vector>
 
 #include "engine/core/image.h"
-#include "engine/light/light_sampler.h"
-#include "engine/scene/scene.h"
-#include "engine/trace/accel.h"
+#include "engine/render/vpl_renderer.h"
 #include "sampler/sampler_factory.h"
 #include "tools/cli/convergence_analysis.h"
-
-namespace mvpl::render {
-class VplRenderer;
-}
+#include "tools/session/scene_session.h"
 
 namespace mvpl::cli {
 
 struct ConvergenceRun {
-    const scene::Scene* scene = nullptr;
-    const trace::Accel* accel = nullptr;
-    const light::LightSampler* lights = nullptr;
+    const session::SceneSession* session = nullptr;
     const Image* reference = nullptr;  // its size is the image size
     double budget_seconds = 10.0;
     int max_depth = 6;
@@ -37,11 +30,11 @@ std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run);
 // A VPL sampler (sampler_factory.h) through the progressive GPU renderer: light paths or chain
 // steps doubling per chunk, resolved after each. The time counts the sampler's start-up (the
 // Metropolis bootstrap) and the G-buffer, not the renderer's construction (shader compilation),
-// which `mvpl bench` reports.
+// which `mvpl bench` reports. `options` gives all but the image size (the reference's).
 std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const std::string& name,
                                               const sampler::SamplerSettings& settings,
-                                              render::VplRenderer& renderer, float clamp,
-                                              uint32_t shadow_resolution, uint32_t batch);
+                                              render::VplRenderer& renderer,
+                                              const render::RenderOptions& options);
 
 // The error of `image` against the reference as a point of `method`.
 ConvergencePoint measure(const std::string& method, double seconds, uint64_t samples,

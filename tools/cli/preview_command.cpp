@@ -1,11 +1,10 @@
 // `mvpl preview`: the interactive window (tools/preview).
-#include <algorithm>
 #include <string>
 
 #include "engine/core/error.h"
-#include "sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/preview/preview_app.h"
 
@@ -15,7 +14,7 @@ int run_preview(const Args& args) {
     preview::PreviewOptions o;
     int width = o.width, height = o.height;
     float budget = float(o.budget_ms);
-    int shadow_res = int(o.shadow_resolution), batch = int(o.batch);
+    RendererArgs renderer;
     bool no_hud = false, no_motion_scaling = false;
     ArgParser parser(
         "preview",
@@ -37,7 +36,7 @@ int run_preview(const Args& args) {
         "--frames N with --screenshot FILE renders N frames, writes the last (.png: the window's\n"
         "picture without the HUD; .exr: linear radiance) and exits.");
     parser.add_positional("SCENE", &o.scene_path, "glTF 2.0 scene (.gltf or .glb)");
-    parser.add_string("--sampler", &o.sampler, "VPL sampler: mc (default) or metropolis");
+    add_sampler_option(parser, o.sampler);
     parser.add_resolution("--res", &width, &height, "initial window size WxH");
     parser.add_float("--budget-ms", &budget, "shading time per frame in milliseconds");
     parser.add_uint64("--paths-per-frame", &o.paths_per_frame,
@@ -48,32 +47,20 @@ int run_preview(const Args& args) {
     parser.add_uint64("--frames", &o.frames, "exit after N frames (0 = when closed)");
     parser.add_string("--screenshot", &o.screenshot, "image written after the last frame");
     parser.add_string("--script", &o.script, "timed input events (format above)");
-    parser.add_float("--clamp", &o.clamp,
-                     "clamping distance as a fraction of the scene diagonal (C toggles it)");
     parser.add_float("--exposure", &o.exposure, "exposure in stops");
-    parser.add_uint64("--seed", &o.seed, "random seed");
-    parser.add_int("--max-depth", &o.max_depth,
-                   "path segments from the camera to the light (-1 = unlimited)");
-    parser.add_int("--shadow-res", &shadow_res, "side of a shadow cube face in texels");
-    parser.add_int("--batch", &batch, "VPLs per shadow/shading batch");
+    add_seed_option(parser, o.seed);
+    add_max_depth_option(parser, o.max_depth);
+    add_renderer_options(parser, renderer);  // C toggles clamping in the window
     parser.add_flag("--no-hud", &no_hud, "no text overlay");
     parser.add_flag("--no-motion-scaling", &no_motion_scaling,
                     "render at full resolution while the camera moves too");
     parser.add_flag("--quiet", &o.quiet, "no summary line");
     if (!parser.parse(args)) return 0;
 
-    const std::vector<std::string>& names = sampler::sampler_names();
-    if (std::find(names.begin(), names.end(), o.sampler) == names.end())
-        throw UsageError("preview: unknown --sampler '" + o.sampler + "' (mc or metropolis)");
     if (width < 16 || height < 16 || width > 8192 || height > 8192)
         throw UsageError("preview: --res must be in 16..8192 on each side");
     if (!(budget > 0.0f && budget <= 10000.0f))
         throw UsageError("preview: --budget-ms must be in (0, 10000]");
-    if (shadow_res < 4 || shadow_res > 4096)
-        throw UsageError("preview: --shadow-res must be in 4..4096");
-    if (batch < 1 || batch > 256) throw UsageError("preview: --batch must be in 1..256");
-    if (!(o.clamp >= 0.0f && o.clamp <= 1.0f))
-        throw UsageError("preview: --clamp must be in [0, 1]");
     if (!o.screenshot.empty()) {
         if (o.frames == 0) throw UsageError("preview: --screenshot needs --frames N");
         check_output_extensions({o.screenshot});
@@ -81,8 +68,9 @@ int run_preview(const Args& args) {
     o.width = width;
     o.height = height;
     o.budget_ms = budget;
-    o.shadow_resolution = uint32_t(shadow_res);
-    o.batch = uint32_t(batch);
+    o.shadow_resolution = uint32_t(renderer.shadow_res);
+    o.batch = uint32_t(renderer.batch);
+    o.clamp = renderer.clamp;
     o.hud = !no_hud;
     o.motion_scaling = !no_motion_scaling;
     return preview::run_preview(o);

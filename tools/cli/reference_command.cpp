@@ -6,14 +6,12 @@
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
-#include "engine/core/timer.h"
-#include "engine/light/light_sampler.h"
 #include "engine/reference/path_tracer.h"
-#include "engine/scene/scene_loader.h"
-#include "engine/trace/accel.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
+#include "tools/session/scene_session.h"
 
 namespace mvpl::cli {
 
@@ -29,11 +27,9 @@ int run_reference(const Args& args) {
         "Russian roulette). Writes EXR (linear float) or PNG (sRGB) by the extension of -o.");
     parser.add_positional("SCENE", &scene_path, "glTF 2.0 scene (.gltf or .glb)");
     parser.add_int("--spp", &options.spp, "samples per pixel");
-    parser.add_int("--max-depth", &options.max_depth,
-                   "path segments from the camera to the light (Mitsuba's max_depth; 1 = emitters, "
-                   "2 = direct light, -1 = unlimited)");
+    add_max_depth_option(parser, options.max_depth);
     parser.add_resolution("--res", &options.width, &options.height, "image size WxH");
-    parser.add_uint64("--seed", &options.seed, "random seed; the image is a function of it");
+    add_seed_option(parser, options.seed);
     parser.add_strings("-o", &outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &exposure, "PNG exposure in stops");
     parser.add_int("--threads", &threads, "worker threads (0 = all cores)");
@@ -49,18 +45,11 @@ int run_reference(const Args& args) {
                                                       threads);
     }
 
-    Timer setup;
-    const scene::Scene scene = scene::load_scene(scene_path);
-    const trace::Accel accel(scene);
-    const light::LightSampler lights(scene);
-    const double setup_seconds = setup.seconds();
-    if (lights.empty() && !options.quiet) {
-        std::fprintf(stderr, "mvpl: warning: %s: the scene has no light; the image is black\n",
-                     scene_path.c_str());
-    }
+    const session::SceneSession session(scene_path);
+    session.warn_if_no_light("the image is black", options.quiet);
 
     reference::RenderStats stats;
-    const reference::PathTracer tracer(scene, accel, lights);
+    const reference::PathTracer tracer(session.scene(), session.accel(), session.lights());
     const Image image = tracer.render(options, &stats);
     for (const std::string& out : outputs)
         write_image(image, out, exposure);
@@ -73,9 +62,9 @@ int run_reference(const Args& args) {
         std::printf(
             "reference: %dx%d, %d spp, max depth %d, %zu triangles: setup %.2f s, render %.2f s, "
             "%.2f Mrays/s, %.2f Mpaths/s\n",
-            options.width, options.height, options.spp, options.max_depth, scene.triangle_count(),
-            setup_seconds, stats.seconds, double(stats.rays) / stats.seconds * 1e-6,
-            double(stats.paths) / stats.seconds * 1e-6);
+            options.width, options.height, options.spp, options.max_depth,
+            session.scene().triangle_count(), session.setup_seconds(), stats.seconds,
+            double(stats.rays) / stats.seconds * 1e-6, double(stats.paths) / stats.seconds * 1e-6);
     }
     return 0;
 }

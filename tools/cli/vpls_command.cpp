@@ -8,16 +8,16 @@
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
-#include "engine/light/light_sampler.h"
 #include "engine/scene/camera.h"
-#include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
 #include "engine/trace/interaction.h"
 #include "engine/trace/ray.h"
 #include "sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
+#include "tools/session/scene_session.h"
 
 namespace mvpl::cli {
 
@@ -101,8 +101,8 @@ void draw_dot(Image& image, const Vec2& c, float radius, const Rgb& colour) {
 
 int run_vpls(const Args& args) {
     std::string scene_path, sampler_name = "mc", view_name = "top";
-    uint64_t count = 1024, seed = 0;
-    int width = 512, height = 512, max_depth = 6;
+    uint64_t count = 1024;
+    int width = 512, height = 512;
     std::vector<std::string> outputs;
     bool quiet = false;
     sampler::SamplerSettings settings;
@@ -111,15 +111,13 @@ int run_vpls(const Args& args) {
                      "(top: from above, back faces cut away; camera: the scene camera).\n"
                      "Yellow: emitter VPLs; orange: surface VPLs; dot area grows with power.");
     parser.add_positional("SCENE", &scene_path, "glTF 2.0 scene (.gltf or .glb)");
-    parser.add_string("--sampler", &sampler_name, "mc (default) or metropolis");
+    add_sampler_option(parser, sampler_name);
     parser.add_uint64("--vpls", &count, "light paths (mc) or chain steps (metropolis)");
     parser.add_string("--view", &view_name, "top (default) or camera");
     parser.add_resolution("--res", &width, &height, "image size WxH");
-    parser.add_float("--beta", &settings.large_step, "metropolis: large-step probability");
-    parser.add_float("--sigma", &settings.sigma, "metropolis: small-step width");
-    parser.add_int("--chains", &settings.chains, "metropolis: independent chains");
-    parser.add_int("--max-depth", &max_depth, "path segments from the camera to the light");
-    parser.add_uint64("--seed", &seed, "random seed");
+    add_metropolis_options(parser, settings);
+    add_max_depth_option(parser, settings.tracer.max_depth);
+    add_seed_option(parser, settings.seed);
     parser.add_strings("-o", &outputs, "output image, .png or .exr");
     parser.add_flag("--quiet", &quiet, "no summary line");
     if (!parser.parse(args)) return 0;
@@ -127,23 +125,15 @@ int run_vpls(const Args& args) {
         throw UsageError("vpls: --view must be top or camera");
     if (count < 1 || count > (uint64_t(1) << 24))
         throw UsageError("vpls: --vpls must be in 1..2^24");
-    if (!(settings.large_step >= 0.0f && settings.large_step <= 1.0f))
-        throw UsageError("vpls: --beta must be in [0, 1]");
-    if (!(settings.sigma > 0.0f && settings.sigma <= 1.0f))
-        throw UsageError("vpls: --sigma must be in (0, 1]");
-    if (settings.chains < 1 || settings.chains > 4096)
-        throw UsageError("vpls: --chains must be in 1..4096");
     if (outputs.empty()) outputs.push_back("vpls.png");
     check_output_extensions(outputs);
 
-    const scene::Scene scene = scene::load_scene(scene_path);
-    const trace::Accel accel(scene);
-    const light::LightSampler lights(scene);
-    settings.seed = seed;
-    settings.tracer.max_depth = max_depth;
+    const session::SceneSession session(scene_path);
+    const scene::Scene& scene = session.scene();
+    const trace::Accel& accel = session.accel();
     // The Metropolis target is the scene camera's view, whatever this picture shows.
-    std::unique_ptr<sampler::VplStream> stream =
-        sampler::make_vpl_stream(sampler_name, scene, accel, lights, scene.camera, settings);
+    std::unique_ptr<sampler::VplStream> stream = sampler::make_vpl_stream(
+        sampler_name, scene, accel, session.lights(), session.camera(), settings);
     std::vector<light::Vpl> vpls;
     stream->next(count, vpls);
 

@@ -14,11 +14,8 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/swapchain.h"
-#include "engine/light/light_sampler.h"
 #include "engine/render/g_buffer_pass.h"
 #include "engine/render/vpl_renderer.h"
-#include "engine/scene/scene_loader.h"
-#include "engine/trace/accel.h"
 #include "sampler/sampler_factory.h"
 #include "tools/preview/camera_controller.h"
 #include "tools/preview/hud.h"
@@ -27,6 +24,7 @@
 #include "tools/preview/script.h"
 #include "tools/preview/vpl_history.h"
 #include "tools/preview/window.h"
+#include "tools/session/scene_session.h"
 
 namespace mvpl::preview {
 namespace {
@@ -59,20 +57,18 @@ class PreviewApp {
 public:
     explicit PreviewApp(const PreviewOptions& options)
         : m_options(options),
-          m_scene(scene::load_scene(options.scene_path)),
-          m_accel(m_scene),
-          m_lights(m_scene),
+          m_session(options.scene_path),
           m_sampler(options.sampler),
           m_script(options.script.empty() ? std::vector<ScriptEvent>{}
                                           : load_script(options.script)),
           m_window("mvpl preview: " + std::filesystem::path(options.scene_path).filename().string(),
                    options.width, options.height),
           m_context(context_options()),
-          m_renderer(m_context, m_scene),
+          m_renderer(m_context, m_session.scene()),
           m_swapchain(m_context, m_window.create_surface(m_context.instance()),
                       uint32_t(options.width), uint32_t(options.height)),
           m_present(m_context, m_swapchain.srgb()),
-          m_controller(m_scene.camera, m_scene.bounds()),
+          m_controller(m_session.camera(), m_session.scene().bounds()),
           m_exposure(options.exposure),
           m_motion_divisor(options.motion_scaling ? 2 : 1) {}
 
@@ -97,9 +93,7 @@ private:
     void save(const std::string& path, bool png_from_display);
 
     PreviewOptions m_options;
-    scene::Scene m_scene;
-    trace::Accel m_accel;
-    light::LightSampler m_lights;
+    session::SceneSession m_session;
     std::string m_sampler;
     std::vector<ScriptEvent> m_script;
     size_t m_next_event = 0;
@@ -146,7 +140,8 @@ std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler)
     s.height = int(m_window_height ? m_window_height : uint32_t(m_options.height));
     s.clamp = clamp();
     return std::make_unique<VplHistory>(
-        sampler::make_vpl_stream(sampler, m_scene, m_accel, m_lights, m_controller.camera(), s),
+        sampler::make_vpl_stream(sampler, m_session.scene(), m_session.accel(), m_session.lights(),
+                                 m_controller.camera(), s),
         m_options.max_paths);
 }
 

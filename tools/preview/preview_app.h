@@ -7,6 +7,8 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/render/vpl_renderer.h"
+
 namespace mvpl::preview {
 
 struct PreviewOptions {
@@ -20,12 +22,12 @@ struct PreviewOptions {
     uint64_t frames = 0;           // exit after this many frames (0: when the window closes)
     std::string screenshot;        // written after the last frame (.png or .exr)
     std::string script;            // --script FILE
-    float clamp = 0.05f;
+    float clamp = render::RenderOptions{}.clamp;
     float exposure = 0.0f;
     uint64_t seed = 0;
     int max_depth = 6;
-    uint32_t shadow_resolution = 256;
-    uint32_t batch = 32;
+    uint32_t shadow_resolution = render::RenderOptions{}.shadow_resolution;
+    uint32_t batch = render::RenderOptions{}.batch;
     bool hud = true;
     // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
     bool motion_scaling = true;

@@ -1,4 +1,4 @@
-#include "sampler/metropolis_sampler.h"
+#include "sampler/metropolis_stream.h"
 
 #include <algorithm>
 #include <cmath>
@@ -141,11 +141,11 @@ MetropolisStream::~MetropolisStream() = default;
 void MetropolisStream::trace_state(SampleStream& u, std::vector<light::Vpl>& out) const {
     out.clear();
     if (m_options.per_path == VplsPerPath::All) {
-        m_tracer.trace(u, 1.0f, out);
+        m_tracer.trace(u, out);
         return;
     }
     const float pick = u.next();  // dimension 0, before the path's own dimensions
-    m_tracer.trace(u, 1.0f, out);
+    m_tracer.trace(u, out);
     const size_t m = out.size();
     if (m == 0) return;
     const size_t j = std::min(m - 1, size_t(pick * float(m)));

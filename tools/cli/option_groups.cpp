@@ -1,0 +1,82 @@
+#include "tools/cli/option_groups.h"
+
+#include <algorithm>
+
+#include "engine/core/error.h"
+
+namespace mvpl::cli {
+
+namespace {
+
+// "COMMAND: OPTION must be in RANGE": the one format of every range error.
+[[noreturn]] void out_of_range(const ArgParser& parser, const std::string& option,
+                               const std::string& range) {
+    throw UsageError(parser.command() + ": " + option + " must be in " + range);
+}
+
+}  // namespace
+
+void RendererArgs::apply(render::RenderOptions& o) const {
+    o.shadow_resolution = uint32_t(shadow_res);
+    o.batch = uint32_t(batch);
+    o.clamp = clamp;
+}
+
+void add_renderer_options(ArgParser& parser, RendererArgs& args) {
+    parser.add_int("--shadow-res", &args.shadow_res, "side of a shadow cube face in texels");
+    parser.add_int("--batch", &args.batch, "VPLs per shadow/shading batch");
+    parser.add_float("--clamp", &args.clamp,
+                     "clamping distance as a fraction of the scene diagonal (0 = off)");
+    // The renderer's limits: 4096² faces × 6 × a batch must still fit in memory.
+    parser.add_check([&parser, &args] {
+        if (args.shadow_res < 4 || args.shadow_res > 4096)
+            out_of_range(parser, "--shadow-res", "4..4096");
+        if (args.batch < 1 || args.batch > 256) out_of_range(parser, "--batch", "1..256");
+        if (!(args.clamp >= 0.0f && args.clamp <= 1.0f)) out_of_range(parser, "--clamp", "[0, 1]");
+    });
+}
+
+void add_sampler_option(ArgParser& parser, std::string& name) {
+    parser.add_string("--sampler", &name, "VPL sampler: mc (default) or metropolis");
+    parser.add_check([&parser, &name] {
+        const std::vector<std::string>& names = sampler::sampler_names();
+        if (std::find(names.begin(), names.end(), name) != names.end()) return;
+        std::string available;
+        for (const std::string& n : names)
+            available += (available.empty() ? "" : ", ") + n;
+        throw UsageError(parser.command() + ": unknown --sampler '" + name +
+                         "' (available: " + available + ")");
+    });
+}
+
+void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& s) {
+    parser.add_float("--beta", &s.large_step, "metropolis: large-step probability");
+    parser.add_float("--sigma", &s.sigma, "metropolis: small-step width in primary sample space");
+    parser.add_int("--chains", &s.chains, "metropolis: independent chains");
+    parser.add_int("--importance-points", &s.importance_points,
+                   "metropolis: camera-visible points of the target");
+    parser.add_uint64("--bootstrap", &s.bootstrap,
+                      "metropolis: independent paths for the normalisation");
+    parser.add_check([&parser, &s] {
+        if (!(s.large_step >= 0.0f && s.large_step <= 1.0f))
+            out_of_range(parser, "--beta", "[0, 1]");
+        if (!(s.sigma > 0.0f && s.sigma <= 1.0f)) out_of_range(parser, "--sigma", "(0, 1]");
+        if (s.chains < 1 || s.chains > 4096) out_of_range(parser, "--chains", "1..4096");
+        if (s.importance_points < 1 || s.importance_points > (1 << 20))
+            out_of_range(parser, "--importance-points", "1..2^20");
+        if (s.bootstrap < 1 || s.bootstrap > (uint64_t(1) << 26))
+            out_of_range(parser, "--bootstrap", "1..2^26");
+    });
+}
+
+void add_max_depth_option(ArgParser& parser, int& max_depth) {
+    parser.add_int("--max-depth", &max_depth,
+                   "path segments from the camera to the light (Mitsuba's max_depth; 1 = emitters, "
+                   "2 = direct light, -1 = unlimited)");
+}
+
+void add_seed_option(ArgParser& parser, uint64_t& seed) {
+    parser.add_uint64("--seed", &seed, "random seed; the same seed gives the same result");
+}
+
+}  // namespace mvpl::cli

@@ -1,0 +1,37 @@
+#pragma once
+// The options that several `mvpl` commands share, each declared once: its flag, its help, its
+// default (read from the struct the option configures, never restated here) and its range check
+// (run by ArgParser after parsing). Commands register the groups they take and only wire the
+// values (pbrt-v4's cmd/ over its render set-up is the model).
+#include <cstdint>
+#include <string>
+
+#include "engine/render/vpl_renderer.h"
+#include "sampler/sampler_factory.h"
+#include "tools/cli/arg_parser.h"
+
+namespace mvpl::cli {
+
+// --shadow-res, --batch, --clamp: the GPU renderer's (render::RenderOptions), as ints for the
+// parser.
+struct RendererArgs {
+    int shadow_res = int(render::RenderOptions{}.shadow_resolution);
+    int batch = int(render::RenderOptions{}.batch);
+    float clamp = render::RenderOptions{}.clamp;
+
+    // Copies the three into `o`.
+    void apply(render::RenderOptions& o) const;
+};
+void add_renderer_options(ArgParser& parser, RendererArgs& args);
+
+// --sampler: a name of sampler::sampler_names().
+void add_sampler_option(ArgParser& parser, std::string& name);
+
+// --beta, --sigma, --chains, --importance-points, --bootstrap: the Metropolis sampler's.
+void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& settings);
+
+// --max-depth (Mitsuba's max_depth; the default is the target's) and --seed.
+void add_max_depth_option(ArgParser& parser, int& max_depth);
+void add_seed_option(ArgParser& parser, uint64_t& seed);
+
+}  // namespace mvpl::cli

@@ -1,0 +1,49 @@
+#pragma once
+// The two ways `mvpl render` forms its image, apart from its options: a one-shot render of a
+// fixed amount of sampler work, and a progressive loop that renders chunks until a time budget is
+// spent; each shades on the GPU renderer or, without one, with the CPU oracle.
+#include <cstdint>
+#include <string>
+
+#include "engine/core/image.h"
+#include "engine/reference/vpl_gather.h"
+#include "engine/render/vpl_renderer.h"
+#include "sampler/sampler_factory.h"
+#include "tools/session/scene_session.h"
+
+namespace mvpl::cli {
+
+// What to render: everything but the amount of work.
+struct RenderJob {
+    const session::SceneSession* session = nullptr;
+    std::string sampler = "mc";
+    sampler::SamplerSettings settings;
+    render::RenderOptions render;             // the GPU renderer's options
+    reference::GatherOptions gather;          // the CPU oracle's
+    render::VplRenderer* renderer = nullptr;  // null: shade with the CPU oracle
+    bool quiet = false;
+};
+
+// What a render produced, for the summary line.
+struct RenderOutcome {
+    Image image;
+    uint64_t units = 0;  // light paths (mc) or chain steps (metropolis)
+    size_t vpls = 0;
+    double sampling_seconds = 0.0;
+    double shading_seconds = 0.0;
+    std::string statistics;         // the sampler's, may be empty
+    render::RenderTimings timings;  // GPU only
+};
+
+// `units` light paths or chain steps, sampled at once, then shaded.
+RenderOutcome render_once(const RenderJob& job, uint64_t units);
+
+// As many units as fit `seconds` of sampling + shading (the sampler's set-up, e.g. the Metropolis
+// bootstrap, and the G-buffer count too), in chunks of about half a second.
+RenderOutcome render_for(const RenderJob& job, double seconds);
+
+// "render: N VPLs from U paths, WxH: sampling …, shading … (PASSES), total …, … VPL/s; STATS",
+// PASSES the GPU pass times or "CPU oracle".
+std::string summary_line(const RenderJob& job, const RenderOutcome& result, double total_seconds);
+
+}  // namespace mvpl::cli

@@ -1,0 +1,49 @@
+#pragma once
+// The scene as every `mvpl` command that renders it needs it — loaded, its Embree BVH built, its
+// lights prepared for sampling, and the camera it is seen from — built in one place for the
+// command line (tools/cli) and the preview window (tools/preview), as pbrt-v4's cmd/ tools share
+// one scene set-up.
+#include <string>
+
+#include "engine/core/timer.h"
+#include "engine/light/light_sampler.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl::session {
+
+class SceneSession {
+public:
+    // Throws InputError (exit code 2) when the scene cannot be read.
+    explicit SceneSession(const std::string& path);
+    SceneSession(const SceneSession&) = delete;
+    SceneSession& operator=(const SceneSession&) = delete;
+
+    const std::string& path() const { return m_path; }
+    const scene::Scene& scene() const { return m_scene; }
+    const trace::Accel& accel() const { return m_accel; }
+    const light::LightSampler& lights() const { return m_lights; }
+    // The scene's own camera (the one in the file, or one framing a bare mesh).
+    const scene::Camera& camera() const { return m_scene.camera; }
+    // Set-up times (`mvpl bench` reports them apart): loading, the BVH, the lights.
+    double load_seconds() const { return m_load_seconds; }
+    double bvh_seconds() const { return m_bvh_seconds; }
+    double setup_seconds() const { return m_setup_seconds; }
+
+    // Without a light, prints "mvpl: warning: PATH: the scene has no light; CONSEQUENCE" (unless
+    // quiet) and returns true.
+    bool warn_if_no_light(const std::string& consequence, bool quiet) const;
+
+private:
+    // Declaration order is construction order: each stage is timed when it is done.
+    std::string m_path;
+    Timer m_clock;
+    scene::Scene m_scene;
+    double m_load_seconds;
+    trace::Accel m_accel;
+    double m_bvh_seconds;
+    light::LightSampler m_lights;
+    double m_setup_seconds;
+};
+
+}  // namespace mvpl::session
