@@ -1,4 +1,5 @@
 // mvpl: the command line. The only place that wires the whole program together.
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <exception>
@@ -40,6 +41,9 @@ int main(int argc, char** argv) {
         std::fputs(kUsage, stderr);
         return 2;
     }
+    // Past a file-size limit (ulimit -f) a write should fail and be reported, and the image's
+    // temporary removed (atomic_files.h), rather than the process be killed with a partial file.
+    std::signal(SIGXFSZ, SIG_IGN);
     const std::string command = argv[1];
     const cli::Args args(argv + 2, argv + argc);
     try {

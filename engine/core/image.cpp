@@ -14,6 +14,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "engine/core/atomic_files.h"
 #include "engine/core/error.h"
 #include "engine/core/file_extension.h"
 #include "engine/core/png.h"
@@ -37,58 +38,94 @@ float srgb_to_linear(float v) {
     return v <= 0.04045f ? v / 12.92f : std::pow((v + 0.055f) / 1.055f, 2.4f);
 }
 
-void write_image(const Image& image, const std::string& path, float exposure) {
-    const std::string ext = lower_extension(path);
-    // The last guard: a non-finite value is never written silently (finite_check.h).
-    require_finite(image, path + " not written");
-    if (ext == ".exr") {
-        write_exr(image, path);
-    } else if (ext == ".png") {
-        write_png(image, path, exposure);
-    } else {
-        throw UsageError(path + ": unknown image extension (use .exr or .png)");
+namespace {
+
+void exr_to_file(const Image& image, const std::string& file) {
+    Imf::Header header(image.width(), image.height());
+    header.channels().insert("R", Imf::Channel(Imf::FLOAT));
+    header.channels().insert("G", Imf::Channel(Imf::FLOAT));
+    header.channels().insert("B", Imf::Channel(Imf::FLOAT));
+    Imf::OutputFile out(file.c_str(), header);
+    Imf::FrameBuffer fb;
+    char* base = reinterpret_cast<char*>(const_cast<Rgb*>(image.pixels().data()));
+    const size_t xs = sizeof(Rgb);
+    const size_t ys = sizeof(Rgb) * size_t(image.width());
+    fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0 * sizeof(float), xs, ys));
+    fb.insert("G", Imf::Slice(Imf::FLOAT, base + 1 * sizeof(float), xs, ys));
+    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
+    out.setFrameBuffer(fb);
+    out.writePixels(image.height());
+}
+
+// The PNG file's bytes, encoded in memory so that writing them is checked (stb's own file
+// writer ignores write errors).
+std::vector<uint8_t> png_encode(std::span<const uint8_t> rgb, int width, int height) {
+    if (rgb.size() != size_t(width) * size_t(height) * 3)
+        throw std::runtime_error("PNG pixel data of the wrong size");
+    std::vector<uint8_t> out;
+    const auto append = [](void* context, void* data, int size) {
+        auto* v = static_cast<std::vector<uint8_t>*>(context);
+        const auto* bytes = static_cast<const uint8_t*>(data);
+        v->insert(v->end(), bytes, bytes + size);
+    };
+    if (!stbi_write_png_to_func(append, &out, width, height, 3, rgb.data(), width * 3))
+        throw std::runtime_error("cannot encode PNG");
+    return out;
+}
+
+std::vector<uint8_t> tonemapped_rgb8(const Image& image, float exposure) {
+    const float scale = std::exp2(exposure);
+    std::vector<uint8_t> bytes(size_t(image.width()) * image.height() * 3);
+    for (size_t i = 0; i < image.pixels().size(); ++i) {
+        const Rgb& p = image.pixels()[i];
+        for (int c = 0; c < 3; ++c)
+            bytes[3 * i + c] = uint8_t(std::lround(255.0f * linear_to_srgb(p[c] * scale)));
     }
+    return bytes;
+}
+
+}  // namespace
+
+void write_images(const Image& image, const std::vector<std::string>& paths, float exposure) {
+    for (const std::string& path : paths) {
+        const std::string ext = lower_extension(path);
+        if (ext != ".exr" && ext != ".png")
+            throw UsageError(path + ": unknown image extension (use .exr or .png)");
+        // The last guard: a non-finite value is never written silently (finite_check.h).
+        require_finite(image, path + " not written");
+    }
+    std::vector<uint8_t> png;  // encoded once for every .png target
+    write_files_atomically(paths, [&](size_t i, const std::string& file) {
+        if (lower_extension(paths[i]) == ".exr") {
+            exr_to_file(image, file);
+            return;
+        }
+        if (png.empty())
+            png = png_encode(tonemapped_rgb8(image, exposure), image.width(), image.height());
+        write_bytes(file, png);
+    });
+}
+
+void write_image(const Image& image, const std::string& path, float exposure) {
+    write_images(image, {path}, exposure);
 }
 
 void write_exr(const Image& image, const std::string& path) {
-    try {
-        Imf::Header header(image.width(), image.height());
-        header.channels().insert("R", Imf::Channel(Imf::FLOAT));
-        header.channels().insert("G", Imf::Channel(Imf::FLOAT));
-        header.channels().insert("B", Imf::Channel(Imf::FLOAT));
-        Imf::OutputFile file(path.c_str(), header);
-        Imf::FrameBuffer fb;
-        char* base = reinterpret_cast<char*>(const_cast<Rgb*>(image.pixels().data()));
-        const size_t xs = sizeof(Rgb);
-        const size_t ys = sizeof(Rgb) * size_t(image.width());
-        fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0 * sizeof(float), xs, ys));
-        fb.insert("G", Imf::Slice(Imf::FLOAT, base + 1 * sizeof(float), xs, ys));
-        fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
-        file.setFrameBuffer(fb);
-        file.writePixels(image.height());
-    } catch (const std::exception& e) {
-        throw std::runtime_error(path + ": cannot write EXR: " + e.what());
-    }
+    write_files_atomically({path},
+                           [&](size_t, const std::string& file) { exr_to_file(image, file); });
 }
 
 void write_png(const Image& image, const std::string& path, float exposure) {
-    const float scale = std::exp2(exposure);
-    std::vector<unsigned char> bytes(size_t(image.width()) * image.height() * 3);
-    for (size_t i = 0; i < image.pixels().size(); ++i) {
-        const Rgb& p = image.pixels()[i];
-        for (int c = 0; c < 3; ++c) {
-            bytes[3 * i + c] =
-                static_cast<unsigned char>(std::lround(255.0f * linear_to_srgb(p[c] * scale)));
-        }
-    }
-    write_png_rgb8(path, bytes, image.width(), image.height());
+    const std::vector<uint8_t> png =
+        png_encode(tonemapped_rgb8(image, exposure), image.width(), image.height());
+    write_files_atomically({path},
+                           [&](size_t, const std::string& file) { write_bytes(file, png); });
 }
 
 void write_png_rgb8(const std::string& path, std::span<const uint8_t> rgb, int width, int height) {
-    if (rgb.size() != size_t(width) * size_t(height) * 3 ||
-        !stbi_write_png(path.c_str(), width, height, 3, rgb.data(), width * 3)) {
-        throw std::runtime_error(path + ": cannot write PNG");
-    }
+    const std::vector<uint8_t> png = png_encode(rgb, width, height);
+    write_files_atomically({path},
+                           [&](size_t, const std::string& file) { write_bytes(file, png); });
 }
 
 Image read_exr(const std::string& path) {

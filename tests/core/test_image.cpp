@@ -1,5 +1,8 @@
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <cstdio>
 #include <filesystem>
 
@@ -69,6 +72,49 @@ TEST(Image, PngWriteAndSrgbCurve) {
     EXPECT_GT(std::filesystem::file_size(path), 0u);
     std::filesystem::remove(path);
     EXPECT_THROW(write_image(image, temp_path("out.bmp")), UsageError);
+}
+
+// write_images is all-or-none by itself (the CLI also checks outputs up front): when one target
+// cannot be written, no target appears, no temporary is left, and an existing file keeps its
+// content.
+TEST(Image, SeveralTargetsAreWrittenAllOrNone) {
+    namespace fs = std::filesystem;
+    const fs::path dir =
+        fs::temp_directory_path() / ("mvpl_all_or_none_" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    Image image(8, 4);
+    image.at(3, 2) = Rgb(0.5f, 0.25f, 1.0f);
+    const std::string exr = (dir / "a.exr").string();
+    const std::string png = (dir / "b.png").string();
+    {
+        std::FILE* f = std::fopen(png.c_str(), "wb");
+        ASSERT_NE(f, nullptr);
+        std::fputs("old", f);
+        std::fclose(f);
+    }
+    const std::string missing = (dir / "no" / "c.png").string();
+    try {
+        write_images(image, {exr, png, missing});
+        ADD_FAILURE() << "no error";
+    } catch (const InputError& e) {
+        EXPECT_NE(std::string(e.what()).find(missing), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(exr));
+    EXPECT_EQ(fs::file_size(png), 3u);
+    size_t files = 0;
+    for ([[maybe_unused]] const fs::directory_entry& e : fs::directory_iterator(dir))
+        ++files;
+    EXPECT_EQ(files, 1u);
+    // And when all can be written, all are, replacing the old file.
+    write_images(image, {exr, png});
+    EXPECT_EQ(read_exr(exr).at(3, 2), image.at(3, 2));
+    EXPECT_GT(fs::file_size(png), 3u);
+    // With the permissions a plain create gives (the temporary was private).
+    const mode_t mask = umask(0);
+    umask(mask);
+    EXPECT_EQ(fs::status(exr).permissions() & fs::perms::all, fs::perms(0666 & ~mask));
+    fs::remove_all(dir);
 }
 
 TEST(ImageMetrics, KnownValues) {

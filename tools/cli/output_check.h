@@ -4,7 +4,9 @@
 
 namespace mvpl::cli {
 
-// Rejects an output path whose extension is neither .exr nor .png before any rendering starts.
-void check_output_extensions(const std::vector<std::string>& outputs);
+// Before any rendering starts, so that a bad -o costs nothing: each output's extension is .exr or
+// .png (UsageError), its folder exists and is writable, and it is not itself a folder
+// (InputError naming the path).
+void check_outputs(const std::vector<std::string>& outputs);
 
 }  // namespace mvpl::cli

@@ -63,7 +63,7 @@ int run_preview(const Args& args) {
         throw UsageError("preview: --budget-ms must be in (0, 10000]");
     if (!o.screenshot.empty()) {
         if (o.frames == 0) throw UsageError("preview: --screenshot needs --frames N");
-        check_output_extensions({o.screenshot});
+        check_outputs({o.screenshot});
     }
     o.width = width;
     o.height = height;

@@ -38,7 +38,7 @@ int run_reference(const Args& args) {
     if (options.spp < 1) throw UsageError("reference: --spp must be at least 1");
     if (threads < 0) throw UsageError("reference: --threads must not be negative");
     if (outputs.empty()) outputs.push_back("reference.exr");
-    check_output_extensions(outputs);
+    check_outputs(outputs);
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0) {
         limit = std::make_unique<tbb::global_control>(tbb::global_control::max_allowed_parallelism,
@@ -51,8 +51,7 @@ int run_reference(const Args& args) {
     reference::RenderStats stats;
     const reference::PathTracer tracer(session.scene(), session.accel(), session.lights());
     const Image image = tracer.render(options, &stats);
-    for (const std::string& out : outputs)
-        write_image(image, out, exposure);
+    write_images(image, outputs, exposure);
 
     if (stats.nonfinite_samples > 0) {
         std::fprintf(stderr, "mvpl: warning: %llu non-finite path samples were discarded\n",

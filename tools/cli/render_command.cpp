@@ -128,7 +128,7 @@ int run_render(const Args& args) {
     if (!parser.parse(args)) return 0;
     check_device(a);
     if (a.outputs.empty()) a.outputs.push_back("render.exr");
-    check_output_extensions(a.outputs);
+    check_outputs(a.outputs);
 
     Timer total;
     const session::SceneSession session(a.scene_path);
@@ -151,8 +151,7 @@ int run_render(const Args& args) {
         for (const std::string& message : context->validation_messages())
             std::fprintf(stderr, "mvpl: validation: %s\n", message.c_str());
     }
-    for (const std::string& out : a.outputs)
-        write_image(result.image, out, a.exposure);
+    write_images(result.image, a.outputs, a.exposure);
     if (!a.quiet) std::fputs(summary_line(job, result, total.seconds()).c_str(), stdout);
     return 0;
 }

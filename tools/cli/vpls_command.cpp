@@ -126,7 +126,7 @@ int run_vpls(const Args& args) {
     if (count < 1 || count > (uint64_t(1) << 24))
         throw UsageError("vpls: --vpls must be in 1..2^24");
     if (outputs.empty()) outputs.push_back("vpls.png");
-    check_output_extensions(outputs);
+    check_outputs(outputs);
 
     const session::SceneSession session(scene_path);
     const scene::Scene& scene = session.scene();
@@ -165,8 +165,7 @@ int run_vpls(const Args& args) {
         draw_dot(image, film, radius, emitter ? Rgb(1.0f, 0.9f, 0.2f) : Rgb(1.0f, 0.35f, 0.1f));
         ++drawn;
     }
-    for (const std::string& out : outputs)
-        write_image(image, out);
+    write_images(image, outputs);
     if (!quiet) {
         const std::string stats = stream->statistics();
         std::printf("vpls: %zu VPLs (%zu drawn) from %llu %s%s%s\n", vpls.size(), drawn,
