@@ -44,6 +44,17 @@ TEST(Cli, UsageErrors) {
     EXPECT_NE(help.out.find("--max-depth"), std::string::npos);
 }
 
+// Values that used to be taken as something else (issue 19): a negative depth other than -1 as
+// unlimited, 0 as 1, device -2 as the default, a repeated option as its last value.
+TEST(Cli, OutOfRangeAndRepeatedOptionsAreRefused) {
+    expect_one_line_error(run_mvpl("reference " + kCbox + " --max-depth -5"), "--max-depth");
+    expect_one_line_error(run_mvpl("reference " + kCbox + " --max-depth 0"), "--max-depth");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --device -2"), "--device");
+    expect_one_line_error(run_mvpl("info --device -2"), "--device");
+    expect_one_line_error(run_mvpl("reference " + kCbox + " --spp 2 --spp 3"), "--spp given twice");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --quiet --quiet"), "--quiet given twice");
+}
+
 TEST(Cli, ReferenceWritesExrAndPng) {
     const std::string exr = temp_file("cbox.exr"), png = temp_file("cbox.png");
     const auto r =

@@ -1,5 +1,6 @@
 #include "tools/cli/arg_parser.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <cstdio>
@@ -62,7 +63,7 @@ void ArgParser::add_string(const std::string& name, std::string* target, const s
 void ArgParser::add_strings(const std::string& name, std::vector<std::string>* target,
                             const std::string& help) {
     m_options.push_back({name, help + " (repeatable)", true,
-                         [target](const std::string& v) { target->push_back(v); }});
+                         [target](const std::string& v) { target->push_back(v); }, true});
 }
 
 void ArgParser::add_resolution(const std::string& name, int* width, int* height,
@@ -101,6 +102,7 @@ const ArgParser::Option* ArgParser::find(const std::string& name) const {
 
 bool ArgParser::parse(const std::vector<std::string>& args) {
     size_t positional = 0;
+    std::vector<const Option*> given;
     for (size_t i = 0; i < args.size(); ++i) {
         const std::string& a = args[i];
         if (a == "--help" || a == "-h") {
@@ -130,6 +132,10 @@ bool ArgParser::parse(const std::vector<std::string>& args) {
             } else if (has_inline) {
                 throw UsageError(m_command + ": " + name + " takes no value");
             }
+            // A second value would silently replace the first: say so instead.
+            if (!option->repeatable && std::find(given.begin(), given.end(), option) != given.end())
+                throw UsageError(m_command + ": " + name + " given twice");
+            given.push_back(option);
             option->apply(value);
             continue;
         }

@@ -41,6 +41,7 @@ private:
         std::string help;
         bool takes_value = true;
         std::function<void(const std::string&)> apply;
+        bool repeatable = false;  // add_strings; any other option given twice is an error
     };
     const Option* find(const std::string& name) const;
 

@@ -107,12 +107,9 @@ int run_bench(const Args& args) {
     config.batch = renderer_args.batch;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
-    const int max_depth = mc.tracer.max_depth;
     if (paths < 1 || paths > (uint64_t(1) << 24))
         throw UsageError("bench: --vpls must be in 1..2^24");
     if (repeat < 1 || repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
-    if (max_depth < -1 || max_depth == 0)
-        throw UsageError("bench: --max-depth must be -1 or at least 1");
 
     std::ofstream json_out;
     if (!json_path.empty()) json_out = open_output(json_path);

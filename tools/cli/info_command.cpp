@@ -11,6 +11,7 @@
 #include "engine/gpu/validation.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/option_groups.h"
 
 namespace mvpl::cli {
 namespace {
@@ -66,7 +67,7 @@ int run_info(const Args& args) {
     ArgParser parser("info",
                      "Lists the Vulkan devices (the index is what --device takes) and the limits "
                      "that matter to mvpl.");
-    parser.add_int("--device", &device, "show only this device");
+    add_device_option(parser, device, "show only this device");
     if (!parser.parse(args)) return 0;
     if (device < -1) throw UsageError("info: --device must not be negative");
 

@@ -73,6 +73,20 @@ void add_max_depth_option(ArgParser& parser, int& max_depth) {
     parser.add_int("--max-depth", &max_depth,
                    "path segments from the camera to the light (Mitsuba's max_depth; 1 = emitters, "
                    "2 = direct light, -1 = unlimited)");
+    // 0 would show nothing and other negatives are not a depth: neither is taken silently as
+    // something else.
+    parser.add_check([&parser, &max_depth] {
+        if (max_depth != -1 && (max_depth < 1 || max_depth > 1024))
+            out_of_range(parser, "--max-depth", "1..1024, or -1 for unlimited");
+    });
+}
+
+void add_device_option(ArgParser& parser, int& device, const std::string& help) {
+    parser.add_int("--device", &device, help);
+    parser.add_check([&parser, &device] {
+        if (device < -1 || device > 1023)
+            out_of_range(parser, "--device", "0..1023 (see mvpl info), or -1 for the default");
+    });
 }
 
 void add_seed_option(ArgParser& parser, uint64_t& seed) {

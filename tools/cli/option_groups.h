@@ -32,6 +32,8 @@ void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& setting
 
 // --max-depth (Mitsuba's max_depth; the default is the target's) and --seed.
 void add_max_depth_option(ArgParser& parser, int& max_depth);
+// --device: a Vulkan device index of mvpl info, or -1 for the default.
+void add_device_option(ArgParser& parser, int& device, const std::string& help);
 void add_seed_option(ArgParser& parser, uint64_t& seed);
 
 }  // namespace mvpl::cli

@@ -56,7 +56,7 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     add_seed_option(parser, a.settings.seed);
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
-    parser.add_int("--device", &a.device, "Vulkan device index (see mvpl info); -1 = default");
+    add_device_option(parser, a.device, "Vulkan device index (see mvpl info); -1 = default");
     parser.add_flag("--oracle", &a.oracle,
                     "shade on the CPU with exact visibility instead of the GPU");
     parser.add_flag("--quiet", &a.quiet, "no progress bar and no summary line");
