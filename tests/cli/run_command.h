@@ -20,6 +20,9 @@ CommandResult run_mvpl_env(const std::string& env, const std::string& args);
 // neither symbolise nor suppress them (tests/gpu/gpu_test.cpp): these runs add detect_leaks=0 to
 // the caller's ASAN_OPTIONS; AddressSanitizer's other checks stay on.
 CommandResult run_mvpl_gpu(const std::string& args, const std::string& prefix = "");
+// A usage or input error: exit code 2 and exactly one line `mvpl: error: …` (containing
+// `must_contain`) on stderr; each failed expectation is a GoogleTest failure.
+void expect_one_line_error(const CommandResult& r, const std::string& must_contain);
 // Single-quotes a string for the shell.
 std::string shell_quote(const std::string& s);
 

@@ -9,6 +9,8 @@
 namespace mvpl {
 namespace {
 
+using test::expect_one_line_error;
+
 using test::run_mvpl;
 using test::shell_quote;
 
@@ -18,14 +20,6 @@ std::string temp_file(const std::string& name) {
     return (std::filesystem::temp_directory_path() /
             ("mvpl_cli_" + std::to_string(::getpid()) + "_" + name))
         .string();
-}
-
-// A usage or input error is exit code 2 and exactly one line `mvpl: error: …` on stderr.
-void expect_one_line_error(const test::CommandResult& r, const std::string& must_contain) {
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_EQ(r.err.rfind("mvpl: error: ", 0), 0u) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
 }
 
 TEST(Cli, UsageErrors) {

@@ -13,6 +13,8 @@
 namespace mvpl {
 namespace {
 
+using test::expect_one_line_error;
+
 namespace fs = std::filesystem;
 using test::shell_quote;
 
@@ -24,13 +26,6 @@ fs::path fresh_dir(const std::string& name) {
     fs::remove_all(dir);
     fs::create_directories(dir);
     return dir;
-}
-
-void expect_one_line_error(const test::CommandResult& r, const std::string& must_contain) {
-    EXPECT_EQ(r.exit_code, 2) << r.err;
-    EXPECT_EQ(r.err.rfind("mvpl: error: ", 0), 0u) << r.err;
-    EXPECT_EQ(std::count(r.err.begin(), r.err.end(), '\n'), 1) << r.err;
-    EXPECT_NE(r.err.find(must_contain), std::string::npos) << r.err;
 }
 
 std::string read(const fs::path& p) {
