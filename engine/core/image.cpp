@@ -91,9 +91,10 @@ void write_images(const Image& image, const std::vector<std::string>& paths, flo
         const std::string ext = lower_extension(path);
         if (ext != ".exr" && ext != ".png")
             throw UsageError(path + ": unknown image extension (use .exr or .png)");
-        // The last guard: a non-finite value is never written silently (finite_check.h).
-        require_finite(image, path + " not written");
     }
+    // The last guard: a non-finite value is never written silently (finite_check.h). One scan
+    // serves every path; the error names the first, as writing them in turn did.
+    if (!paths.empty()) require_finite(image, paths.front() + " not written");
     std::vector<uint8_t> png;  // encoded once for every .png target
     write_files_atomically(paths, [&](size_t i, const std::string& file) {
         if (lower_extension(paths[i]) == ".exr") {
