@@ -4,12 +4,14 @@
 #include <chrono>
 #include <span>
 
+#include "engine/core/error.h"
 #include "engine/core/finite_check.h"
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
 #include "engine/render/g_buffer_pass.h"
+#include "engine/render/render_memory.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shading_pass.h"
 #include "engine/render/shadow_pass.h"
@@ -59,6 +61,9 @@ struct VplRenderer::Impl {
     void prepare(const RenderOptions& o) {
         // The program is generated for this scene (shader_program.h); SPIR-V from the disk cache.
         const gpu::SpirvCacheOptions cache{o.shader_cache, {}};
+        const std::string shortfall =
+            memory_shortfall(o, context->device_info(), physical_memory_bytes());
+        if (!shortfall.empty()) throw UsageError(shortfall);
         if (!g_buffer || o.width != built_for.width || o.height != built_for.height) {
             g_buffer = std::make_unique<GBufferPass>(*context, geometry, o.width, o.height, nullptr,
                                                      nullptr, cache);

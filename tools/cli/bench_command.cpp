@@ -141,7 +141,7 @@ int run_bench(const Args& args) {
         const scene::Scene& scene = session.scene();
         load_s.push_back(session.load_seconds());
         bvh_s.push_back(session.bvh_seconds());
-        session.warn_if_no_light("nothing to bench", k > 0 || quiet);
+        if (k == 0) session.warn_if_no_light("nothing to bench");
         Timer t;
         gpu::Context context;
         context_s.push_back(t.seconds());

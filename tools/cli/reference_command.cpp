@@ -46,11 +46,12 @@ int run_reference(const Args& args) {
     }
 
     const session::SceneSession session(scene_path);
-    session.warn_if_no_light("the image is black", options.quiet);
+    session.warn_if_no_light("the image is black");
 
     reference::RenderStats stats;
     const reference::PathTracer tracer(session.scene(), session.accel(), session.lights());
     const Image image = tracer.render(options, &stats);
+    session.warn_if_black(image);
     write_images(image, outputs, exposure);
 
     if (stats.nonfinite_samples > 0) {

@@ -132,7 +132,7 @@ int run_render(const Args& args) {
 
     Timer total;
     const session::SceneSession session(a.scene_path);
-    session.warn_if_no_light("the image shows emitters only", a.quiet);
+    session.warn_if_no_light("the image shows emitters only");
     RenderJob job = make_job(a, session);
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<render::VplRenderer> renderer;
@@ -151,6 +151,7 @@ int run_render(const Args& args) {
         for (const std::string& message : context->validation_messages())
             std::fprintf(stderr, "mvpl: validation: %s\n", message.c_str());
     }
+    session.warn_if_black(result.image);
     write_images(result.image, a.outputs, a.exposure);
     if (!a.quiet) std::fputs(summary_line(job, result, total.seconds()).c_str(), stdout);
     return 0;

@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <cstdio>
 #include <memory>
 
 #include "engine/core/progress.h"
 #include "engine/core/timer.h"
 #include "sampler/metropolis_stream.h"
-#include "sampler/monte_carlo_sampler.h"
 
 namespace mvpl::cli {
 
@@ -19,15 +19,17 @@ namespace {
 // chunk overshoots the budget by little.
 constexpr double kChunkSeconds = 0.5;
 
+// Light paths or chain steps per chunk of a fixed-size render: a multiple of the Monte Carlo
+// tracer's block of 256 paths, big enough to keep both cores busy, small enough that a chunk's
+// VPLs (≈ max depth per path, 112 bytes each) stay a few megabytes.
+constexpr uint64_t kStreamChunkUnits = uint64_t(1) << 14;
+
 // Warns when the Metropolis bootstrap found no light on anything the camera sees; returns
 // whether it did not (then sampling longer cannot change the black image).
-bool warn_if_unlit(const sampler::VplStream& stream, const std::string& scene_path) {
+bool warn_if_unlit(const sampler::VplStream& stream, const session::SceneSession& session) {
     const auto* metropolis = dynamic_cast<const sampler::MetropolisStream*>(&stream);
     if (metropolis && metropolis->no_visible_light()) {
-        std::fprintf(stderr,
-                     "mvpl: warning: %s: no light reaches anything the camera sees; the image "
-                     "is black\n",
-                     scene_path.c_str());
+        session.warn("no light reaches anything the camera sees; the image is black");
         return true;
     }
     return false;
@@ -49,113 +51,118 @@ std::unique_ptr<sampler::VplStream> make_stream(const RenderJob& job) {
                                     job.settings);
 }
 
-// The VPLs of `units` at once. Monte Carlo traces them in one parallel call (with its own
-// progress bar); Metropolis runs its chains.
-light::VplSet sample_once(const RenderJob& job, uint64_t units, RenderOutcome& result) {
-    const session::SceneSession& s = *job.session;
-    if (job.sampler == "mc") {
-        sampler::MonteCarloOptions mc;
-        mc.paths = units;
-        mc.seed = job.settings.seed;
-        mc.qmc = job.settings.qmc;
-        mc.per_path = job.settings.per_path;
-        mc.tracer = job.settings.tracer;
-        mc.quiet = job.quiet;
-        result.units = units;
-        return sampler::MonteCarloSampler(s.scene(), s.accel(), s.lights()).generate(mc);
-    }
-    const std::unique_ptr<sampler::VplStream> stream = make_stream(job);
-    warn_if_unlit(*stream, s.path());
-    light::VplSet set;
-    stream->next(units, set.vpls);
-    set.scale = stream->scale();
-    result.units = stream->work_done();
-    result.statistics = stream->statistics();
-    return set;
-}
-
 // Adds `part` into `sum`, pixel by pixel.
 void add_image(Image& sum, const Image& part, float scale = 1.0f) {
     for (size_t i = 0; i < sum.pixels().size(); ++i)
         sum.pixels()[i] += part.pixels()[i] * scale;
 }
 
+// The loop both renders share: a sampler stream whose chunks of VPLs are shaded as they come,
+// on the GPU (begin/accumulate/resolve) or by the CPU oracle, each chunk gathered at once (VPL
+// light only, unscaled) and the emitted radiance added once at the end.
+class ChunkedRender {
+public:
+    ChunkedRender(const RenderJob& job, RenderOutcome& result)
+        : m_job(job), m_session(*job.session), m_result(result) {
+        if (job.renderer) job.renderer->begin(m_session.camera(), job.render);
+        Timer setup;
+        m_stream = make_stream(job);
+        m_result.sampling_seconds += setup.seconds();
+        m_unlit = warn_if_unlit(*m_stream, m_session);
+        m_gather = job.gather;
+        m_gather.max_depth = 0;
+        m_gather.quiet = true;
+        if (!job.renderer) m_sum = Image(job.gather.width, job.gather.height);
+    }
+
+    const sampler::VplStream& stream() const { return *m_stream; }
+    // Whether the stream knows already that the image stays black however long it runs.
+    bool unlit() const { return m_unlit; }
+
+    // Samples `work` more units and shades their VPLs.
+    void add(uint64_t work) {
+        m_chunk.clear();
+        Timer sampling;
+        m_stream->next(work, m_chunk);
+        m_result.sampling_seconds += sampling.seconds();
+        Timer shading;
+        if (m_job.renderer) {
+            m_job.renderer->accumulate(m_chunk);
+        } else if (!m_chunk.empty()) {
+            add_image(m_sum, reference::gather_vpls(m_session.scene(), m_session.accel(), {m_chunk},
+                                                    m_gather));
+        }
+        m_result.shading_seconds += shading.seconds();
+        m_result.vpls += m_chunk.size();
+    }
+
+    // The image: scale · Σ contributions + the emitted radiance seen directly.
+    void finish() {
+        m_result.units = m_stream->work_done();
+        m_result.statistics = m_stream->statistics();
+        Timer shading;
+        if (m_job.renderer) {
+            m_result.image = m_job.renderer->resolve(m_stream->scale());
+            m_result.timings = m_job.renderer->timings();
+        } else {
+            m_result.image = reference::gather_vpls(m_session.scene(), m_session.accel(), {},
+                                                    m_job.gather);  // emission
+            add_image(m_result.image, m_sum, float(m_stream->scale()));
+        }
+        m_result.shading_seconds += shading.seconds();
+    }
+
+private:
+    const RenderJob& m_job;
+    const session::SceneSession& m_session;
+    RenderOutcome& m_result;
+    std::unique_ptr<sampler::VplStream> m_stream;
+    bool m_unlit = false;
+    reference::GatherOptions m_gather;
+    Image m_sum;
+    std::vector<light::Vpl> m_chunk;
+};
+
 }  // namespace
 
 RenderOutcome render_once(const RenderJob& job, uint64_t units) {
     RenderOutcome result;
-    Timer sampling;
-    const light::VplSet set = sample_once(job, units, result);
-    result.sampling_seconds = sampling.seconds();
-    result.vpls = set.vpls.size();
-    Timer shading;
-    if (!job.renderer) {
-        const session::SceneSession& s = *job.session;
-        result.image = reference::gather_vpls(s.scene(), s.accel(), set, job.gather);
-    } else {
-        Progress progress("render", int64_t(set.vpls.size()), job.quiet);
-        render::RenderOptions ro = job.render;
-        ro.on_batch = [&progress](size_t count) { progress.advance(int64_t(count)); };
-        result.image = job.renderer->render(set, ro, &result.timings);
-        progress.finish();
+    ChunkedRender run(job, result);
+    Progress progress("render", int64_t(std::min<uint64_t>(units, INT64_MAX)), job.quiet);
+    // Chunk by chunk, so that memory does not grow with `units`: the same VPLs as at once (the
+    // Monte Carlo stream's blocks are aligned to path indices, and a chunk is a whole number of
+    // them), summed in another order.
+    for (uint64_t done = 0; !run.unlit() && done < units;) {
+        const uint64_t work = std::min(kStreamChunkUnits, units - done);
+        run.add(work);
+        done += work;
+        progress.set_status(run.stream().statistics());
+        progress.advance(int64_t(work));
     }
-    result.shading_seconds = shading.seconds();
+    progress.finish();
+    run.finish();
     return result;
 }
 
 RenderOutcome render_for(const RenderJob& job, double seconds) {
-    const session::SceneSession& s = *job.session;
     RenderOutcome result;
     Timer budget;
-    if (job.renderer) job.renderer->begin(s.camera(), job.render);
-    Timer setup;
-    const std::unique_ptr<sampler::VplStream> stream = make_stream(job);
-    result.sampling_seconds += setup.seconds();
-    const bool unlit = warn_if_unlit(*stream, s.path());
+    ChunkedRender run(job, result);
     // Progress in tenths of the budget.
     const int64_t tenths = int64_t(std::ceil(seconds * 10.0));
     int64_t shown = 0;
     Progress progress("render", tenths, job.quiet);
-    std::vector<light::Vpl> chunk;
-    // The oracle gathers each chunk at once (VPL light only, unscaled) so that the budget counts
-    // the CPU shading too; the emitted radiance is added once at the end.
-    reference::GatherOptions g_chunk = job.gather;
-    g_chunk.max_depth = 0;
-    g_chunk.quiet = true;
-    Image sum(job.gather.width, job.gather.height);
     const uint64_t first = uint64_t(job.render.batch);
-    while (!unlit && budget.seconds() < seconds) {
-        const uint64_t work =
-            next_chunk(stream->work_done(), budget.seconds(), seconds - budget.seconds(), first);
-        chunk.clear();
-        Timer sampling;
-        stream->next(work, chunk);
-        result.sampling_seconds += sampling.seconds();
-        Timer shading;
-        if (job.renderer) {
-            job.renderer->accumulate(chunk);
-        } else if (!chunk.empty()) {
-            add_image(sum, reference::gather_vpls(s.scene(), s.accel(), {chunk}, g_chunk));
-        }
-        result.shading_seconds += shading.seconds();
-        result.vpls += chunk.size();
-        progress.set_status(stream->statistics());
+    while (!run.unlit() && budget.seconds() < seconds) {
+        run.add(next_chunk(run.stream().work_done(), budget.seconds(), seconds - budget.seconds(),
+                           first));
+        progress.set_status(run.stream().statistics());
         const int64_t now = std::min(tenths, int64_t(budget.seconds() * 10.0));
         progress.advance(now - shown);
         shown = now;
     }
     progress.finish();
-    result.units = stream->work_done();
-    result.statistics = stream->statistics();
-    Timer shading;
-    if (job.renderer) {
-        result.image = job.renderer->resolve(stream->scale());
-        result.timings = job.renderer->timings();
-    } else {
-        result.image = reference::gather_vpls(s.scene(), s.accel(), {}, job.gather);  // emission
-        add_image(result.image, sum, float(stream->scale()));
-    }
-    result.shading_seconds += shading.seconds();
+    run.finish();
     return result;
 }
 

@@ -15,13 +15,23 @@ SceneSession::SceneSession(const std::string& path)
       m_lights(m_scene),
       m_setup_seconds(m_clock.seconds()) {}
 
-bool SceneSession::warn_if_no_light(const std::string& consequence, bool quiet) const {
+bool SceneSession::warn_if_no_light(const std::string& consequence) const {
     if (!m_lights.empty()) return false;
-    if (!quiet) {
-        std::fprintf(stderr, "mvpl: warning: %s: the scene has no light; %s\n", m_path.c_str(),
-                     consequence.c_str());
-    }
+    warn("the scene has no light; " + consequence);
     return true;
+}
+
+void SceneSession::warn(const std::string& what) const {
+    if (m_warned) return;
+    m_warned = true;
+    std::fprintf(stderr, "mvpl: warning: %s: %s\n", m_path.c_str(), what.c_str());
+}
+
+void SceneSession::warn_if_black(const Image& image) const {
+    for (const Rgb& p : image.pixels()) {
+        if (p.r != 0.0f || p.g != 0.0f || p.b != 0.0f) return;
+    }
+    warn("the image is black: no light reaches what the camera sees");
 }
 
 }  // namespace mvpl::session

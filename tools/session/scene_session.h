@@ -5,6 +5,7 @@
 // one scene set-up.
 #include <string>
 
+#include "engine/core/image.h"
 #include "engine/core/timer.h"
 #include "engine/light/light_sampler.h"
 #include "engine/scene/scene.h"
@@ -30,9 +31,15 @@ public:
     double bvh_seconds() const { return m_bvh_seconds; }
     double setup_seconds() const { return m_setup_seconds; }
 
-    // Without a light, prints "mvpl: warning: PATH: the scene has no light; CONSEQUENCE" (unless
-    // quiet) and returns true.
-    bool warn_if_no_light(const std::string& consequence, bool quiet) const;
+    // Why an image is black, said even under --quiet (a warning is not progress), and at most
+    // once a session: the first of these that applies prints "mvpl: warning: PATH: …".
+    // Without a light: "the scene has no light; CONSEQUENCE", and returns true.
+    bool warn_if_no_light(const std::string& consequence) const;
+    // A sampler's finding, e.g. "no light reaches anything the camera sees; the image is black".
+    void warn(const std::string& what) const;
+    // When every pixel of `image` is 0: "the image is black: no light reaches what the camera
+    // sees".
+    void warn_if_black(const Image& image) const;
 
 private:
     // Declaration order is construction order: each stage is timed when it is done.
@@ -44,6 +51,7 @@ private:
     double m_bvh_seconds;
     light::LightSampler m_lights;
     double m_setup_seconds;
+    mutable bool m_warned = false;
 };
 
 }  // namespace mvpl::session

@@ -1,0 +1,77 @@
+#include "engine/render/render_memory.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cstdio>
+
+#include "engine/render/g_buffer_pass.h"
+
+namespace mvpl::render {
+
+namespace {
+
+constexpr uint64_t kRgba32f = 16;
+constexpr uint64_t kR32f = 4;
+constexpr uint64_t kD32f = 4;
+
+std::string gigabytes(uint64_t bytes) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f GB", double(bytes) / 1e9);
+    return buf;
+}
+
+}  // namespace
+
+MemoryEstimate estimate_memory(const RenderOptions& o) {
+    const uint64_t pixels = uint64_t(o.width) * o.height;
+    const uint64_t texels = uint64_t(o.shadow_resolution) * o.shadow_resolution;
+    // The passes' images (g_buffer_pass.cpp, shadow_pass.cpp, shading_pass.cpp): the G-buffer
+    // layers and their depth, the accumulation, one cube of six faces per VPL of a batch with one
+    // depth cube, and the directional maps (at least two layers) with one depth face.
+    const uint64_t g_buffer = pixels * kRgba32f * kGBufferLayerCount;
+    const uint64_t cubes = texels * kR32f * 6 * o.batch;
+    const uint64_t ortho = texels * kR32f * std::max(o.batch, 2u);
+    MemoryEstimate e;
+    e.device_bytes = g_buffer + pixels * kD32f + pixels * kRgba32f + cubes + texels * kD32f * 6 +
+                     ortho + texels * kD32f;
+    e.largest_image = std::max({g_buffer, cubes, ortho});
+    // The accumulation read back as RGBA32F, then the linear RGB image.
+    e.host_bytes = pixels * (kRgba32f + 12);
+    return e;
+}
+
+std::string memory_shortfall(const RenderOptions& o, const gpu::DeviceInfo& device,
+                             uint64_t host_bytes) {
+    const MemoryEstimate e = estimate_memory(o);
+    uint64_t heap = 0;
+    for (const gpu::MemoryHeapInfo& h : device.heaps) {
+        if (h.device_local) heap = std::max(heap, h.size);
+    }
+    char what[160];
+    std::snprintf(what, sizeof what, "a %ux%u image with %u² shadow faces and %u VPLs a batch",
+                  o.width, o.height, o.shadow_resolution, o.batch);
+    const uint64_t max_allocation = device.limits.max_memory_allocation_size;
+    if (heap > 0 && e.device_bytes > heap) {
+        return std::string(what) + " needs about " + gigabytes(e.device_bytes) +
+               " of GPU memory; " + device.name + " has " + gigabytes(heap);
+    }
+    if (max_allocation > 0 && e.largest_image > max_allocation) {
+        return std::string(what) + " needs one image of " + gigabytes(e.largest_image) + "; " +
+               device.name + " allocates at most " + gigabytes(max_allocation) + " at once";
+    }
+    if (host_bytes > 0 && e.host_bytes > host_bytes) {
+        return std::string(what) + " needs about " + gigabytes(e.host_bytes) +
+               " of host memory; this machine has " + gigabytes(host_bytes);
+    }
+    return {};
+}
+
+uint64_t physical_memory_bytes() {
+    const long pages = sysconf(_SC_PHYS_PAGES);
+    const long page_size = sysconf(_SC_PAGE_SIZE);
+    if (pages <= 0 || page_size <= 0) return 0;
+    return uint64_t(pages) * uint64_t(page_size);
+}
+
+}  // namespace mvpl::render
