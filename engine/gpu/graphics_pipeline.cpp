@@ -241,8 +241,10 @@ void end_rendering(CommandList& cmd) {
     vkCmdEndRendering(cmd.handle());
 }
 
-void draw(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
-          std::span<const std::byte> push_constants, uint32_t first_vertex, uint32_t vertex_count) {
+namespace {
+
+void bind(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
+          std::span<const std::byte> push_constants) {
     if (push_constants.size() != pipeline.layout().push_constant_bytes) {
         throw GpuError("draw with '" + pipeline.name() +
                        "': " + std::to_string(push_constants.size()) +
@@ -258,7 +260,27 @@ void draw(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vert
         vkCmdPushConstants(handle, pipeline.pipeline_layout(), kPushStages, 0,
                            uint32_t(push_constants.size()), push_constants.data());
     }
-    vkCmdDraw(handle, vertex_count, 1, first_vertex, 0);
+}
+
+}  // namespace
+
+void draw(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
+          std::span<const std::byte> push_constants, uint32_t first_vertex, uint32_t vertex_count) {
+    bind(cmd, pipeline, vertices, push_constants);
+    vkCmdDraw(cmd.handle(), vertex_count, 1, first_vertex, 0);
+}
+
+void draw_indexed(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
+                  const Buffer& indices, std::span<const std::byte> push_constants,
+                  std::span<const IndexRange> ranges) {
+    if (!has(indices.usage(), BufferUsage::index))
+        throw GpuError("draw_indexed with '" + pipeline.name() + "': not an index buffer");
+    bind(cmd, pipeline, vertices, push_constants);
+    vkCmdBindIndexBuffer(cmd.handle(), indices.handle(), 0, VK_INDEX_TYPE_UINT32);
+    for (const IndexRange& r : ranges) {
+        if (r.index_count > 0)
+            vkCmdDrawIndexed(cmd.handle(), r.index_count, 1, r.first_index, 0, 0);
+    }
 }
 
 }  // namespace mvpl::gpu

@@ -1,7 +1,7 @@
 #pragma once
 // A graphics pipeline for dynamic rendering (Vulkan 1.3, no render pass objects) and the few
-// commands that draw with it: begin/end rendering into layers of mvpl Images and non-indexed
-// draws from one vertex buffer. Vulkan-free to include.
+// commands that draw with it: begin/end rendering into layers of mvpl Images, non-indexed draws
+// from one vertex buffer and indexed draws of index ranges. Vulkan-free to include.
 //
 // The shape is what the render passes need and no more: one interleaved vertex buffer, push
 // constants visible to both stages and no descriptor sets (per-draw data fits in 128 bytes, the
@@ -88,5 +88,16 @@ void end_rendering(CommandList& cmd);
 // vertex_count vertices from first_vertex as a triangle list.
 void draw(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
           std::span<const std::byte> push_constants, uint32_t first_vertex, uint32_t vertex_count);
+
+// A run of a uint32 index buffer, drawn as a triangle list.
+struct IndexRange {
+    uint32_t first_index = 0;
+    uint32_t index_count = 0;
+};
+
+// Binds pipeline, vertices and indices once, pushes push_constants and draws every range.
+void draw_indexed(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
+                  const Buffer& indices, std::span<const std::byte> push_constants,
+                  std::span<const IndexRange> ranges);
 
 }  // namespace mvpl::gpu

@@ -43,19 +43,35 @@ bool face_behind(const Vec3& n, uint32_t face) {
 
 gpu::GraphicsLayout shadow_layout(uint32_t push_constant_bytes) {
     gpu::GraphicsLayout layout;
-    layout.vertex_stride = sizeof(GeometryVertex);
-    layout.attributes = {{gpu::VertexFormat::float3, offsetof(GeometryVertex, position)}};
+    layout.vertex_stride = sizeof(Vec3);
+    layout.attributes = {{gpu::VertexFormat::float3, 0}};
     layout.color_formats = {gpu::Format::r32_float};
     layout.depth = true;
     layout.push_constant_bytes = push_constant_bytes;
     return layout;
 }
 
+template <typename T>
+gpu::Buffer upload_buffer(gpu::Context& context, const std::vector<T>& data, gpu::BufferUsage usage,
+                          const char* name) {
+    gpu::Buffer buffer(context, std::max<uint64_t>(data.size() * sizeof(T), sizeof(T)), usage,
+                       gpu::MemoryLocation::device, name);
+    if (!data.empty()) buffer.upload(std::as_bytes(std::span(data)));
+    return buffer;
+}
+
 }  // namespace
 
-ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry, uint32_t resolution,
-                       uint32_t max_batch)
+ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
+                       const ShadowClusters& clusters, uint32_t resolution, uint32_t max_batch,
+                       bool culling)
     : m_geometry(&geometry),
+      m_clusters(&clusters),
+      m_positions(upload_buffer(context, clusters.positions(), gpu::BufferUsage::vertex,
+                                "shadow positions")),
+      m_indices(
+          upload_buffer(context, clusters.indices(), gpu::BufferUsage::index, "shadow indices")),
+      m_culling(culling),
       m_cubes(context,
               {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
                gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
@@ -113,9 +129,19 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
             gpu::begin_rendering(cmd, std::span(&color, 1), &depth);
             const ShadowPush push{{vpl.position.x, vpl.position.y, vpl.position.z, m_near},
                                   {face, 0u, 0u, 0u}};
-            // One draw for the whole scene: materials do not matter for distances.
-            gpu::draw(cmd, *m_pipeline, m_geometry->vertices(), gpu::push_bytes(push), 0,
-                      m_geometry->vertex_count());
+            // Materials do not matter for distances: one index buffer for the whole scene, of
+            // which the face draws the clusters it can see.
+            if (m_culling) {
+                // A face's texel spans at most 2/resolution radians.
+                m_clusters->visible_ranges(vpl.position, face, hemisphere ? &vpl.normal : nullptr,
+                                           2.0f / float(resolution()), m_ranges);
+            } else {
+                m_ranges.assign(1, m_clusters->all());
+            }
+            for (const gpu::IndexRange& r : m_ranges)
+                m_triangles_drawn += r.index_count / 3;
+            gpu::draw_indexed(cmd, *m_pipeline, m_positions, m_indices, gpu::push_bytes(push),
+                              m_ranges);
             gpu::end_rendering(cmd);
         }
     }
@@ -130,8 +156,9 @@ void ShadowPass::record_directional(gpu::CommandList& cmd, const light::Vpl& vpl
                          {f.v.x, f.v.y, f.v.z, f.origin.y},
                          {f.dir.x, f.dir.y, f.dir.z, f.origin.z},
                          {f.extent, f.depth, 0.0f, 0.0f}};
-    gpu::draw(cmd, *m_ortho_pipeline, m_geometry->vertices(), gpu::push_bytes(push), 0,
-              m_geometry->vertex_count());
+    const gpu::IndexRange all = m_clusters->all();
+    gpu::draw_indexed(cmd, *m_ortho_pipeline, m_positions, m_indices, gpu::push_bytes(push),
+                      std::span(&all, 1));
     gpu::end_rendering(cmd);
 }
 

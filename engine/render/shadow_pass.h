@@ -16,13 +16,15 @@
 #include <memory>
 #include <span>
 
+#include "engine/gpu/buffer.h"
+#include "engine/gpu/graphics_pipeline.h"
 #include "engine/gpu/image.h"
 #include "engine/light/vpl.h"
+#include "engine/render/shadow_clusters.h"
 
 namespace mvpl::gpu {
 class CommandList;
 class Context;
-class GraphicsPipeline;
 }  // namespace mvpl::gpu
 
 namespace mvpl::render {
@@ -34,9 +36,10 @@ inline constexpr float kShadowNoOccluder = 3.0e38f;
 
 class ShadowPass {
 public:
-    // resolution: the side of a cube face in texels; max_batch: cubes in the array.
-    ShadowPass(gpu::Context& context, const SceneGeometry& geometry, uint32_t resolution,
-               uint32_t max_batch);
+    // resolution: the side of a cube face in texels; max_batch: cubes in the array; culling:
+    // whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle.
+    ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
+               uint32_t resolution, uint32_t max_batch, bool culling = true);
     ~ShadowPass();
     ShadowPass(const ShadowPass&) = delete;
     ShadowPass& operator=(const ShadowPass&) = delete;
@@ -53,11 +56,19 @@ public:
     uint32_t max_batch() const { return m_cubes.layers() / 6; }
     // Surfaces closer than this to a VPL do not shadow (the near plane), relative to the scene.
     float near_distance() const { return m_near; }
+    // Triangles drawn into cube faces since construction (bench reports the culling's effect).
+    uint64_t triangles_drawn() const { return m_triangles_drawn; }
 
 private:
     void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
 
     const SceneGeometry* m_geometry;
+    const ShadowClusters* m_clusters;
+    gpu::Buffer m_positions;
+    gpu::Buffer m_indices;
+    bool m_culling;
+    std::vector<gpu::IndexRange> m_ranges;  // scratch, per face
+    uint64_t m_triangles_drawn = 0;
     gpu::Image m_cubes;
     gpu::Image m_depth;  // six layers, reused by every cube
     gpu::Image m_ortho;

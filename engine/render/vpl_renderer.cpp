@@ -28,11 +28,13 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 }  // namespace
 
 struct VplRenderer::Impl {
-    Impl(gpu::Context& c, const scene::Scene& s) : context(&c), camera(s.camera), geometry(c, s) {}
+    Impl(gpu::Context& c, const scene::Scene& s)
+        : context(&c), camera(s.camera), geometry(c, s), clusters(s) {}
 
     gpu::Context* context;
     scene::Camera camera;
     SceneGeometry geometry;
+    ShadowClusters clusters;
     // Passes are kept between renders with the same sizes (pipelines compile in ~100 ms).
     std::unique_ptr<GBufferPass> g_buffer;
     std::unique_ptr<ShadowPass> shadow;
@@ -70,8 +72,9 @@ struct VplRenderer::Impl {
             shading.reset();
         }
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
-            o.batch != built_for.batch) {
-            shadow = std::make_unique<ShadowPass>(*context, geometry, o.shadow_resolution, o.batch);
+            o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling) {
+            shadow = std::make_unique<ShadowPass>(*context, geometry, clusters, o.shadow_resolution,
+                                                  o.batch, o.shadow_culling);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();
@@ -143,6 +146,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
     batch.ortho_shadows = options.shadows ? &m.shadow->ortho_maps() : nullptr;
     // Emitted radiance is added by resolve(), unscaled, so the accumulation holds VPLs only.
     batch.add_emission = false;
+    const uint64_t drawn_before = m.shadow->triangles_drawn();
     for (uint32_t b = 0; b < batches; ++b) {
         const size_t first = size_t(b) * options.batch;
         const std::span<const light::Vpl> slice =
@@ -162,6 +166,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
         if (options.on_batch) options.on_batch(slice.size());
     }
     m.timings.batches += batches;
+    m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
 }
 

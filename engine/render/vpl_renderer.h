@@ -30,6 +30,9 @@ struct RenderOptions {
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.
     float clamp = light::kDefaultClamp;
     bool shadows = true;  // false: every VPL unshadowed (tests, debugging)
+    // Each cube face draws only the triangle clusters it can see (shadow_clusters.h); false: every
+    // triangle into every face (the A/B of mvpl bench --sweep).
+    bool shadow_culling = true;
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
     bool surface_vpls = true;
@@ -47,6 +50,7 @@ struct RenderTimings {
     double total_ms = 0.0;  // the three above
     double wall_ms = 0.0;   // host time of render(), uploads and read-back included
     uint32_t batches = 0;
+    uint64_t shadow_triangles = 0;  // triangles drawn into cube faces
 };
 
 class VplRenderer {

@@ -136,12 +136,23 @@ TEST_F(Bench, RatesAgreeWithCountsAndTimes) {
 TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
     const json j = json::parse(s_text);
-    // 5 batch sizes × 3 shadow resolutions, each pair once.
-    ASSERT_EQ(j["sweep"].size(), 15u);
+    // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
+    // shadow culling off.
+    ASSERT_EQ(j["sweep"].size(), 16u);
     std::set<std::pair<int, int>> pairs;
-    for (const json& r : j["sweep"])
+    for (size_t i = 0; i < 15; ++i) {
+        const json& r = j["sweep"][i];
+        EXPECT_TRUE(r["shadow_culling"].get<bool>());
         pairs.insert({r["batch"].get<int>(), r["shadow_resolution"].get<int>()});
+    }
     EXPECT_EQ(pairs.size(), 15u);
+    const json& unculled = j["sweep"][15];
+    EXPECT_FALSE(unculled["shadow_culling"].get<bool>());
+    EXPECT_EQ(unculled["batch"], j["render"]["batch"]);
+    // Culling only ever removes triangles from a face.
+    EXPECT_LE(j["render"]["shadow_triangles_per_vpl"].get<double>(),
+              unculled["shadow_triangles_per_vpl"].get<double>());
+    EXPECT_GT(j["render"]["shadow_triangles_per_vpl"].get<double>(), 0.0);
     // The table for people: a header and one row per configuration.
     EXPECT_NE(s_result.out.find("end to end"), std::string::npos) << s_result.out;
     EXPECT_NE(s_result.out.find("batch  shadow"), std::string::npos) << s_result.out;

@@ -39,6 +39,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.batch = uint32_t(c.batch);
     ro.clamp = clamp;
     ro.shadows = shadows;
+    ro.shadow_culling = c.shadow_culling;
     return ro;
 }
 
@@ -57,6 +58,7 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.shadow_ms = t.shadow_ms;
     s.shading_ms = t.shading_ms;
     s.batches = t.batches;
+    s.shadow_triangles = t.shadow_triangles;
     return s;
 }
 
@@ -96,7 +98,8 @@ int run_bench(const Args& args) {
     add_seed_option(parser, mc.seed);
     parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported");
     parser.add_flag("--sweep", &sweep,
-                    "also render with batch 8..128 × shadow faces 128², 256², 512²");
+                    "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
+                    "shadow culling switched");
     parser.add_flag("--no-shadows", &no_shadows,
                     "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
                     "measure what visibility costs)");
@@ -105,6 +108,7 @@ int run_bench(const Args& args) {
     if (!parser.parse(args)) return 0;
     config.shadow_resolution = renderer_args.shadow_res;
     config.batch = renderer_args.batch;
+    config.shadow_culling = !renderer_args.no_shadow_culling;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     if (paths < 1 || paths > (uint64_t(1) << 24))
@@ -124,6 +128,10 @@ int run_bench(const Args& args) {
                 sweep_configs.push_back(c);
             }
         }
+        // Each lever on and off at the main configuration.
+        BenchConfig c = config;
+        c.shadow_culling = !config.shadow_culling;
+        sweep_configs.push_back(c);
     }
 
     BenchReport report;

@@ -13,6 +13,7 @@ struct BenchConfig {
     int height = 512;
     int shadow_resolution = 256;
     int batch = 32;
+    bool shadow_culling = true;  // render::RenderOptions::shadow_culling
 };
 
 // One measured render of the VPLs with one configuration. Times in seconds unless named _ms.
@@ -22,6 +23,7 @@ struct RenderSample {
     double shading_ms = 0.0;
     double wall_s = 0.0;  // host time of begin + accumulate + resolve (uploads, read-back)
     uint32_t batches = 0;
+    uint64_t shadow_triangles = 0;  // drawn into cube faces
 };
 
 // The medians over the repeats of one configuration, and the rates derived from those medians
@@ -30,6 +32,7 @@ struct RenderResult {
     BenchConfig config;
     RenderSample median;
     double shadow_ms_per_vpl = 0.0;
+    double shadow_triangles_per_vpl = 0.0;
     double shading_ms_per_vpl = 0.0;
     double shading_pixel_vpls_per_s = 0.0;  // width · height · VPLs / shading GPU seconds
     double end_to_end_s = 0.0;              // light-path generation + render wall time
