@@ -1,5 +1,7 @@
 #include "engine/render/shadow_clusters.h"
 
+#include <meshoptimizer.h>
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -29,16 +31,46 @@ uint64_t morton_code(const Vec3& p, const Vec3& lo, const Vec3& extent) {
     return code;
 }
 
-}  // namespace
-
-ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_triangles) {
-    std::vector<uint32_t> triangles;  // three indices each, into m_positions
-    for (const scene::Mesh& mesh : scene.meshes) {
-        const uint32_t base = uint32_t(m_positions.size());
-        m_positions.insert(m_positions.end(), mesh.positions.begin(), mesh.positions.end());
+// Appends the mesh's positions to `positions` and its triangles, as indices into them, to
+// `triangles`: welded and simplified when `simplify_error` > 0 and the mesh is large enough.
+void add_mesh(const scene::Mesh& mesh, float simplify_error, std::vector<Vec3>& positions,
+              std::vector<uint32_t>& triangles) {
+    const uint32_t base = uint32_t(positions.size());
+    if (!(simplify_error > 0.0f) || mesh.triangle_count() < ShadowClusters::kProxyMinTriangles) {
+        positions.insert(positions.end(), mesh.positions.begin(), mesh.positions.end());
         for (const uint32_t i : mesh.indices)
             triangles.push_back(base + i);
+        return;
     }
+    // Seams of normals and texture coordinates split vertices that shadows need not tell apart;
+    // welded, the simplifier sees one surface instead of patches with locked borders.
+    std::vector<uint32_t> remap(mesh.positions.size());
+    const size_t unique =
+        meshopt_generateVertexRemap(remap.data(), mesh.indices.data(), mesh.indices.size(),
+                                    mesh.positions.data(), mesh.positions.size(), sizeof(Vec3));
+    std::vector<Vec3> welded(unique);
+    meshopt_remapVertexBuffer(welded.data(), mesh.positions.data(), mesh.positions.size(),
+                              sizeof(Vec3), remap.data());
+    std::vector<uint32_t> indices(mesh.indices.size());
+    meshopt_remapIndexBuffer(indices.data(), mesh.indices.data(), mesh.indices.size(),
+                             remap.data());
+    // The error bound decides where it stops, not the triangle count.
+    std::vector<uint32_t> simplified(indices.size());
+    const size_t count =
+        meshopt_simplify(simplified.data(), indices.data(), indices.size(), &welded[0].x,
+                         welded.size(), sizeof(Vec3), 3, simplify_error, 0, nullptr);
+    positions.insert(positions.end(), welded.begin(), welded.end());
+    for (size_t i = 0; i < count; ++i)
+        triangles.push_back(base + simplified[i]);
+}
+
+}  // namespace
+
+ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_triangles,
+                               float simplify_error) {
+    std::vector<uint32_t> triangles;  // three indices each, into m_positions
+    for (const scene::Mesh& mesh : scene.meshes)
+        add_mesh(mesh, simplify_error, m_positions, triangles);
     const size_t count = triangles.size() / 3;
     Vec3 lo(INFINITY);
     Vec3 hi(-INFINITY);

@@ -29,12 +29,22 @@ public:
     // merged into one draw each).
     static constexpr uint32_t kClusterTriangles = 256;
 
+    // simplify_error > 0: a shadow proxy instead (issue 14, "coarser shadow geometry"): each mesh
+    // of at least kProxyMinTriangles, its vertices welded by position, simplified by
+    // meshoptimizer's edge-collapse simplifier until the next collapse would move the surface by
+    // more than simplify_error × the mesh's extent.
     explicit ShadowClusters(const scene::Scene& scene,
-                            uint32_t cluster_triangles = kClusterTriangles);
+                            uint32_t cluster_triangles = kClusterTriangles,
+                            float simplify_error = 0.0f);
+    static constexpr size_t kProxyMinTriangles = 4096;
+    // The proxy's error bound, as a fraction of a mesh's extent (docs/results.md, "Shadow
+    // proxy", for the measurement behind it).
+    static constexpr float kProxyError = 1e-3f;
 
     const std::vector<Vec3>& positions() const { return m_positions; }
     const std::vector<uint32_t>& indices() const { return m_indices; }
     const std::vector<ShadowCluster>& clusters() const { return m_clusters; }
+    size_t triangle_count() const { return m_indices.size() / 3; }
 
     // Replaces `out` by the index ranges to draw for cube face `face` (+X −X +Y −Y +Z −Z) of a
     // VPL at `position`: every cluster whose sphere may reach the face's frustum and, when

@@ -53,7 +53,7 @@ gpu::GraphicsLayout shadow_layout(uint32_t push_constant_bytes) {
 
 template <typename T>
 gpu::Buffer upload_buffer(gpu::Context& context, const std::vector<T>& data, gpu::BufferUsage usage,
-                          const char* name) {
+                          const std::string& name) {
     gpu::Buffer buffer(context, std::max<uint64_t>(data.size() * sizeof(T), sizeof(T)), usage,
                        gpu::MemoryLocation::device, name);
     if (!data.empty()) buffer.upload(std::as_bytes(std::span(data)));
@@ -62,15 +62,23 @@ gpu::Buffer upload_buffer(gpu::Context& context, const std::vector<T>& data, gpu
 
 }  // namespace
 
+ShadowPass::Casters ShadowPass::upload(gpu::Context& context, const ShadowClusters& clusters,
+                                       const char* name) {
+    Casters c;
+    c.clusters = &clusters;
+    c.positions = upload_buffer(context, clusters.positions(), gpu::BufferUsage::vertex,
+                                std::string(name) + " positions");
+    c.indices = upload_buffer(context, clusters.indices(), gpu::BufferUsage::index,
+                              std::string(name) + " indices");
+    return c;
+}
+
 ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
                        const ShadowClusters& clusters, uint32_t resolution, uint32_t max_batch,
-                       bool culling)
+                       bool culling, const ShadowClusters* proxy)
     : m_geometry(&geometry),
-      m_clusters(&clusters),
-      m_positions(upload_buffer(context, clusters.positions(), gpu::BufferUsage::vertex,
-                                "shadow positions")),
-      m_indices(
-          upload_buffer(context, clusters.indices(), gpu::BufferUsage::index, "shadow indices")),
+      m_full(upload(context, clusters, "shadow casters")),
+      m_proxy(proxy ? upload(context, *proxy, "shadow proxy") : Casters{}),
       m_culling(culling),
       m_cubes(context,
               {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
@@ -131,17 +139,19 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
                                   {face, 0u, 0u, 0u}};
             // Materials do not matter for distances: one index buffer for the whole scene, of
             // which the face draws the clusters it can see.
+            const Casters& casters = m_proxy.clusters && vpl.path_length > 0 ? m_proxy : m_full;
             if (m_culling) {
                 // A face's texel spans at most 2/resolution radians.
-                m_clusters->visible_ranges(vpl.position, face, hemisphere ? &vpl.normal : nullptr,
-                                           2.0f / float(resolution()), m_ranges);
+                casters.clusters->visible_ranges(vpl.position, face,
+                                                 hemisphere ? &vpl.normal : nullptr,
+                                                 2.0f / float(resolution()), m_ranges);
             } else {
-                m_ranges.assign(1, m_clusters->all());
+                m_ranges.assign(1, casters.clusters->all());
             }
             for (const gpu::IndexRange& r : m_ranges)
                 m_triangles_drawn += r.index_count / 3;
-            gpu::draw_indexed(cmd, *m_pipeline, m_positions, m_indices, gpu::push_bytes(push),
-                              m_ranges);
+            gpu::draw_indexed(cmd, *m_pipeline, casters.positions, casters.indices,
+                              gpu::push_bytes(push), m_ranges);
             gpu::end_rendering(cmd);
         }
     }
@@ -156,9 +166,9 @@ void ShadowPass::record_directional(gpu::CommandList& cmd, const light::Vpl& vpl
                          {f.v.x, f.v.y, f.v.z, f.origin.y},
                          {f.dir.x, f.dir.y, f.dir.z, f.origin.z},
                          {f.extent, f.depth, 0.0f, 0.0f}};
-    const gpu::IndexRange all = m_clusters->all();
-    gpu::draw_indexed(cmd, *m_ortho_pipeline, m_positions, m_indices, gpu::push_bytes(push),
-                      std::span(&all, 1));
+    const gpu::IndexRange all = m_full.clusters->all();
+    gpu::draw_indexed(cmd, *m_ortho_pipeline, m_full.positions, m_full.indices,
+                      gpu::push_bytes(push), std::span(&all, 1));
     gpu::end_rendering(cmd);
 }
 

@@ -37,9 +37,12 @@ inline constexpr float kShadowNoOccluder = 3.0e38f;
 class ShadowPass {
 public:
     // resolution: the side of a cube face in texels; max_batch: cubes in the array; culling:
-    // whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle.
+    // whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle;
+    // proxy (may be null): the simplified casters that surface VPLs (path length ≥ 1) draw,
+    // while emitter VPLs, whose shadows are the sharpest, draw `clusters`.
     ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
-               uint32_t resolution, uint32_t max_batch, bool culling = true);
+               uint32_t resolution, uint32_t max_batch, bool culling = true,
+               const ShadowClusters* proxy = nullptr);
     ~ShadowPass();
     ShadowPass(const ShadowPass&) = delete;
     ShadowPass& operator=(const ShadowPass&) = delete;
@@ -62,10 +65,17 @@ public:
 private:
     void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
 
+    // Shadow casters on the GPU.
+    struct Casters {
+        const ShadowClusters* clusters = nullptr;
+        gpu::Buffer positions;
+        gpu::Buffer indices;
+    };
+    static Casters upload(gpu::Context& context, const ShadowClusters& clusters, const char* name);
+
     const SceneGeometry* m_geometry;
-    const ShadowClusters* m_clusters;
-    gpu::Buffer m_positions;
-    gpu::Buffer m_indices;
+    Casters m_full;
+    Casters m_proxy;  // clusters null without a proxy
     bool m_culling;
     std::vector<gpu::IndexRange> m_ranges;  // scratch, per face
     uint64_t m_triangles_drawn = 0;

@@ -25,16 +25,28 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
         .count();
 }
 
+// The shadow proxy of the scene's large meshes, or null when none is large enough.
+std::unique_ptr<ShadowClusters> make_proxy(const scene::Scene& s) {
+    for (const scene::Mesh& m : s.meshes) {
+        if (m.triangle_count() >= ShadowClusters::kProxyMinTriangles) {
+            return std::make_unique<ShadowClusters>(s, ShadowClusters::kClusterTriangles,
+                                                    ShadowClusters::kProxyError);
+        }
+    }
+    return nullptr;
+}
+
 }  // namespace
 
 struct VplRenderer::Impl {
     Impl(gpu::Context& c, const scene::Scene& s)
-        : context(&c), camera(s.camera), geometry(c, s), clusters(s) {}
+        : context(&c), camera(s.camera), geometry(c, s), clusters(s), proxy(make_proxy(s)) {}
 
     gpu::Context* context;
     scene::Camera camera;
     SceneGeometry geometry;
     ShadowClusters clusters;
+    std::unique_ptr<ShadowClusters> proxy;  // null when no mesh is large enough for one
     // Passes are kept between renders with the same sizes (pipelines compile in ~100 ms).
     std::unique_ptr<GBufferPass> g_buffer;
     std::unique_ptr<ShadowPass> shadow;
@@ -72,9 +84,11 @@ struct VplRenderer::Impl {
             shading.reset();
         }
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
-            o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling) {
+            o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
+            o.shadow_proxy != built_for.shadow_proxy) {
             shadow = std::make_unique<ShadowPass>(*context, geometry, clusters, o.shadow_resolution,
-                                                  o.batch, o.shadow_culling);
+                                                  o.batch, o.shadow_culling,
+                                                  o.shadow_proxy ? proxy.get() : nullptr);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();

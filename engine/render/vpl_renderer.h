@@ -33,6 +33,9 @@ struct RenderOptions {
     // Each cube face draws only the triangle clusters it can see (shadow_clusters.h); false: every
     // triangle into every face (the A/B of mvpl bench --sweep).
     bool shadow_culling = true;
+    // Surface VPLs draw the simplified shadow proxy of the scene's large meshes
+    // (shadow_clusters.h); false: every VPL draws the full geometry.
+    bool shadow_proxy = true;
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
     bool surface_vpls = true;

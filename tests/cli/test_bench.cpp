@@ -137,8 +137,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
-    // shadow culling off.
-    ASSERT_EQ(j["sweep"].size(), 16u);
+    // shadow culling off and with the shadow proxy off.
+    ASSERT_EQ(j["sweep"].size(), 17u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -153,6 +153,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_LE(j["render"]["shadow_triangles_per_vpl"].get<double>(),
               unculled["shadow_triangles_per_vpl"].get<double>());
     EXPECT_GT(j["render"]["shadow_triangles_per_vpl"].get<double>(), 0.0);
+    EXPECT_FALSE(j["sweep"][16]["shadow_proxy"].get<bool>());
+    EXPECT_TRUE(j["sweep"][16]["shadow_culling"].get<bool>());
     // The table for people: a header and one row per configuration.
     EXPECT_NE(s_result.out.find("end to end"), std::string::npos) << s_result.out;
     EXPECT_NE(s_result.out.find("batch  shadow"), std::string::npos) << s_result.out;

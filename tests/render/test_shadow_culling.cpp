@@ -6,7 +6,7 @@
 
 #include <random>
 
-#include "engine/core/rng.h"
+#include "engine/core/image_metrics.h"
 #include "engine/render/shadow_clusters.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/scene_loader.h"
@@ -110,6 +110,66 @@ TEST_F(ShadowCullingTest, ImagesAreTheSameWithCullingOnAndOff) {
         EXPECT_EQ(differing, 0u) << "shadow faces " << shadow_res;
         EXPECT_GT(full.mean().r, 0.0f);
     }
+}
+
+}  // namespace
+}  // namespace mvpl::render
+
+namespace mvpl::render {
+namespace {
+
+// The Cornell box with one finely tessellated sphere (20480 triangles, above the proxy's
+// threshold) resting in it.
+scene::Scene box_with_dense_sphere() {
+    scene::Scene s = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
+    const scene::Bounds b = s.bounds();
+    const Vec3 size = b.hi - b.lo;
+    const float radius = 0.2f * std::min({size.x, size.y, size.z});
+    s.meshes.push_back(test::make_icosphere(
+        b.lo + Vec3(0.5f, 0.0f, 0.5f) * size + Vec3(0.0f, radius, 0.0f), radius, 5, false, 0));
+    return s;
+}
+
+TEST(ShadowProxy, SimplifiesLargeMeshesOnly) {
+    const scene::Scene s = box_with_dense_sphere();
+    const ShadowClusters full(s);
+    const ShadowClusters proxy(s, ShadowClusters::kClusterTriangles, ShadowClusters::kProxyError);
+    EXPECT_EQ(full.triangle_count(), s.triangle_count());
+    // The sphere shrinks; the box's walls (small meshes) are kept as they are.
+    EXPECT_LT(proxy.triangle_count(), full.triangle_count() / 3);
+    EXPECT_GT(proxy.triangle_count(), s.triangle_count() - s.meshes.back().triangle_count());
+}
+
+// The proxy's error is the shadow maps' business only where surface VPLs are shadowed: images
+// of emitter VPLs are the same to the bit, and the whole image stays as close to the oracle as
+// with full maps (the bound: within 1.2× of the full maps' error).
+TEST_F(ShadowCullingTest, ProxyCostsNoMoreThanAFifthOfTheShadowMapError) {
+    const scene::Scene s = box_with_dense_sphere();
+    const light::VplSet vpls = test::monte_carlo_vpls(s, 96, 6, 11);
+    light::VplSet emitters;
+    for (const light::Vpl& v : vpls.vpls) {
+        if (v.path_length == 0) emitters.vpls.push_back(v);
+    }
+    emitters.scale = vpls.scale;
+    ASSERT_LT(emitters.vpls.size(), vpls.vpls.size());
+    VplRenderer renderer(context(), s);
+    RenderOptions o;
+    o.width = o.height = 64;
+    o.shadow_resolution = 128;
+    auto render = [&](const light::VplSet& set, bool proxy) {
+        o.shadow_proxy = proxy;
+        return renderer.render(set, o);
+    };
+    const Image with = render(emitters, true);
+    const Image without = render(emitters, false);
+    for (size_t i = 0; i < with.pixels().size(); ++i)
+        ASSERT_EQ(with.pixels()[i], without.pixels()[i]) << "pixel " << i;
+
+    const Image oracle = test::oracle_render(s, vpls, {.res = 64});
+    const double full = compare_images(render(vpls, false), oracle).rel_mse;
+    const double proxy = compare_images(render(vpls, true), oracle).rel_mse;
+    EXPECT_LE(proxy, 1.2 * full) << "full maps " << full;
+    EXPECT_GT(oracle.mean().r, 0.0f);
 }
 
 }  // namespace

@@ -40,6 +40,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.clamp = clamp;
     ro.shadows = shadows;
     ro.shadow_culling = c.shadow_culling;
+    ro.shadow_proxy = c.shadow_proxy;
     return ro;
 }
 
@@ -109,6 +110,7 @@ int run_bench(const Args& args) {
     config.shadow_resolution = renderer_args.shadow_res;
     config.batch = renderer_args.batch;
     config.shadow_culling = !renderer_args.no_shadow_culling;
+    config.shadow_proxy = !renderer_args.no_shadow_proxy;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     if (paths < 1 || paths > (uint64_t(1) << 24))
@@ -131,6 +133,9 @@ int run_bench(const Args& args) {
         // Each lever on and off at the main configuration.
         BenchConfig c = config;
         c.shadow_culling = !config.shadow_culling;
+        sweep_configs.push_back(c);
+        c = config;
+        c.shadow_proxy = !config.shadow_proxy;
         sweep_configs.push_back(c);
     }
 

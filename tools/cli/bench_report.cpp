@@ -47,6 +47,7 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"shadow_resolution\": " + std::to_string(r.config.shadow_resolution) + ",\n";
     s += i + "\"batch\": " + std::to_string(r.config.batch) + ",\n";
     s += i + "\"shadow_culling\": " + (r.config.shadow_culling ? "true" : "false") + ",\n";
+    s += i + "\"shadow_proxy\": " + (r.config.shadow_proxy ? "true" : "false") + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
     s += i + "\"batches\": " + std::to_string(r.median.batches) + ",\n";
     s += i + "\"g_buffer_ms\": " + number(r.median.g_buffer_ms) + ",\n";
@@ -157,29 +158,30 @@ std::string bench_table(const BenchReport& b) {
                   static_cast<unsigned long long>(b.vpls), b.paths_per_s(),
                   b.sampling_vpls_per_s());
     s += buf;
-    std::snprintf(buf, sizeof buf,
-                  "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
-                  "    G-buffer       %8.2f ms\n"
-                  "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL (culling %s)\n"
-                  "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
-                  "  end to end       %8.3f s  %.1f VPL/s\n"
-                  "  peak memory      host %.1f MiB, device %.1f MiB\n",
-                  m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
-                  m.median.batches, m.median.wall_s, m.median.g_buffer_ms, m.median.shadow_ms,
-                  m.shadow_ms_per_vpl, m.shadow_triangles_per_vpl,
-                  m.config.shadow_culling ? "on" : "off", m.median.shading_ms, m.shading_ms_per_vpl,
-                  m.shading_pixel_vpls_per_s * 1e-6, m.end_to_end_s, m.end_to_end_vpls_per_s,
-                  double(b.peak_host_bytes) / (1 << 20), double(b.peak_device_bytes) / (1 << 20));
+    std::snprintf(
+        buf, sizeof buf,
+        "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
+        "    G-buffer       %8.2f ms\n"
+        "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL (culling %s, proxy %s)\n"
+        "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
+        "  end to end       %8.3f s  %.1f VPL/s\n"
+        "  peak memory      host %.1f MiB, device %.1f MiB\n",
+        m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
+        m.median.batches, m.median.wall_s, m.median.g_buffer_ms, m.median.shadow_ms,
+        m.shadow_ms_per_vpl, m.shadow_triangles_per_vpl, m.config.shadow_culling ? "on" : "off",
+        m.config.shadow_proxy ? "on" : "off", m.median.shading_ms, m.shading_ms_per_vpl,
+        m.shading_pixel_vpls_per_s * 1e-6, m.end_to_end_s, m.end_to_end_vpls_per_s,
+        double(b.peak_host_bytes) / (1 << 20), double(b.peak_device_bytes) / (1 << 20));
     s += buf;
     if (!b.sweep.empty()) {
-        s += "\n  batch  shadow  culling  shadow ms/VPL  shading ms/VPL  M pixel·VPL/s  render s  "
-             "VPL/s\n";
+        s += "\n  batch  shadow  culling  proxy  shadow ms/VPL  shading ms/VPL  M pixel·VPL/s  "
+             "render s  VPL/s\n";
         for (const RenderResult& r : b.sweep) {
             std::snprintf(
-                buf, sizeof buf, "  %5d  %6d  %7s  %13.3f  %14.3f  %13.1f  %8.3f  %5.1f\n",
+                buf, sizeof buf, "  %5d  %6d  %7s  %5s  %13.3f  %14.3f  %13.1f  %8.3f  %5.1f\n",
                 r.config.batch, r.config.shadow_resolution, r.config.shadow_culling ? "on" : "off",
-                r.shadow_ms_per_vpl, r.shading_ms_per_vpl, r.shading_pixel_vpls_per_s * 1e-6,
-                r.median.wall_s, r.end_to_end_vpls_per_s);
+                r.config.shadow_proxy ? "on" : "off", r.shadow_ms_per_vpl, r.shading_ms_per_vpl,
+                r.shading_pixel_vpls_per_s * 1e-6, r.median.wall_s, r.end_to_end_vpls_per_s);
             s += buf;
         }
     }

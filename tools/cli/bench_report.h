@@ -14,6 +14,7 @@ struct BenchConfig {
     int shadow_resolution = 256;
     int batch = 32;
     bool shadow_culling = true;  // render::RenderOptions::shadow_culling
+    bool shadow_proxy = true;    // render::RenderOptions::shadow_proxy
 };
 
 // One measured render of the VPLs with one configuration. Times in seconds unless named _ms.

@@ -21,6 +21,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.batch = uint32_t(batch);
     o.clamp = clamp;
     o.shadow_culling = !no_shadow_culling;
+    o.shadow_proxy = !no_shadow_proxy;
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -31,6 +32,9 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-shadow-culling", &args.no_shadow_culling,
                     "draw every triangle into every shadow face (default: only the clusters a "
                     "face can see)");
+    parser.add_flag("--no-shadow-proxy", &args.no_shadow_proxy,
+                    "surface VPLs draw the full geometry into their shadow maps (default: the "
+                    "simplified proxy of meshes of 4096+ triangles)");
     // The renderer's limits: 4096² faces × 6 × a batch must still fit in memory.
     parser.add_check([&parser, &args] {
         if (args.shadow_res < 4 || args.shadow_res > 4096)
