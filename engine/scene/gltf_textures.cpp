@@ -7,6 +7,7 @@
 #include <memory>
 
 #include "engine/core/image.h"
+#include "engine/scene/gltf_diagnose.h"
 
 namespace mvpl::scene::gltf {
 namespace {
@@ -111,7 +112,11 @@ Texture TextureCache::decode(int index, ColorSpace space) {
     const std::string image_name = "image " + std::to_string(source);
     if (image.image.empty()) {
         // tinygltf keeps going (with a warning) when an external image cannot be read.
-        if (!image.uri.empty()) m_doc.fail(image_name + " file '" + image.uri + "' cannot be read");
+        if (!image.uri.empty()) {
+            const std::string problem = external_file_problem(m_doc.base_dir, image.uri);
+            m_doc.fail(image_name + " file '" + image.uri + "' " +
+                       (problem.empty() ? "cannot be read" : problem));
+        }
         m_doc.fail(image_name + " has no data");
     }
     if (image.image.size() > size_t(INT_MAX)) m_doc.fail(image_name + " is larger than 2 GiB");
