@@ -125,6 +125,34 @@ TEST(Cli, RenderOnTheGpuMatchesTheOracle) {
         std::filesystem::remove(f);
 }
 
+// A camera inside a room with yfov 3.1 and znear 0.2 (tests/data/gltf/wide_angle.gltf): the near
+// plane, where the G-buffer's rasteriser clips, cuts through most of the view. Camera rays start
+// on it (scene::generate_camera_ray), so the oracle shades what the GPU shades and `reference`
+// sees the same surfaces; before, both started at the eye and were 70 times brighter.
+TEST(Cli, WideAngleViewIsClippedAlikeByRenderOracleAndReference) {
+    const std::string scene = MVPL_TEST_DATA_DIR "/gltf/wide_angle.gltf";
+    const std::string gpu = temp_file("wide_gpu.exr"), cpu = temp_file("wide_cpu.exr"),
+                      ref = temp_file("wide_ref.exr");
+    const std::string common =
+        "render " + scene + " --vpls 16 --res 32x32 --shadow-res 64 --seed 3 --quiet ";
+    ASSERT_EQ(run_gpu(common + "-o " + shell_quote(gpu)).exit_code, 0);
+    ASSERT_EQ(run_gpu(common + "--oracle -o " + shell_quote(cpu)).exit_code, 0);
+    ASSERT_EQ(
+        run_mvpl("reference " + scene + " --spp 16 --res 32x32 --quiet -o " + shell_quote(ref))
+            .exit_code,
+        0);
+    const auto cmp = run_mvpl("compare " + shell_quote(gpu) + " " + shell_quote(cpu));
+    ASSERT_EQ(cmp.exit_code, 0) << cmp.err;
+    EXPECT_LT(std::stod(cmp.out.substr(cmp.out.find("relMSE ") + 7)), 1e-3) << cmp.out;
+    // VPLs and the path tracer differ (16 VPLs, clamping), but not by the clipped part.
+    const float render_mean = read_exr(gpu).mean().g, reference_mean = read_exr(ref).mean().g;
+    EXPECT_GT(render_mean, 0.0f);
+    EXPECT_GT(reference_mean, 0.5f * render_mean);
+    EXPECT_LT(reference_mean, 2.0f * render_mean);
+    for (const auto& f : {gpu, cpu, ref})
+        std::filesystem::remove(f);
+}
+
 // Scene values beyond engine/scene/scene_range.h (issue 19): every command that loads a scene
 // refuses them before any work, with one line naming the file, the JSON path and the value —
 // `render` used to fail on an `inf` in generated GLSL (exit 1), `reference` to abort inside
