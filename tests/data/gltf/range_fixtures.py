@@ -121,4 +121,9 @@ def range_corpus(m):
     files["image-corrupt-jpeg.gltf"] = m.variant(lambda d: (
         textured(m, d, {}), d["images"][0].update(
             uri="data:image/jpeg;base64," + base64.b64encode(jpeg).decode())))
+    # A WebP (RIFF container) that a file passes off as PNG.
+    webp = b"RIFF\x1a\x00\x00\x00WEBPVP8L\x0d\x00\x00\x00\x2f\x00\x00\x00\x10\x07\x10\x11\x11\x88\x88\xfe\x07\x00"
+    files["image-webp-as-png.gltf"] = m.variant(lambda d: (
+        textured(m, d, {}), d["images"][0].update(
+            uri="data:image/png;base64," + base64.b64encode(webp).decode())))
     return files
