@@ -14,15 +14,19 @@
 namespace mvpl::scene {
 
 // Largest |coordinate| of a world-space position (vertices, lights, cameras, translations), in
-// metres. The bound comes from the cubic term of Embree's watertight ray-triangle test (robust
-// mode, kernels/geometry/triangle_intersector_pluecker.h): it computes the depth
-// T = 2·dot(v0, Ng) in float, v0 a vertex relative to the ray origin and Ng a cross product of two
-// edges. In a scene within ±C, |v0| ≤ 2√3·C and |Ng| ≤ 12·C², so |T| ≤ 83·C³: C = 1e11 keeps T at
-// 8e34, more than three orders of magnitude below FLT_MAX (3.4e38), where C = 1.6e12 would
-// overflow it (Embree itself skips geometry beyond 1.8e18 and then misses or aborts). Squared
-// distances (≤ 12·C² ≈ 1e23) and triangle areas in the shaders are then far from overflow too.
-// 1e11 m is two thirds of the distance from the Earth to the Sun.
-inline constexpr double kMaxCoordinate = 1e11;
+// metres. Two bounds, the lower one taken:
+// - Embree's watertight ray-triangle test (robust mode, kernels/geometry/
+//   triangle_intersector_pluecker.h) computes the depth T = 2·dot(v0, Ng) in float, v0 a vertex
+//   relative to the ray origin and Ng a cross product of two edges: a cubic term. In a scene
+//   within ±C, |v0| ≤ 2√3·C and |Ng| ≤ 12·C², so |T| ≤ 83·C³, which overflows FLT_MAX beyond
+//   C ≈ 1.6e12 (Embree itself skips geometry beyond 1.8e18, and then misses or aborts).
+// - Measured: the Cornell box renders the same scaled up to coordinates of 4.3e9 (`reference`
+//   with direct light only, bit for bit) and 25–35% darker from 4.4e9 on, in `render` too; the
+//   cause is not known yet (issue 19's report).
+// 1e9 keeps a factor of four below the second and T at 8e28, nine orders below FLT_MAX; squared
+// distances (≤ 12·C² ≈ 1e19) and triangle areas in the shaders are far from overflow. 1e9 m is
+// two and a half times the distance to the Moon.
+inline constexpr double kMaxCoordinate = 1e9;
 
 // Largest colour, intensity or other multiplicative factor (emissive factor × strength, a light's
 // colour × intensity, specular colour, normal scale, texture-transform offset and scale, texture
@@ -37,7 +41,7 @@ inline constexpr double kMaxFactor = 1e15;
 // multiplies it by two BSDF values (≲ 8e6 each, the GGX peak at normal incidence) before dividing
 // by the squared distance: 1e22 · 100 · 6.4e13 = 6.4e37 is still below FLT_MAX. Flux grows with
 // the square of the scene's size (an area light's π·A·L, a directional light's π·r²·E), so this
-// is what refuses a lit scene scaled by 1e10 rather than rendering it black.
+// is what refuses the Sun's 1e5 W/m² over a scene of 1e9 m rather than rendering it black.
 inline constexpr double kMaxPower = 1e22;
 
 // A perspective camera's vertical field of view, radians. Below kMinYfov the directions through

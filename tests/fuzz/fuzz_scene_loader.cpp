@@ -75,7 +75,7 @@ void check(const mvpl::scene::Scene& scene) {
     for (const mvpl::scene::Material& m : scene.materials) {
         if (!within(m.emission(), kMaxFactor) || !within(m.base_color, kMaxFactor)) std::abort();
     }
-    // A camera made to frame the bounds stands outside them, at most ≈6e11 for bounds at the
+    // A camera made to frame the bounds stands outside them, at most ≈6e9 for bounds at the
     // limit (scene/camera.h): still far inside Embree's margin (scene_range.h).
     if (!within(scene.camera.position(), 10.0 * kMaxCoordinate)) std::abort();
 }

@@ -75,16 +75,16 @@ bool contains(const std::string& text, const std::string& part) {
 }
 
 TEST_F(SceneRange, PositionsUpToTheLimitLoadAndBeyondAreRefused) {
-    // Translation and scale 5e10 put vertex 1 at exactly x = kMaxCoordinate.
+    // Translation and scale 5e8 put vertex 1 at exactly x = kMaxCoordinate.
     const Scene scene =
-        load_scene(triangle(R"("translation": [5e10, 0, 0], "scale": [5e10, 5e10, 5e10])"));
+        load_scene(triangle(R"("translation": [5e8, 0, 0], "scale": [5e8, 5e8, 5e8])"));
     EXPECT_EQ(scene.bounds().hi.x, float(kMaxCoordinate));
     // Each node value within range, the vertex beyond it.
     const std::string message =
-        refusal(triangle(R"("translation": [5e10, 0, 0], "scale": [5.0001e10, 1, 1])"));
+        refusal(triangle(R"("translation": [5e8, 0, 0], "scale": [5.0001e8, 1, 1])"));
     EXPECT_TRUE(contains(message,
                          "nodes[0] places accessors[0][1] (POSITION of mesh 0 primitive "
-                         "0) at x = 1.00001e+11, beyond the supported magnitude 1e+11"))
+                         "0) at x = 1.00001e+09, beyond the supported magnitude 1e+09"))
         << message;
 }
 
@@ -192,13 +192,13 @@ TEST_F(SceneRange, ObjValuesAreCheckedToo) {
         write("factor.obj", "mtllib m.mtl\nv 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl bright\nf 1 2 3\n");
     EXPECT_TRUE(
         contains(refusal(factor), "material 'bright' has Ke 1e+20, beyond the supported 1e+15"));
-    // π · 2e21 m² · 1000 ≈ 6.4e24 W.
-    write("p.mtl", "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1000 1000 1000\n");
+    // π · 2e17 m² · 1e6 ≈ 6.4e23 W.
+    write("p.mtl", "newmtl lamp\nKd 0.5 0.5 0.5\nKe 1e6 1e6 1e6\n");
     const std::string power = write(
-        "power.obj", "mtllib p.mtl\nv 0 0 0\nv 6.4e10 0 0\nv 0 6.4e10 0\nusemtl lamp\nf 1 2 3\n");
+        "power.obj", "mtllib p.mtl\nv 0 0 0\nv 6.4e8 0 0\nv 0 6.4e8 0\nusemtl lamp\nf 1 2 3\n");
     EXPECT_TRUE(contains(refusal(power),
-                         "material 'lamp' (radiance 1e+03 W/(sr m^2) over "
-                         "2.05e+21 m^2) emits 6.43e+24 W"));
+                         "material 'lamp' (radiance 1e+06 W/(sr m^2) over "
+                         "2.05e+17 m^2) emits 6.43e+23 W"));
 }
 
 TEST_F(SceneRange, ExternalImageRefusalSaysWhy) {

@@ -433,9 +433,9 @@ def bad_corpus():
     files["number-overflow-in-matrix.gltf"] = setter(
         ["nodes", 0, "matrix"], [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, INF, 0, 0, 1])
     files["position-beyond-float-range.gltf"] = setter(["nodes", 0, "translation"], [1e39, 0, 0])
-    # Every scale in range (scene_range.h), their product (1e11^30) not even a double.
+    # Every scale in range (scene_range.h), their product (1e9^40) not even a double.
     files["nan-transform.gltf"] = setter(["nodes"], [
-        {"scale": [1e11, 1e11, 1e11], "children": [i + 1]} for i in range(30)] + [{"mesh": 0}])
+        {"scale": [1e9, 1e9, 1e9], "children": [i + 1]} for i in range(40)] + [{"mesh": 0}])
     files["nan-literal-in-transform.gltf"] = setter(["nodes", 0, "translation"], [NAN, 0, 0])
     files["zero-quaternion.gltf"] = setter(["nodes", 0, "rotation"], [0, 0, 0, 0])
     files["wrong-matrix-length.gltf"] = setter(["nodes", 0, "matrix"], [1, 0, 0, 0])
