@@ -1,6 +1,9 @@
 #include "engine/light/light_sampler.h"
 
 #include <algorithm>
+#include <numbers>
+#include <stdexcept>
+#include <string>
 
 #include "engine/core/sampling.h"
 
@@ -50,15 +53,20 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
         m_first_emitter[m] = int(m_emitters.size());
         // Selection by the flux of the emission factor (a weight, not the radiance: a texture
         // only modulates it, and sample_li/sample_le read the graph's emission).
-        const float radiance = luminance(scene.materials[mesh.material].emission());
+        const double radiance = luminance(scene.materials[mesh.material].emission());
         for (size_t t = 0; t < mesh.triangle_count(); ++t) {
             const TrianglePoints tri = triangle_points(mesh, int(t));
             Emitter e;
             e.type = EmitterType::Triangle;
             e.mesh = int(m);
             e.triangle = int(t);
-            e.area = 0.5f * glm::length(glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0));
-            e.power = kPi * e.area * radiance;
+            // In double: the float cross product of a large triangle can overflow where its
+            // area, and the power, still fit a float.
+            const DVec3 p0(tri.p0);
+            const double area =
+                0.5 * glm::length(glm::cross(DVec3(tri.p1) - p0, DVec3(tri.p2) - p0));
+            e.area = float(area);
+            e.power = float(std::numbers::pi * area * radiance);
             m_emitters.push_back(e);
         }
     }
@@ -66,31 +74,44 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
         const scene::Light& light = scene.lights[l];
         Emitter e;
         e.light = int(l);
-        const float y = luminance(light.intensity);
+        const double y = luminance(light.intensity);
+        constexpr double pi = std::numbers::pi;
         switch (light.type) {
             case scene::LightType::Point:
                 e.type = EmitterType::Point;
-                e.power = 4.0f * kPi * y;
+                e.power = float(4.0 * pi * y);
                 break;
             case scene::LightType::Spot:
                 e.type = EmitterType::Spot;
                 // pbrt-v3's estimate of the flux inside the smooth cone.
-                e.power = 2.0f * kPi * y *
-                          (1.0f - 0.5f * (std::cos(light.inner_cone) + std::cos(light.outer_cone)));
+                e.power = float(2.0 * pi * y *
+                                (1.0 - 0.5 * (std::cos(double(light.inner_cone)) +
+                                              std::cos(double(light.outer_cone)))));
                 break;
             case scene::LightType::Directional:
                 e.type = EmitterType::Directional;
-                e.power = kPi * m_scene_radius * m_scene_radius * y;
+                e.power = float(pi * double(m_scene_radius) * double(m_scene_radius) * y);
                 break;
         }
         m_emitters.push_back(e);
     }
     // Emitters with no power cannot be sampled; they stay in the list so that indices are stable.
+    // A power beyond float is not dropped (that would render black without a word): the loaders
+    // refuse such scenes (scene::check_emitted_power), so one here is a bug.
     m_cdf.reserve(m_emitters.size());
     double sum = 0.0;
     for (const Emitter& e : m_emitters) {
-        sum += std::isfinite(e.power) && e.power > 0.0f ? e.power : 0.0f;
+        if (!std::isfinite(e.power)) {
+            throw std::logic_error("an emitter's power is not finite (" + std::to_string(e.power) +
+                                   "); scene::check_emitted_power should have refused the scene");
+        }
+        sum += e.power > 0.0f ? e.power : 0.0f;
         m_cdf.push_back(float(sum));
+    }
+    if (!std::isfinite(float(sum))) {
+        throw std::logic_error(
+            "the emitters' total power overflows float; "
+            "scene::check_emitted_power should have refused the scene");
     }
     m_total_power = float(sum);
     if (!(m_total_power > 0.0f)) {

@@ -10,7 +10,13 @@ CameraRay generate_camera_ray(const Camera& camera, int width, int height, const
     const float ndc_y = 1.0f - 2.0f * film.y / float(height);
     const Vec3 local(ndc_x * tan_half * aspect, ndc_y * tan_half, -1.0f);
     const Vec3 dir = glm::normalize(Vec3(camera.camera_to_world * Vec4(local, 0.0f)));
-    return {camera.position(), dir};
+    // The ray starts on the near plane, where the G-buffer's rasteriser clips: along it the view
+    // depth grows as t / |local| (local.z = -1), so the plane is at t = znear · |local|. Starting
+    // at the eye instead made `reference` and the CPU oracle see what `render` clips away — at
+    // ordinary fields of view only surfaces grazing the camera, but near yfov = π (tan(yfov/2) in
+    // the thousands) almost the whole image, which `render` then showed black.
+    const float near = std::max(camera.znear, 0.0f) * glm::length(local);
+    return {camera.position() + near * dir, dir};
 }
 
 Camera frame_bounds(const Bounds& bounds) {

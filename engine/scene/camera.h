@@ -7,9 +7,11 @@ namespace mvpl::scene {
 
 // Primary ray through a point of the image plane; `film` is in pixels, (0,0) the top-left corner
 // of the image and (width, height) the bottom-right. The horizontal field of view follows from
-// the image aspect (glTF's aspectRatio is ignored: `--res` decides).
+// the image aspect (glTF's aspectRatio is ignored: `--res` decides). The ray starts where it
+// crosses the near plane (view depth camera.znear), glTF's near clipping plane, so that every
+// renderer sees the same surfaces: what lies closer to the camera plane is not visible.
 struct CameraRay {
-    Vec3 origin;
+    Vec3 origin;     // on the near plane, not at the eye
     Vec3 direction;  // unit
 };
 CameraRay generate_camera_ray(const Camera& camera, int width, int height, const Vec2& film);

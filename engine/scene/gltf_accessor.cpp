@@ -153,6 +153,7 @@ AccessorView::AccessorView(const Document& doc, int index, AccessorNeeds needs)
                  ", but the file has " + std::to_string(accessors.size()) + " accessors");
     }
     m_label = "accessor " + std::to_string(index) + " (" + needs.usage + ")";
+    m_usage = needs.usage;
     const tinygltf::Accessor& accessor = accessors[size_t(index)];
 
     if (accessor.type != needs.type) {

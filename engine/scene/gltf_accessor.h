@@ -27,6 +27,7 @@ public:
     size_t count() const { return m_count; }
     int index() const { return m_index; }
     const std::string& label() const { return m_label; }
+    const std::string& usage() const { return m_usage; }
 
     // Components as floats; normalized integers are mapped to [0, 1] (or [-1, 1]).
     std::vector<Vec2> read_vec2() const;
@@ -56,6 +57,7 @@ private:
     const Document& m_doc;
     int m_index = -1;
     std::string m_label;
+    std::string m_usage;
     size_t m_count = 0;
     int m_component_type = 0;
     int m_components = 1;

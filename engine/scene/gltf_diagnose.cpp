@@ -1,5 +1,8 @@
 #include "engine/scene/gltf_diagnose.h"
 
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 
@@ -53,6 +56,11 @@ std::string url_decode(const std::string& uri) {
     return out;
 }
 
+// Joined as tinygltf joins them, so that both look at the same file.
+std::string joined_path(const std::string& base_dir, const std::string& uri) {
+    return base_dir.empty() ? url_decode(uri) : base_dir + "/" + url_decode(uri);
+}
+
 std::string check_buffer(const nlohmann::json& buffer, size_t index, const std::string& base_dir,
                          bool binary, std::optional<uint64_t> bin_chunk_bytes) {
     const std::string name = "buffer " + std::to_string(index);
@@ -89,15 +97,10 @@ std::string check_buffer(const nlohmann::json& buffer, size_t index, const std::
         }
         return name + " has a data URI that is not base64 of a known media type";
     }
+    const std::string problem = external_file_problem(base_dir, uri);
+    if (!problem.empty()) return name + " file '" + uri + "' " + problem;
     std::error_code ec;
-    // Joined as tinygltf joins them, so that both look at the same file.
-    const std::string path = base_dir.empty() ? url_decode(uri) : base_dir + "/" + url_decode(uri);
-    const auto status = std::filesystem::status(path, ec);
-    if (!std::filesystem::exists(status)) return name + " file '" + uri + "' not found";
-    if (!std::filesystem::is_regular_file(status)) {
-        return name + " file '" + uri + "' is not a regular file";
-    }
-    const uintmax_t size = std::filesystem::file_size(path, ec);
+    const uintmax_t size = std::filesystem::file_size(joined_path(base_dir, uri), ec);
     if (!ec && size != length) {
         return name + " file '" + uri + "' has " + std::to_string(size) +
                " bytes, but byteLength says " + std::to_string(length);
@@ -106,6 +109,34 @@ std::string check_buffer(const nlohmann::json& buffer, size_t index, const std::
 }
 
 }  // namespace
+
+std::string external_file_problem(const std::string& base_dir, const std::string& uri) {
+    const std::string path = joined_path(base_dir, uri);
+    std::error_code ec;
+    const auto status = std::filesystem::status(path, ec);
+    if (!std::filesystem::exists(status)) return "not found";
+    if (std::filesystem::is_directory(status)) return "is a directory, not a file";
+    if (!std::filesystem::is_regular_file(status)) return "is not a regular file";
+    errno = 0;
+    std::FILE* file = std::fopen(path.c_str(), "rb");
+    if (file == nullptr) {
+        return std::string("cannot be opened (") + (errno ? std::strerror(errno) : "unknown") + ")";
+    }
+    std::fclose(file);
+    return {};
+}
+
+std::vector<std::string> required_extensions(const char* json, size_t json_length) {
+    const nlohmann::json doc = nlohmann::json::parse(json, json + json_length, nullptr, false);
+    std::vector<std::string> names;
+    if (!doc.is_object()) return names;
+    const auto required = doc.find("extensionsRequired");
+    if (required == doc.end() || !required->is_array()) return names;
+    for (const auto& name : *required) {
+        if (name.is_string()) names.push_back(name.get<std::string>());
+    }
+    return names;
+}
 
 std::string diagnose_buffer(const char* json, size_t json_length, size_t index,
                             const std::string& base_dir, bool binary,

@@ -229,17 +229,21 @@ int json_depth(const unsigned char* text, size_t length) {
     return deepest;
 }
 
-void check_asset_and_extensions(const Document& doc) {
-    const std::string& version = doc.model.asset.version;
-    if (version.empty() || version[0] != '2') {
-        doc.fail("glTF version '" + version + "' is not supported (only 2.x)");
-    }
-    for (const std::string& name : doc.model.extensionsRequired) {
+void check_required_extensions(const Document& doc, const std::vector<std::string>& required) {
+    for (const std::string& name : required) {
         const bool supported =
             std::any_of(std::begin(kSupportedExtensions), std::end(kSupportedExtensions),
                         [&](const char* s) { return name == s; });
         if (!supported) doc.fail("required extension " + name + " is not supported");
     }
+}
+
+void check_asset_and_extensions(const Document& doc) {
+    const std::string& version = doc.model.asset.version;
+    if (version.empty() || version[0] != '2') {
+        doc.fail("glTF version '" + version + "' is not supported (only 2.x)");
+    }
+    check_required_extensions(doc, doc.model.extensionsRequired);
 }
 
 }  // namespace
@@ -299,6 +303,7 @@ Document read_document(const std::string& path) {
     std::error_code ec;
     const std::filesystem::path absolute = std::filesystem::absolute(path, ec);
     const std::string base_dir = ec ? std::string() : absolute.parent_path().string();
+    doc.base_dir = base_dir;
 
     tinygltf::TinyGLTF loader;
     loader.SetFsCallbacks(tinygltf::FsCallbacks{
@@ -323,6 +328,8 @@ Document read_document(const std::string& path) {
         doc.fail("glTF parse error: " + one_line(e.what()));
     }
     if (!ok) {
+        // An unsupported extension the file requires explains whatever else tinygltf found.
+        check_required_extensions(doc, required_extensions(json, layout.json_length));
         if (!image_state.error.empty()) doc.fail(image_state.error);
         const std::string buffer_problem =
             diagnose_buffer(json, layout.json_length, doc.model.buffers.size(), base_dir, binary,

@@ -15,6 +15,7 @@ std::string printable(const std::string& what);
 
 struct Document {
     std::string path;
+    std::string base_dir;  // where external buffers and images are read from
     tinygltf::Model model;
 
     [[noreturn]] void fail(const std::string& what) const {

@@ -5,6 +5,8 @@
 #include <utility>
 
 #include "engine/scene/gltf_accessor.h"
+#include "engine/scene/gltf_value.h"
+#include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::gltf {
 namespace {
@@ -22,12 +24,20 @@ std::optional<int> attribute(const tinygltf::Primitive& primitive, const char* n
     return it->second;
 }
 
+// Every component finite and, where `limit` is given, of magnitude at most `limit`.
 template <typename V>
-void check_finite(const Document& doc, const std::vector<V>& values, const AccessorView& view) {
+void check_finite(const Document& doc, const std::vector<V>& values, const AccessorView& view,
+                  std::optional<double> limit = std::nullopt) {
     for (size_t i = 0; i < values.size(); ++i) {
         for (int c = 0; c < V::length(); ++c) {
             if (!std::isfinite(values[i][c])) {
                 doc.fail(view.label() + " has a non-finite value at element " + std::to_string(i));
+            }
+            if (limit && std::abs(values[i][c]) > *limit) {
+                doc.fail(
+                    indexed(indexed(indexed("accessors", size_t(view.index())), i), size_t(c)) +
+                    " (" + view.usage() + ") is " + number_text(values[i][c]) +
+                    ", beyond the supported magnitude " + number_text(*limit));
             }
         }
     }
@@ -76,7 +86,7 @@ public:
     }
 
     bool mirrors() const { return m_det < 0.0; }
-    Vec3 point(const Vec3& p) const { return Vec3(DVec3(m_world * glm::dvec4(DVec3(p), 1.0))); }
+    DVec3 point(const Vec3& p) const { return DVec3(m_world * glm::dvec4(DVec3(p), 1.0)); }
     // Unnormalised; zero where the transform collapses the normal.
     DVec3 normal(const Vec3& n) const { return m_normal * DVec3(n); }
     // Direction through the linear part; handedness flips with a mirror.
@@ -157,11 +167,11 @@ Attributes read_attributes(const Document& doc, const tinygltf::Primitive& primi
     }
     if (auto v = view("TEXCOORD_0", TINYGLTF_TYPE_VEC2, texcoord_types, true)) {
         out.uv0 = v->read_vec2();
-        check_finite(doc, out.uv0, *v);
+        check_finite(doc, out.uv0, *v, kMaxFactor);
     }
     if (auto v = view("TEXCOORD_1", TINYGLTF_TYPE_VEC2, texcoord_types, true)) {
         out.uv1 = v->read_vec2();
-        check_finite(doc, out.uv1, *v);
+        check_finite(doc, out.uv1, *v, kMaxFactor);
     }
     if (auto v = view("TANGENT", TINYGLTF_TYPE_VEC4, {kFloat}, false)) {
         out.tangents = v->read_vec4();
@@ -179,7 +189,7 @@ Attributes read_attributes(const Document& doc, const tinygltf::Primitive& primi
             } else {
                 out.colors = v->read_vec4();
             }
-            check_finite(doc, out.colors, *v);
+            check_finite(doc, out.colors, *v, kMaxFactor);
         }
     }
     return out;
@@ -276,9 +286,18 @@ bool build_primitive_mesh(const Document& doc, int mesh_index, int primitive_ind
     Attributes attributes = read_attributes(doc, primitive, where, vertex_count);
 
     const Placement placement(world);
-    for (Vec3& p : positions) {
-        p = placement.point(p);
-        if (!is_finite(p)) doc.fail(placed + " outside the range of float coordinates");
+    for (size_t i = 0; i < positions.size(); ++i) {
+        const DVec3 p = placement.point(positions[i]);
+        for (int c = 0; c < 3; ++c) {
+            if (!(std::abs(p[c]) <= kMaxCoordinate)) {
+                doc.fail(indexed("nodes", size_t(node)) + " places " +
+                         indexed(indexed("accessors", size_t(positions_view.index())), i) + " (" +
+                         positions_view.usage() + ") at " + std::string(1, "xyz"[c]) + " = " +
+                         number_text(p[c]) + ", beyond the supported magnitude " +
+                         number_text(kMaxCoordinate));
+            }
+        }
+        positions[i] = Vec3(p);
     }
     if (placement.mirrors()) {
         for (size_t t = 0; t < triangles.size(); t += 3) {

@@ -6,7 +6,9 @@
 #include "engine/scene/gltf_nodes.h"
 #include "engine/scene/gltf_punctual.h"
 #include "engine/scene/gltf_textures.h"
+#include "engine/scene/gltf_value.h"
 #include "engine/scene/scene_loader.h"
+#include "engine/scene/scene_range.h"
 
 namespace mvpl::scene {
 
@@ -17,6 +19,7 @@ Scene load_gltf(const std::string& path) {
     gltf::TextureCache textures(doc, scene.textures);
     gltf::MaterialTable materials(doc, scene, textures);
     gltf::GeometryBudget budget;
+    std::vector<std::string> light_names;  // JSON paths of scene.lights, for messages
 
     gltf::walk_scene(doc, [&](int node, const DMat4& world) {
         const tinygltf::Node& gltf_node = doc.model.nodes[size_t(node)];
@@ -40,7 +43,11 @@ Scene load_gltf(const std::string& path) {
                 scene.meshes.push_back(std::move(mesh));
             }
         }
-        if (auto light = gltf::node_light(doc, node, world)) scene.lights.push_back(*light);
+        std::string light_name;
+        if (auto light = gltf::node_light(doc, node, world, &light_name)) {
+            scene.lights.push_back(*light);
+            light_names.push_back(light_name);
+        }
         // Every camera is checked; the first perspective one in traversal order is used.
         if (auto camera = gltf::node_camera(doc, node, world); camera && !scene.has_camera) {
             scene.camera = *camera;
@@ -50,6 +57,10 @@ Scene load_gltf(const std::string& path) {
 
     if (scene.meshes.empty()) doc.fail("no triangle geometry");
     if (!scene.has_camera) scene.camera = frame_bounds(scene.bounds());
+    check_emitted_power(
+        scene, [&](int light) { return light_names[size_t(light)]; },
+        [](int material) { return gltf::indexed("materials", size_t(material)); },
+        [&](const std::string& what) { doc.fail(what); });
     return scene;
 }
 

@@ -1,8 +1,11 @@
 #include "engine/scene/gltf_materials.h"
 
 #include <algorithm>
+#include <cmath>
+#include <numbers>
 
 #include "engine/scene/gltf_value.h"
+#include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::gltf {
 namespace {
@@ -13,27 +16,27 @@ public:
         : m_doc(doc),
           m_textures(textures),
           m_material(doc.model.materials[size_t(index)]),
-          m_name("material " + std::to_string(index)) {}
+          m_name(indexed("materials", size_t(index))) {}
 
     Material read() const;
 
 private:
     // Reflectance-like factors above 1 would let a surface reflect more than it receives; the
-    // spec bounds them at 1, so they are clamped. Negative or non-finite values are errors.
-    float fraction(double value, const std::string& what) const {
-        return std::min(non_negative(value, what), 1.0f);
+    // spec bounds them at 1, so they are clamped. Negative values and values beyond kMaxFactor
+    // (scene_range.h: a float shader could not carry them) are errors.
+    float fraction(double value, const std::string& where) const {
+        return float(std::min(check_non_negative(m_doc, value, kMaxFactor, where), 1.0));
     }
-    float non_negative(double value, const std::string& what) const {
-        if (!std::isfinite(value)) m_doc.fail(m_name + " " + what + " is not finite");
-        if (value < 0.0) m_doc.fail(m_name + " " + what + " is negative");
-        return float(value);
+    float factor(double value, const std::string& where) const {
+        return float(check_non_negative(m_doc, value, kMaxFactor, where));
     }
-    Rgb colour(const std::vector<double>& values, const std::string& what, bool clamp) const {
-        if (values.size() < 3) m_doc.fail(m_name + " " + what + " has fewer than 3 components");
+    Rgb colour(const std::vector<double>& values, const std::string& where, bool clamp) const {
+        if (values.size() < 3) m_doc.fail(where + " has fewer than 3 components");
         Rgb c;
         for (int i = 0; i < 3; ++i) {
+            const std::string element = indexed(where, size_t(i));
             c[i] =
-                clamp ? fraction(values[size_t(i)], what) : non_negative(values[size_t(i)], what);
+                clamp ? fraction(values[size_t(i)], element) : factor(values[size_t(i)], element);
         }
         return c;
     }
@@ -44,7 +47,7 @@ private:
                        const std::string& slot) const {
         if (info.index == -1) return {};
         const tinygltf::Value* transform =
-            find_extension(m_doc, info.extensions, "KHR_texture_transform", m_name + " " + slot);
+            find_extension(m_doc, info.extensions, "KHR_texture_transform", m_name + "." + slot);
         return texture(info.index, info.texCoord, transform, space, slot);
     }
     TextureRef texture(const tinygltf::Value* info, ColorSpace space,
@@ -60,22 +63,29 @@ private:
 
 TextureRef MaterialReader::texture(int index, int tex_coord, const tinygltf::Value* transform,
                                    ColorSpace space, const std::string& slot) const {
-    const std::string usage = m_name + " " + slot;
+    const std::string usage = m_name + "." + slot;
     TextureRef ref;
     ref.texture = m_textures.get(index, space, usage);
     ref.texcoord = tex_coord;
     if (transform) {
-        const std::string what = usage + " KHR_texture_transform";
+        const std::string what = usage + ".extensions.KHR_texture_transform";
         const std::vector<double> offset =
-            read_numbers(m_doc, find_member(*transform, "offset"), 2, {0.0, 0.0}, what + " offset");
+            read_numbers(m_doc, find_member(*transform, "offset"), 2, {0.0, 0.0}, what + ".offset");
         const std::vector<double> scale =
-            read_numbers(m_doc, find_member(*transform, "scale"), 2, {1.0, 1.0}, what + " scale");
+            read_numbers(m_doc, find_member(*transform, "scale"), 2, {1.0, 1.0}, what + ".scale");
+        for (size_t i = 0; i < 2; ++i) {
+            check_magnitude(m_doc, offset[i], kMaxFactor, indexed(what + ".offset", i));
+            check_magnitude(m_doc, scale[i], kMaxFactor, indexed(what + ".scale", i));
+        }
         ref.offset = Vec2(float(offset[0]), float(offset[1]));
         ref.scale = Vec2(float(scale[0]), float(scale[1]));
-        ref.rotation =
-            float(read_number(m_doc, find_member(*transform, "rotation"), 0.0, what + " rotation"));
+        // A turn is a turn: reduced in double, so that float sin and cos (whose GPU precision is
+        // specified only near [-π, π]) see a small angle whatever the file says.
+        ref.rotation = float(std::remainder(
+            read_number(m_doc, find_member(*transform, "rotation"), 0.0, what + ".rotation"),
+            2.0 * std::numbers::pi));
         ref.texcoord =
-            read_int(m_doc, find_member(*transform, "texCoord"), ref.texcoord, what + " texCoord");
+            read_int(m_doc, find_member(*transform, "texCoord"), ref.texcoord, what + ".texCoord");
     }
     // Meshes carry TEXCOORD_0 and TEXCOORD_1 only.
     if (ref.texcoord < 0 || ref.texcoord > 1) {
@@ -88,20 +98,20 @@ TextureRef MaterialReader::texture(int index, int tex_coord, const tinygltf::Val
 TextureRef MaterialReader::texture(const tinygltf::Value* info, ColorSpace space,
                                    const std::string& slot) const {
     if (info == nullptr) return {};
-    const std::string usage = m_name + " " + slot;
+    const std::string usage = m_name + "." + slot;
     if (!info->IsObject()) m_doc.fail(usage + " is not a JSON object");
     const tinygltf::Value* index = find_member(*info, "index");
     if (index == nullptr) m_doc.fail(usage + " has no texture index");
     const tinygltf::Value* transform = nullptr;
     if (const tinygltf::Value* extensions = find_member(*info, "extensions")) {
-        if (!extensions->IsObject()) m_doc.fail(usage + " extensions is not a JSON object");
+        if (!extensions->IsObject()) m_doc.fail(usage + ".extensions is not a JSON object");
         transform = find_member(*extensions, "KHR_texture_transform");
         if (transform && !transform->IsObject()) {
-            m_doc.fail(usage + " KHR_texture_transform is not a JSON object");
+            m_doc.fail(usage + ".extensions.KHR_texture_transform is not a JSON object");
         }
     }
-    return texture(read_int(m_doc, index, -1, usage + " index"),
-                   read_int(m_doc, find_member(*info, "texCoord"), 0, usage + " texCoord"),
+    return texture(read_int(m_doc, index, -1, usage + ".index"),
+                   read_int(m_doc, find_member(*info, "texCoord"), 0, usage + ".texCoord"),
                    transform, space, slot);
 }
 
@@ -110,69 +120,78 @@ Material MaterialReader::read() const {
     Material out;
     out.name = m_material.name.empty() ? m_name : m_material.name;
     // Alpha (baseColorFactor[3]) is not used by the renderer yet.
-    out.base_color = colour(pbr.baseColorFactor, "baseColorFactor", true);
-    out.base_color_texture = texture(pbr.baseColorTexture, ColorSpace::Srgb, "baseColorTexture");
-    out.metallic = fraction(pbr.metallicFactor, "metallicFactor");
-    out.roughness = fraction(pbr.roughnessFactor, "roughnessFactor");
-    out.metallic_roughness_texture =
-        texture(pbr.metallicRoughnessTexture, ColorSpace::Linear, "metallicRoughnessTexture");
+    const std::string pbr_name = "pbrMetallicRoughness.";
+    out.base_color = colour(pbr.baseColorFactor, m_name + "." + pbr_name + "baseColorFactor", true);
+    out.base_color_texture =
+        texture(pbr.baseColorTexture, ColorSpace::Srgb, pbr_name + "baseColorTexture");
+    out.metallic = fraction(pbr.metallicFactor, m_name + "." + pbr_name + "metallicFactor");
+    out.roughness = fraction(pbr.roughnessFactor, m_name + "." + pbr_name + "roughnessFactor");
+    out.metallic_roughness_texture = texture(pbr.metallicRoughnessTexture, ColorSpace::Linear,
+                                             pbr_name + "metallicRoughnessTexture");
 
     const tinygltf::NormalTextureInfo& normal = m_material.normalTexture;
     if (normal.index != -1) {
         const tinygltf::Value* transform = find_extension(
-            m_doc, normal.extensions, "KHR_texture_transform", m_name + " normalTexture");
+            m_doc, normal.extensions, "KHR_texture_transform", m_name + ".normalTexture");
         out.normal_texture =
             texture(normal.index, normal.texCoord, transform, ColorSpace::Linear, "normalTexture");
-        if (!std::isfinite(normal.scale)) m_doc.fail(m_name + " normalTexture scale is not finite");
-        out.normal_scale = float(normal.scale);
+        out.normal_scale = float(
+            check_magnitude(m_doc, normal.scale, kMaxFactor, m_name + ".normalTexture.scale"));
     }
 
-    out.emissive = colour(m_material.emissiveFactor, "emissiveFactor", false);
+    out.emissive = colour(m_material.emissiveFactor, m_name + ".emissiveFactor", false);
     out.emissive_texture = texture(m_material.emissiveTexture, ColorSpace::Srgb, "emissiveTexture");
     out.double_sided = m_material.doubleSided;
     read_extensions(out);
+    // The shaders multiply the two in float.
+    check_non_negative(m_doc, double(max_component(out.emissive)) * out.emissive_strength,
+                       kMaxFactor, m_name + " emissiveFactor x emissiveStrength");
     return out;
 }
 
 void MaterialReader::read_extensions(Material& out) const {
     const tinygltf::ExtensionMap& extensions = m_material.extensions;
+    const std::string prefix = m_name + ".extensions.";
     if (const tinygltf::Value* ext =
             find_extension(m_doc, extensions, "KHR_materials_emissive_strength", m_name)) {
+        const std::string where = prefix + "KHR_materials_emissive_strength.emissiveStrength";
         out.emissive_strength =
-            non_negative(read_number(m_doc, find_member(*ext, "emissiveStrength"), 1.0,
-                                     m_name + " emissiveStrength"),
-                         "emissiveStrength");
+            factor(read_number(m_doc, find_member(*ext, "emissiveStrength"), 1.0, where), where);
     }
     if (const tinygltf::Value* ext =
             find_extension(m_doc, extensions, "KHR_materials_specular", m_name)) {
-        out.specular = fraction(read_number(m_doc, find_member(*ext, "specularFactor"), 1.0,
-                                            m_name + " specularFactor"),
-                                "specularFactor");
-        out.specular_texture =
-            texture(find_member(*ext, "specularTexture"), ColorSpace::Linear, "specularTexture");
+        const std::string name = "KHR_materials_specular.";
+        const std::string where = prefix + name + "specularFactor";
+        out.specular =
+            fraction(read_number(m_doc, find_member(*ext, "specularFactor"), 1.0, where), where);
+        out.specular_texture = texture(find_member(*ext, "specularTexture"), ColorSpace::Linear,
+                                       "extensions." + name + "specularTexture");
         // specularColorFactor may exceed 1 (the spec allows it to tint above white).
+        const std::string colour_where = prefix + name + "specularColorFactor";
         out.specular_color = colour(read_numbers(m_doc, find_member(*ext, "specularColorFactor"), 3,
-                                                 {1.0, 1.0, 1.0}, m_name + " specularColorFactor"),
-                                    "specularColorFactor", false);
-        out.specular_color_texture = texture(find_member(*ext, "specularColorTexture"),
-                                             ColorSpace::Srgb, "specularColorTexture");
+                                                 {1.0, 1.0, 1.0}, colour_where),
+                                    colour_where, false);
+        out.specular_color_texture =
+            texture(find_member(*ext, "specularColorTexture"), ColorSpace::Srgb,
+                    "extensions." + name + "specularColorTexture");
     }
     if (const tinygltf::Value* ext =
             find_extension(m_doc, extensions, "KHR_materials_ior", m_name)) {
-        const double ior = read_number(m_doc, find_member(*ext, "ior"), 1.5, m_name + " ior");
+        const std::string where = prefix + "KHR_materials_ior.ior";
+        const double ior = read_number(m_doc, find_member(*ext, "ior"), 1.5, where);
         // 0 is allowed by the extension's schema (a limit case with total Fresnel reflection).
-        if (!(ior >= 1.0 || ior == 0.0)) {
-            m_doc.fail(m_name + " ior " + number_text(ior) + " is below 1");
-        }
-        out.ior = float(ior);
+        if (!(ior >= 1.0 || ior == 0.0)) m_doc.fail(where + " " + number_text(ior) + " is below 1");
+        out.ior = float(check_non_negative(m_doc, ior, kMaxFactor, where));
     }
     if (const tinygltf::Value* ext =
             find_extension(m_doc, extensions, "KHR_materials_transmission", m_name)) {
-        out.transmission = fraction(read_number(m_doc, find_member(*ext, "transmissionFactor"), 0.0,
-                                                m_name + " transmissionFactor"),
-                                    "transmissionFactor");
-        out.transmission_texture = texture(find_member(*ext, "transmissionTexture"),
-                                           ColorSpace::Linear, "transmissionTexture");
+        const std::string name = "KHR_materials_transmission.";
+        const std::string where = prefix + name + "transmissionFactor";
+        out.transmission = fraction(
+            read_number(m_doc, find_member(*ext, "transmissionFactor"), 0.0, where), where);
+        out.transmission_texture =
+            texture(find_member(*ext, "transmissionTexture"), ColorSpace::Linear,
+                    "extensions." + name + "transmissionTexture");
     }
 }
 

@@ -7,6 +7,9 @@
 #include <utility>
 #include <vector>
 
+#include "engine/scene/gltf_value.h"
+#include "engine/scene/scene_range.h"
+
 namespace mvpl::scene::gltf {
 namespace {
 
@@ -30,13 +33,20 @@ bool all_finite(const DMat4& m) {
     return true;
 }
 
+// A node's matrix, translation, rotation or scale: the right number of finite numbers, each
+// within `limit` (translations place things in the world: scene_range.h's kMaxCoordinate bounds
+// them and, as generously, the matrix and scale).
 const std::vector<double>& checked(const Document& doc, int node, const std::vector<double>& values,
-                                   size_t size, const char* what) {
+                                   size_t size, const char* what, double limit) {
     if (!values.empty() && values.size() != size) {
         doc.fail(node_name(node) + " has a " + what + " of " + std::to_string(values.size()) +
                  " numbers, not " + std::to_string(size));
     }
     if (!all_finite(values)) doc.fail(node_name(node) + " has a non-finite " + what);
+    for (size_t i = 0; i < values.size(); ++i) {
+        check_magnitude(doc, values[i], limit,
+                        indexed(indexed("nodes", size_t(node)) + "." + what, i));
+    }
     return values;
 }
 
@@ -44,12 +54,14 @@ DMat4 local_transform(const Document& doc, int index) {
     const tinygltf::Node& node = doc.model.nodes[size_t(index)];
     if (!node.matrix.empty()) {
         return glm::make_mat4(
-            checked(doc, index, node.matrix, 16, "matrix").data());  // column-major
+            checked(doc, index, node.matrix, 16, "matrix", kMaxCoordinate).data());  // column-major
     }
     DMat4 m(1.0);
-    const std::vector<double>& t = checked(doc, index, node.translation, 3, "translation");
-    const std::vector<double>& r = checked(doc, index, node.rotation, 4, "rotation");
-    const std::vector<double>& s = checked(doc, index, node.scale, 3, "scale");
+    const std::vector<double>& t =
+        checked(doc, index, node.translation, 3, "translation", kMaxCoordinate);
+    // A unit quaternion is expected; kMaxFactor only keeps its length from overflowing.
+    const std::vector<double>& r = checked(doc, index, node.rotation, 4, "rotation", kMaxFactor);
+    const std::vector<double>& s = checked(doc, index, node.scale, 3, "scale", kMaxCoordinate);
     if (!t.empty()) m = glm::translate(m, DVec3(t[0], t[1], t[2]));
     if (!r.empty()) {
         const glm::dquat q(r[3], r[0], r[1], r[2]);  // glTF stores x, y, z, w

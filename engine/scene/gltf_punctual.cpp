@@ -4,12 +4,18 @@
 #include <string>
 
 #include "engine/scene/gltf_value.h"
+#include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::gltf {
 namespace {
 
 // Slack for π/2 written out in decimal.
 constexpr double kAngleSlack = 1e-6;
+// The G-buffer's reversed depth is znear / distance in float; GPUs flush subnormal floats to
+// zero (the cleared depth, which no surface passes), so znear / distance must stay a normal
+// float (≥ 1.2e-38) up to the largest distance in a scene (2√3 · kMaxCoordinate ≈ 3.5e11):
+// znear ≥ 4.2e-27, here with margin.
+constexpr double kMinZnear = 1e-20;
 
 DVec3 unit(const DVec3& v, bool& ok) {
     const double length = glm::length(v);
@@ -17,16 +23,23 @@ DVec3 unit(const DVec3& v, bool& ok) {
     return ok ? v / length : v;
 }
 
-double non_negative(const Document& doc, double value, const std::string& what) {
-    if (!std::isfinite(value) || value < 0.0) {
-        doc.fail(what + " " + number_text(value) + " is not a finite non-negative number");
+// The node's world position (a light's or a camera's), within kMaxCoordinate.
+Vec3 placed_position(const Document& doc, int node, const DMat4& world, const std::string& what) {
+    const DVec3 p(world[3]);
+    for (int c = 0; c < 3; ++c) {
+        if (!(std::abs(p[c]) <= kMaxCoordinate)) {
+            doc.fail(indexed("nodes", size_t(node)) + " places " + what + " at " +
+                     std::string(1, "xyz"[c]) + " = " + number_text(p[c]) +
+                     ", beyond the supported magnitude " + number_text(kMaxCoordinate));
+        }
     }
-    return value;
+    return Vec3(p);
 }
 
 }  // namespace
 
-std::optional<Light> node_light(const Document& doc, int node, const DMat4& world) {
+std::optional<Light> node_light(const Document& doc, int node, const DMat4& world,
+                                std::string* where) {
     const tinygltf::Node& gltf_node = doc.model.nodes[size_t(node)];
     const std::string node_name = "node " + std::to_string(node);
     const tinygltf::Value* ext =
@@ -41,18 +54,28 @@ std::optional<Light> node_light(const Document& doc, int node, const DMat4& worl
                  std::to_string(lights.size()) + " lights");
     }
     const tinygltf::Light& light = lights[size_t(index)];
-    const std::string name = "light " + std::to_string(index);
+    const std::string name = indexed("extensions.KHR_lights_punctual.lights", size_t(index));
 
     Light out;
-    out.name = light.name.empty() ? name : light.name;
+    out.name = light.name.empty() ? "light " + std::to_string(index) : light.name;
     Rgb colour(1.0f);
     if (!light.color.empty()) {
-        if (light.color.size() != 3) doc.fail(name + " color must have 3 components");
-        for (int i = 0; i < 3; ++i)
-            colour[i] = float(non_negative(doc, light.color[size_t(i)], name + " color"));
+        if (light.color.size() != 3) doc.fail(name + ".color must have 3 components");
+        for (int i = 0; i < 3; ++i) {
+            colour[i] = float(check_non_negative(doc, light.color[size_t(i)], kMaxFactor,
+                                                 indexed(name + ".color", size_t(i))));
+        }
     }
     // Photometric intensity taken 1:1 as radiometric (DESIGN.md).
-    out.intensity = colour * float(non_negative(doc, light.intensity, name + " intensity"));
+    const double intensity =
+        check_non_negative(doc, light.intensity, kMaxFactor, name + ".intensity");
+    const double brightest = intensity * double(max_component(colour));
+    check_non_negative(doc, brightest, kMaxFactor, name + " color x intensity");
+    out.intensity = colour * float(intensity);
+    // The renderer does not cut lights off at `range` (0 is tinygltf's "absent", infinite).
+    if (light.range < 0.0) {
+        doc.fail(name + ".range is " + number_text(light.range) + ", which is negative");
+    }
 
     if (light.type == "point") {
         out.type = LightType::Point;
@@ -65,8 +88,8 @@ std::optional<Light> node_light(const Document& doc, int node, const DMat4& worl
         const bool valid = std::isfinite(inner) && std::isfinite(outer) && inner >= 0.0 &&
                            inner < outer && outer <= std::numbers::pi / 2 + kAngleSlack;
         if (!valid) {
-            doc.fail(name + " has invalid cone angles (inner " + number_text(inner) + ", outer " +
-                     number_text(outer) + "); need 0 <= inner < outer <= pi/2");
+            doc.fail(name + ".spot has invalid cone angles (inner " + number_text(inner) +
+                     ", outer " + number_text(outer) + "); need 0 <= inner < outer <= pi/2");
         }
         out.inner_cone = float(inner);
         out.outer_cone = float(outer);
@@ -74,10 +97,11 @@ std::optional<Light> node_light(const Document& doc, int node, const DMat4& worl
         doc.fail(name + " has unknown type '" + light.type + "'");
     }
 
-    out.position = Vec3(DVec3(world[3]));
+    out.position = placed_position(doc, node, world, name);
     bool ok = false;
     out.direction = Vec3(unit(-DVec3(world[2]), ok));  // the node's -Z
     if (!ok) doc.fail(node_name + " orients " + name + " with a degenerate transform");
+    if (where) *where = name + " (on " + indexed("nodes", size_t(node)) + ")";
     return out;
 }
 
@@ -92,14 +116,21 @@ std::optional<Camera> node_camera(const Document& doc, int node, const DMat4& wo
     }
     const tinygltf::Camera& camera = cameras[size_t(gltf_node.camera)];
     if (camera.type != "perspective") return std::nullopt;
-    const std::string name = "camera " + std::to_string(gltf_node.camera);
-    const double yfov = camera.perspective.yfov;
-    const double znear = camera.perspective.znear;
-    if (!(yfov > 0.0 && yfov < std::numbers::pi)) {
-        doc.fail(name + " has an invalid yfov " + number_text(yfov));
+    const std::string name = indexed("cameras", size_t(gltf_node.camera));
+    const tinygltf::PerspectiveCamera& perspective = camera.perspective;
+    const double yfov =
+        check_between(doc, perspective.yfov, kMinYfov, kMaxYfov, name + ".perspective.yfov");
+    const double znear = check_between(doc, perspective.znear, kMinZnear, kMaxCoordinate,
+                                       name + ".perspective.znear");
+    // zfar and aspectRatio are not used (the projection is infinite, --res sets the aspect), but
+    // values the specification forbids are refused; 0 is tinygltf's "absent".
+    if (perspective.zfar != 0.0 && !(perspective.zfar > znear)) {
+        doc.fail(name + ".perspective.zfar is " + number_text(perspective.zfar) +
+                 ", not beyond znear " + number_text(znear));
     }
-    if (!(znear > 0.0 && std::isfinite(znear))) {
-        doc.fail(name + " has an invalid znear " + number_text(znear));
+    if (perspective.aspectRatio < 0.0) {
+        doc.fail(name + ".perspective.aspectRatio is " + number_text(perspective.aspectRatio) +
+                 ", which is negative");
     }
 
     // The camera frame is rigid: keep the viewing direction (-Z) exactly, then the up vector
@@ -113,7 +144,7 @@ std::optional<Camera> node_camera(const Document& doc, int node, const DMat4& wo
 
     Camera out;
     out.camera_to_world = Mat4(Vec4(Vec3(x), 0.0f), Vec4(Vec3(y), 0.0f), Vec4(Vec3(z), 0.0f),
-                               Vec4(Vec3(DVec3(world[3])), 1.0f));
+                               Vec4(placed_position(doc, node, world, name), 1.0f));
     out.yfov = float(yfov);
     out.znear = float(znear);
     return out;

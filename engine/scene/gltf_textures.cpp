@@ -4,9 +4,11 @@
 
 #include <array>
 #include <climits>
+#include <cstring>
 #include <memory>
 
 #include "engine/core/image.h"
+#include "engine/scene/gltf_diagnose.h"
 
 namespace mvpl::scene::gltf {
 namespace {
@@ -34,6 +36,38 @@ std::string stbi_reason() {
         if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) > 0x7E) c = '?';
     }
     return text;
+}
+
+bool starts_with(const unsigned char* bytes, int length, const char* magic, int at = 0) {
+    const int n = int(std::strlen(magic));
+    return length >= at + n && std::memcmp(bytes + at, magic, size_t(n)) == 0;
+}
+
+// Why stb_image could not read `bytes`. Its own reason is specific once it has chosen a format,
+// but stbi_info tries each format in turn and ends with "unknown image type" whichever one the
+// data was meant to be: that is made specific from the format the first bytes announce.
+std::string decode_problem(const unsigned char* bytes, int length) {
+    const std::string reason = stbi_reason();
+    if (reason != "unknown image type") return reason;
+    const std::string stb = " (stb_image: " + reason + ")";
+    if (starts_with(bytes, length, "\x89PNG\r\n\x1a\n")) return "corrupt or truncated PNG" + stb;
+    if (starts_with(bytes, length, "\xff\xd8\xff")) return "corrupt or truncated JPEG" + stb;
+    if (starts_with(bytes, length, "GIF8")) return "corrupt or truncated GIF" + stb;
+    if (starts_with(bytes, length, "BM")) return "corrupt or truncated BMP" + stb;
+    if (starts_with(bytes, length, "RIFF") && starts_with(bytes, length, "WEBP", 8)) {
+        return "WebP (EXT_texture_webp), which is not supported";
+    }
+    if (starts_with(bytes, length, "\xabKTX 20\xbb")) {
+        return "KTX2 (KHR_texture_basisu), which is not supported";
+    }
+    if (starts_with(bytes, length, "DDS ")) return "DDS (MSFT_texture_dds), which is not supported";
+    std::string head;
+    for (int i = 0; i < std::min(length, 4); ++i) {
+        static const char kHex[] = "0123456789abcdef";
+        head += std::string(i ? " " : "") + kHex[bytes[i] >> 4] + kHex[bytes[i] & 15];
+    }
+    return "neither PNG, JPEG, BMP, GIF, TGA, PSD, HDR, PIC nor PNM (the data starts with " + head +
+           ")";
 }
 
 // Value of every possible 8- or 16-bit code, decoded to linear when the texture is a colour.
@@ -111,7 +145,11 @@ Texture TextureCache::decode(int index, ColorSpace space) {
     const std::string image_name = "image " + std::to_string(source);
     if (image.image.empty()) {
         // tinygltf keeps going (with a warning) when an external image cannot be read.
-        if (!image.uri.empty()) m_doc.fail(image_name + " file '" + image.uri + "' cannot be read");
+        if (!image.uri.empty()) {
+            const std::string problem = external_file_problem(m_doc.base_dir, image.uri);
+            m_doc.fail(image_name + " file '" + image.uri + "' " +
+                       (problem.empty() ? "cannot be read" : problem));
+        }
         m_doc.fail(image_name + " has no data");
     }
     if (image.image.size() > size_t(INT_MAX)) m_doc.fail(image_name + " is larger than 2 GiB");
@@ -122,7 +160,7 @@ Texture TextureCache::decode(int index, ColorSpace space) {
     int height = 0;
     int channels = 0;
     if (!stbi_info_from_memory(bytes, length, &width, &height, &channels)) {
-        m_doc.fail(image_name + " cannot be decoded: " + stbi_reason());
+        m_doc.fail(image_name + " cannot be decoded: " + decode_problem(bytes, length));
     }
     const uint64_t texels = uint64_t(std::max(width, 0)) * uint64_t(std::max(height, 0));
     if (width <= 0 || height <= 0 || texels > kMaxTexels) {
@@ -141,7 +179,7 @@ Texture TextureCache::decode(int index, ColorSpace space) {
                                                                    &decoded_height, &channels, 0))
                      : static_cast<void*>(stbi_load_from_memory(bytes, length, &decoded_width,
                                                                 &decoded_height, &channels, 0)));
-    if (!pixels) m_doc.fail(image_name + " cannot be decoded: " + stbi_reason());
+    if (!pixels) m_doc.fail(image_name + " cannot be decoded: " + decode_problem(bytes, length));
     if (decoded_width != width || decoded_height != height || channels < 1 || channels > 4) {
         m_doc.fail(image_name + " decodes inconsistently with its header");
     }

@@ -10,6 +10,7 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/scene_loader.h"
+#include "engine/scene/scene_range.h"
 
 namespace mvpl::scene {
 
@@ -63,10 +64,18 @@ Scene load_obj(const std::string& path) {
     const size_t vertex_count = attrib.vertices.size() / 3;
     for (size_t v = 0; v < vertex_count; ++v) {
         for (int c = 0; c < 3; ++c) {
-            if (!std::isfinite(float(attrib.vertices[3 * v + size_t(c)]))) {
+            const double x = double(attrib.vertices[3 * v + size_t(c)]);
+            if (!std::isfinite(float(x))) {
                 throw InputError(path, "vertex " + std::to_string(v + 1) +
                                            " has a non-finite position (NaN, infinity or beyond "
                                            "float range)");
+            }
+            // scene_range.h: what Embree and the shaders can carry.
+            if (std::abs(x) > kMaxCoordinate) {
+                throw InputError(path, "vertex " + std::to_string(v + 1) + " has " +
+                                           std::string(1, "xyz"[c]) + " = " + number_text(x) +
+                                           ", beyond the supported magnitude " +
+                                           number_text(kMaxCoordinate));
             }
         }
     }
@@ -81,6 +90,16 @@ Scene load_obj(const std::string& path) {
         if (!valid_colour(out.base_color) || !valid_colour(out.emissive)) {
             throw InputError(path,
                              "material '" + m.name + "' has a negative or non-finite Kd or Ke");
+        }
+        for (int c = 0; c < 3; ++c) {
+            const double kd = double(m.diffuse[c]);
+            const double ke = double(m.emission[c]);
+            if (kd > kMaxFactor || ke > kMaxFactor) {
+                throw InputError(path, "material '" + m.name + "' has " +
+                                           (kd > kMaxFactor ? "Kd" : "Ke") + " " +
+                                           number_text(std::max(kd, ke)) +
+                                           ", beyond the supported " + number_text(kMaxFactor));
+            }
         }
         materials.push_back(out);
     }

@@ -13,6 +13,7 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/scene_loader.h"
+#include "engine/scene/scene_range.h"
 
 namespace mvpl::scene {
 
@@ -318,6 +319,17 @@ Scene load_ply(const std::string& path) {
                     throw InputError(path, "vertex " + std::to_string(n) +
                                                " has a non-finite position (NaN, infinity or "
                                                "beyond float range)");
+                }
+                for (int c = 0; c < 3; ++c) {
+                    // scene_range.h: what Embree and the shaders can carry.
+                    const double x = values[size_t(xyz[c])];
+                    if (std::abs(x) > kMaxCoordinate) {
+                        throw InputError(path, "vertex " + std::to_string(n) + " has " +
+                                                   std::string(1, "xyz"[c]) + " = " +
+                                                   number_text(x) +
+                                                   ", beyond the supported magnitude " +
+                                                   number_text(kMaxCoordinate));
+                    }
                 }
                 mesh.positions[n] = p;
                 if (have_normals) {

@@ -10,6 +10,7 @@
 #include "engine/scene/camera.h"
 #include "engine/scene/obj_loader.h"
 #include "engine/scene/ply_loader.h"
+#include "engine/scene/scene_range.h"
 
 namespace mvpl::scene {
 
@@ -88,6 +89,10 @@ Scene mesh_scene(const std::string& path, std::vector<Mesh> meshes,
     scene.materials = std::move(materials);
     scene.camera = frame_bounds(scene.bounds());
     scene.has_camera = false;
+    check_emitted_power(
+        scene, [](int light) { return "light " + std::to_string(light); },
+        [&](int material) { return "material '" + scene.materials[size_t(material)].name + "'"; },
+        [&](const std::string& what) { throw InputError(path, what); });
     return scene;
 }
 

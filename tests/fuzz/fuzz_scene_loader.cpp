@@ -1,7 +1,8 @@
 // libFuzzer target for the scene loaders (glTF .gltf/.glb, PLY, OBJ): whatever the bytes, a load
-// either succeeds with a scene whose every position is finite and every index in range, or throws
-// InputError. Anything else — a crash, a sanitizer report, another exception, a hang — is a
-// finding. The format is chosen from the bytes as a user's file extension would choose it: the
+// either succeeds with a scene whose every position lies within engine/scene/scene_range.h's
+// kMaxCoordinate, every light and material factor within kMaxFactor and every index in range,
+// or throws InputError. Anything else — a crash, a sanitizer report, another exception, a hang — is
+// a finding. The format is chosen from the bytes as a user's file extension would choose it: the
 // GLB magic, "ply", a '{' (JSON) or else OBJ. tests/fuzz/README.md says how to run it.
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 
 #include "engine/core/error.h"
 #include "engine/scene/scene_loader.h"
+#include "engine/scene/scene_range.h"
 
 namespace {
 
@@ -44,10 +46,20 @@ std::string write_input(const uint8_t* data, size_t size, const std::string& ext
     return path;
 }
 
+bool within(float value, double limit) {
+    return std::abs(double(value)) <= limit;  // false for NaN
+}
+
+bool within(const mvpl::Vec3& v, double limit) {
+    return within(v.x, limit) && within(v.y, limit) && within(v.z, limit);
+}
+
 void check(const mvpl::scene::Scene& scene) {
+    using mvpl::scene::kMaxCoordinate;
+    using mvpl::scene::kMaxFactor;
     for (const mvpl::scene::Mesh& mesh : scene.meshes) {
         for (const mvpl::Vec3& p : mesh.positions) {
-            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) std::abort();
+            if (!within(p, kMaxCoordinate)) std::abort();
         }
         for (const uint32_t i : mesh.indices) {
             if (i >= mesh.positions.size()) std::abort();
@@ -55,6 +67,17 @@ void check(const mvpl::scene::Scene& scene) {
         if (mesh.normals.size() != mesh.positions.size()) std::abort();
         if (mesh.material < 0 || size_t(mesh.material) >= scene.materials.size()) std::abort();
     }
+    for (const mvpl::scene::Light& light : scene.lights) {
+        if (!within(light.position, kMaxCoordinate) || !within(light.intensity, kMaxFactor)) {
+            std::abort();
+        }
+    }
+    for (const mvpl::scene::Material& m : scene.materials) {
+        if (!within(m.emission(), kMaxFactor) || !within(m.base_color, kMaxFactor)) std::abort();
+    }
+    // A camera made to frame the bounds stands outside them, at most ≈6e9 for bounds at the
+    // limit (scene/camera.h): still far inside Embree's margin (scene_range.h).
+    if (!within(scene.camera.position(), 10.0 * kMaxCoordinate)) std::abort();
 }
 
 }  // namespace

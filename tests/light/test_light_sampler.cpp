@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <stdexcept>
 
 #include "engine/core/rng.h"
 #include "engine/light/light_sampler.h"
@@ -120,6 +121,21 @@ TEST(LightSampler, PointLightEmissionSample) {
 }
 
 // KHR_lights_punctual: 1 inside the inner cone, 0 outside the outer, smooth and monotone between.
+// An emitter whose power overflows float must not be left out silently (the scene would render
+// black with exit code 0): the loaders refuse such scenes (scene::check_emitted_power), and a
+// scene built around them is a bug the sampler reports.
+TEST(LightSampler, PowerBeyondFloatIsAnErrorNotADroppedLight) {
+    scene::Scene s;
+    s.materials.push_back(test::diffuse_material(Rgb(0.5f)));
+    s.meshes.push_back(test::make_quad(Vec3(-1, 0, -1), Vec3(0, 0, 2), Vec3(2, 0, 0), 0));
+    s.lights = {point_light(Vec3(0, 1, 0), 1e38f)};  // 4π · 1e38 > FLT_MAX
+    EXPECT_THROW(LightSampler{s}, std::logic_error);
+    s.lights = {point_light(Vec3(0, 1, 0), 2e37f)};  // 2.5e38 fits, barely
+    const LightSampler lights(s);
+    ASSERT_EQ(lights.emitters().size(), 1u);
+    EXPECT_GT(lights.total_power(), 2e38f);
+}
+
 TEST(SpotAttenuation, FullInsideZeroOutsideMonotoneBetween) {
     scene::Light spot;
     spot.type = scene::LightType::Spot;

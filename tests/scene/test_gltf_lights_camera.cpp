@@ -1,6 +1,9 @@
 // KHR_lights_punctual lights and the camera.
 #include <gtest/gtest.h>
 
+#include <glm/gtc/matrix_transform.hpp>
+
+#include "engine/scene/camera.h"
 #include "engine/scene/scene_loader.h"
 #include "scene_test_util.h"
 
@@ -69,6 +72,27 @@ TEST_F(GltfLightsCamera, FirstPerspectiveCameraWithScaleRemoved) {
     expect_vec_near(Vec3(camera.camera_to_world[2]), Vec3(0, 0, -1));
     EXPECT_EQ(camera.camera_to_world[0].w, 0.0f);
     EXPECT_EQ(camera.camera_to_world[3].w, 1.0f);
+}
+
+// Camera rays start on the near plane (view depth znear), where the G-buffer clips, whatever the
+// pixel: far off-axis that is many times znear from the eye.
+TEST(CameraRay, StartsOnTheNearPlane) {
+    Camera camera;
+    camera.camera_to_world = glm::translate(Mat4(1.0f), Vec3(1, 2, 3)) *
+                             glm::rotate(Mat4(1.0f), 0.5f, glm::normalize(Vec3(1, 1, 0)));
+    camera.yfov = 3.1f;
+    camera.znear = 0.25f;
+    const Vec3 eye = camera.position();
+    const Vec3 forward = -Vec3(camera.camera_to_world[2]);
+    for (const Vec2 film : {Vec2(32, 32), Vec2(0.5f, 0.5f), Vec2(63.5f, 10), Vec2(5, 60)}) {
+        const CameraRay ray = generate_camera_ray(camera, 64, 64, film);
+        EXPECT_NEAR(glm::dot(ray.origin - eye, forward), camera.znear, 1e-4f);
+        // On the line from the eye through the pixel.
+        EXPECT_NEAR(glm::length(glm::cross(ray.origin - eye, ray.direction)), 0.0f, 1e-3f);
+        EXPECT_GT(glm::dot(ray.origin - eye, ray.direction), 0.0f);
+    }
+    EXPECT_GT(glm::length(generate_camera_ray(camera, 64, 64, Vec2(0.5f, 32)).origin - eye),
+              10.0f * camera.znear);
 }
 
 }  // namespace

@@ -255,6 +255,36 @@ def lights_camera():
         scenes=[{"nodes": [0, 1, 2, 4, 5, 6, 8, 9]}])
 
 
+def wide_angle():
+    """A closed 2 m room lit from the ceiling, seen from its centre with yfov 3.1 (tan(yfov/2) ≈ 48)
+    and znear 0.2: the near plane cuts through most of the view, so a renderer that does not clip
+    where the rasteriser clips shows a different image."""
+    b = Builder()
+    # Origin and edges u, v of each face; u × v points into the room.
+    quads = [((-1, -1, -1), (0, 0, 2), (2, 0, 0)),   # floor, facing up
+             ((-1, 1, -1), (2, 0, 0), (0, 0, 2)),    # ceiling, facing down
+             ((-1, -1, -1), (2, 0, 0), (0, 2, 0)),   # back wall (z = -1), facing +z
+             ((-1, -1, 1), (0, 2, 0), (2, 0, 0)),    # front wall (z = 1), facing -z
+             ((-1, -1, -1), (0, 2, 0), (0, 0, 2)),   # left wall (x = -1), facing +x
+             ((1, -1, -1), (0, 0, 2), (0, 2, 0))]    # right wall (x = 1), facing -x
+    meshes = []
+    for i, (o, u, v) in enumerate(quads):
+        corners = [o, tuple(o[k] + u[k] for k in range(3)),
+                   tuple(o[k] + u[k] + v[k] for k in range(3)), tuple(o[k] + v[k] for k in range(3))]
+        pos = b.vec([tuple(float(c) for c in p) for p in corners], "VEC3", minmax=True)
+        idx = b.indices([0, 1, 2, 0, 2, 3])
+        meshes.append({"primitives": [{"attributes": {"POSITION": pos}, "indices": idx,
+                                       "material": 1 if i == 1 else 0}]})
+    return b.gltf(
+        materials=[{"pbrMetallicRoughness": {"baseColorFactor": [0.7, 0.6, 0.5, 1],
+                                             "metallicFactor": 0}},
+                   {"pbrMetallicRoughness": {"metallicFactor": 0}, "emissiveFactor": [1, 1, 1]}],
+        cameras=[{"type": "perspective", "perspective": {"yfov": 3.1, "znear": 0.2}}],
+        meshes=meshes,
+        nodes=[{"mesh": i} for i in range(6)] + [{"camera": 0, "translation": [0.3, 0, 0.5]}],
+        scenes=[{"nodes": list(range(7))}])
+
+
 def defaults():
     b = Builder()
     pos = b.vec([(-1.0, 0.0, 0.0), (1.0, 0.0, 0.0), (0.0, 2.0, 0.0)], "VEC3", minmax=True)
@@ -403,9 +433,9 @@ def bad_corpus():
     files["number-overflow-in-matrix.gltf"] = setter(
         ["nodes", 0, "matrix"], [1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, INF, 0, 0, 1])
     files["position-beyond-float-range.gltf"] = setter(["nodes", 0, "translation"], [1e39, 0, 0])
+    # Every scale in range (scene_range.h), their product (1e9^40) not even a double.
     files["nan-transform.gltf"] = setter(["nodes"], [
-        {"scale": [1e300, 1e300, 1e300], "children": [1]},
-        {"mesh": 0, "scale": [1e300, 1e300, 1e300]}])
+        {"scale": [1e9, 1e9, 1e9], "children": [i + 1]} for i in range(40)] + [{"mesh": 0}])
     files["nan-literal-in-transform.gltf"] = setter(["nodes", 0, "translation"], [NAN, 0, 0])
     files["zero-quaternion.gltf"] = setter(["nodes", 0, "rotation"], [0, 0, 0, 0])
     files["wrong-matrix-length.gltf"] = setter(["nodes", 0, "matrix"], [1, 0, 0, 0])
@@ -515,12 +545,14 @@ def main():
         "materials.gltf": text(materials()),
         "lights_camera.gltf": text(lights_camera()),
         "defaults.gltf": text(defaults()),
+        "wide_angle.gltf": text(wide_angle()),
         "box.glb": box_glb(),
     }
     for name, content in good.items():
         write(HERE / name, content)
     BAD.mkdir(exist_ok=True)
-    for name, content in bad_corpus().items():
+    from range_fixtures import range_corpus  # beside this file; it uses the helpers above
+    for name, content in {**bad_corpus(), **range_corpus(sys.modules[__name__])}.items():
         write(BAD / name, content)
 
 

@@ -104,6 +104,12 @@ def main():
         "obj-no-faces.obj": b"v 0 0 0\nv 1 0 0\nv 0 1 0\n",
         "obj-inf-vertex.obj": b"v 0 0 0\nv 1e999 0 0\nv 0 1 0\nf 1 2 3\n",
         "obj-empty.obj": b"",
+        # Finite floats beyond scene_range.h's kMaxCoordinate (1e9).
+        "ply-vertex-beyond-range.ply": ply_ascii(tri, [(0, 1, 2)]).replace(b"\n0 1 0\n",
+                                                                           b"\n0 5e13 0\n"),
+        "ply-vertex-beyond-range-binary.ply": ply_binary("little", [(0, 0, 0), (0, 0, -3e20),
+                                                                    (0, 1, 0)], [(0, 1, 2)]),
+        "obj-vertex-beyond-range.obj": b"v 0 0 0\nv 2e12 0 0\nv 0 1 0\nf 1 2 3\n",
     }
     for name, data in bad.items():
         write(os.path.join(BAD, name), data)
