@@ -25,13 +25,30 @@ Camera frame_bounds(const Bounds& bounds) {
     const Vec3 center = bounds.center();
     const Vec3 half = 0.5f * (bounds.hi - bounds.lo);
     const float radius = std::max(glm::length(half), 1e-6f);
-    // Distance at which the bounding sphere fits the vertical field of view, measured from the
-    // front face of the box so that the camera is outside it.
+    // The distance at which the bounding sphere fits the vertical field of view; it is more than
+    // the radius, so the camera is outside the box.
     const float distance = radius / std::sin(0.5f * camera.yfov);
-    const Vec3 eye = center + Vec3(0.0f, 0.0f, std::max(distance, half.z + radius * 1e-3f));
-    camera.camera_to_world = Mat4(1.0f);
-    camera.camera_to_world[3] = Vec4(eye, 1.0f);
-    camera.znear = radius * 1e-3f;
+    const float elevation = glm::radians(30.0f);
+    const float azimuth = glm::radians(45.0f);
+    const Vec3 from(std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+                    std::cos(elevation) * std::cos(azimuth));
+    return look_at_camera(center + distance * from, center, Vec3(0.0f, 1.0f, 0.0f), camera.yfov,
+                          radius * 1e-3f);
+}
+
+Camera look_at_camera(const Vec3& eye, const Vec3& target, const Vec3& up, float yfov,
+                      float znear) {
+    const Vec3 back = glm::normalize(eye - target);  // the camera looks down its -Z
+    Vec3 u = glm::length(up) > 0.0f ? glm::normalize(up) : Vec3(0.0f, 1.0f, 0.0f);
+    if (std::abs(glm::dot(u, back)) > 0.999f) u = Vec3(0.0f, 0.0f, 1.0f);
+    if (std::abs(glm::dot(u, back)) > 0.999f) u = Vec3(1.0f, 0.0f, 0.0f);
+    const Vec3 right = glm::normalize(glm::cross(u, back));
+    const Vec3 true_up = glm::cross(back, right);
+    Camera camera;
+    camera.camera_to_world =
+        Mat4(Vec4(right, 0.0f), Vec4(true_up, 0.0f), Vec4(back, 0.0f), Vec4(eye, 1.0f));
+    camera.yfov = yfov;
+    camera.znear = znear;
     return camera;
 }
 

@@ -16,8 +16,13 @@ struct CameraRay {
 };
 CameraRay generate_camera_ray(const Camera& camera, int width, int height, const Vec2& film);
 
-// A camera outside the bounds looking at their centre along -Z, far enough that the whole box
+// A camera outside the bounds looking at their centre from a three-quarter view (from +X, +Y,
+// +Z: 45° round, 30° up, as glTF viewers frame a model), far enough that the bounding sphere
 // fits the vertical field of view.
 Camera frame_bounds(const Bounds& bounds);
+
+// A camera at `eye` looking at `target`, `up` as near the image's up as it is orthogonal to the
+// view (+Z instead when the view is along `up`); yfov in radians. Eye and target must differ.
+Camera look_at_camera(const Vec3& eye, const Vec3& target, const Vec3& up, float yfov, float znear);
 
 }  // namespace mvpl::scene

@@ -231,10 +231,8 @@ int json_depth(const unsigned char* text, size_t length) {
 
 void check_required_extensions(const Document& doc, const std::vector<std::string>& required) {
     for (const std::string& name : required) {
-        const bool supported =
-            std::any_of(std::begin(kSupportedExtensions), std::end(kSupportedExtensions),
-                        [&](const char* s) { return name == s; });
-        if (!supported) doc.fail("required extension " + name + " is not supported");
+        if (!is_supported_extension(name))
+            doc.fail("required extension " + name + " is not supported");
     }
 }
 
@@ -247,6 +245,11 @@ void check_asset_and_extensions(const Document& doc) {
 }
 
 }  // namespace
+
+bool is_supported_extension(const std::string& name) {
+    return std::any_of(std::begin(kSupportedExtensions), std::end(kSupportedExtensions),
+                       [&](const char* s) { return name == s; });
+}
 
 std::string one_line(const std::string& message) {
     size_t begin = 0;

@@ -28,6 +28,10 @@ struct Document {
 // External buffers and images are read relative to the file. Throws InputError.
 Document read_document(const std::string& path);
 
+// Whether mvpl reads the glTF extension `name` (the others are refused when a file requires them
+// and ignored with a warning when it only uses them).
+bool is_supported_extension(const std::string& name);
+
 // tinygltf's multi-line, sometimes data-URI-laden messages as one short line.
 std::string one_line(const std::string& message);
 

@@ -49,11 +49,16 @@ Scene load_gltf(const std::string& path) {
             light_names.push_back(light_name);
         }
         // Every camera is checked; the first perspective one in traversal order is used.
-        if (auto camera = gltf::node_camera(doc, node, world); camera && !scene.has_camera) {
-            scene.camera = *camera;
+        if (auto camera = gltf::node_camera(doc, node, world)) {
+            if (!scene.has_camera) scene.camera = *camera;
             scene.has_camera = true;
+            scene.cameras.push_back(*camera);
         }
     });
+    for (const std::string& name : doc.model.extensionsUsed) {
+        if (!gltf::is_supported_extension(name))
+            scene.warnings.push_back("extension " + name + " is not supported; it is ignored");
+    }
 
     if (scene.meshes.empty()) doc.fail("no triangle geometry");
     if (!scene.has_camera) scene.camera = frame_bounds(scene.bounds());

@@ -91,6 +91,12 @@ struct Scene {
     std::vector<Light> lights;
     Camera camera;
     bool has_camera = false;  // false: the camera was made to frame the scene bounds
+    // The file's perspective cameras in node traversal order (camera is the first); what
+    // `--camera N` picks from.
+    std::vector<Camera> cameras;
+    // What the loader read past without refusing the file, one line each (e.g. an extension it
+    // ignores); the command line prints them as warnings.
+    std::vector<std::string> warnings;
 
     Bounds bounds() const;
     size_t triangle_count() const;

@@ -93,10 +93,15 @@ TEST(MeshLoaders, BareMeshGetsDefaultMaterialFramingCameraAndNoLight) {
     EXPECT_FALSE(m.is_emissive());
     EXPECT_TRUE(scene.lights.empty());
     EXPECT_FALSE(scene.has_camera);
-    // frame_bounds puts the camera outside the box, on its +Z side, looking down -Z.
+    // frame_bounds puts the camera outside the box, above it and on its +X +Z side (a
+    // three-quarter view), looking at the centre, with the image's up in the plane of +Y.
     const Bounds b = scene.bounds();
-    EXPECT_GT(scene.camera.position().z, b.hi.z);
-    expect_vec_near(-Vec3(scene.camera.camera_to_world[2]), Vec3(0, 0, -1));
+    const Vec3 eye = scene.camera.position();
+    EXPECT_GT(eye.x, b.hi.x);
+    EXPECT_GT(eye.y, b.hi.y);
+    EXPECT_GT(eye.z, b.hi.z);
+    expect_vec_near(-Vec3(scene.camera.camera_to_world[2]), glm::normalize(b.center() - eye));
+    EXPECT_NEAR(Vec3(scene.camera.camera_to_world[0]).y, 0.0f, 1e-6f);  // no roll
 }
 
 TEST(MeshLoaders, PlyVertexNormalsAreReadAndNormalised) {

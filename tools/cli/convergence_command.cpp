@@ -105,6 +105,8 @@ int run_convergence(const Args& args) {
     parser.add_string("--methods", &methods_text, "comma-separated: pt,mc,metropolis");
     add_renderer_options(parser, renderer_args);
     add_seed_option(parser, settings.seed);
+    CameraArgs camera;
+    add_camera_options(parser, camera);
     parser.add_flag("--no-plot", &no_plot, "write the CSV only");
     parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
     if (!parser.parse(args)) return 0;
@@ -126,7 +128,7 @@ int run_convergence(const Args& args) {
                          std::to_string(reference.width()) + "x" +
                          std::to_string(reference.height()));
     }
-    const session::SceneSession session(scene_path);
+    const session::SceneSession session(scene_path, camera.choice);
     std::filesystem::create_directories(out_dir);
 
     ConvergenceRun run;

@@ -1,6 +1,9 @@
 #include "tools/cli/option_groups.h"
 
 #include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <vector>
 
 #include "engine/core/error.h"
 
@@ -99,6 +102,48 @@ void add_device_option(ArgParser& parser, int& device, const std::string& help) 
 
 void add_seed_option(ArgParser& parser, uint64_t& seed) {
     parser.add_uint64("--seed", &seed, "random seed; the same seed gives the same result");
+}
+
+void add_camera_options(ArgParser& parser, CameraArgs& args) {
+    parser.add_int("--camera", &args.camera,
+                   "render from the file's perspective camera N (0 = the first; default: the "
+                   "first, or a three-quarter view of the bounds without one)");
+    parser.add_string("--look-at", &args.look_at,
+                      "EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ]: a camera at E looking at T, up U (+Y)");
+    parser.add_float("--fov", &args.fov, "vertical field of view in degrees (0 = the camera's)");
+    parser.add_check([&parser, &args] {
+        if (args.camera < -1 || args.camera > 1000000)
+            out_of_range(parser, "--camera", "0..1000000");
+        if (!(args.fov >= 0.0f && args.fov < 180.0f)) out_of_range(parser, "--fov", "(0, 180)");
+        scene::CameraChoice& c = args.choice;
+        c.index = args.camera;
+        c.fov_degrees = args.fov;
+        if (args.look_at.empty()) return;
+        std::vector<float> v;
+        size_t start = 0;
+        while (start <= args.look_at.size()) {
+            const size_t comma = std::min(args.look_at.find(',', start), args.look_at.size());
+            const std::string item = args.look_at.substr(start, comma - start);
+            char* end = nullptr;
+            const float x = std::strtof(item.c_str(), &end);
+            if (item.empty() || *end != '\0' || !std::isfinite(x)) {
+                throw UsageError(parser.command() + ": --look-at: '" + item +
+                                 "' is not a finite number");
+            }
+            v.push_back(x);
+            start = comma + 1;
+        }
+        if (v.size() != 6 && v.size() != 9) {
+            throw UsageError(parser.command() + ": --look-at takes 6 or 9 numbers, not " +
+                             std::to_string(v.size()));
+        }
+        c.look_at = true;
+        c.eye = Vec3(v[0], v[1], v[2]);
+        c.target = Vec3(v[3], v[4], v[5]);
+        if (v.size() == 9) c.up = Vec3(v[6], v[7], v[8]);
+        if (!(glm::length(c.eye - c.target) > 0.0f))
+            throw UsageError(parser.command() + ": --look-at: the eye is the target");
+    });
 }
 
 }  // namespace mvpl::cli

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/render/vpl_renderer.h"
+#include "engine/scene/camera_choice.h"
 #include "sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 
@@ -37,5 +38,14 @@ void add_max_depth_option(ArgParser& parser, int& max_depth);
 // --device: a Vulkan device index of mvpl info, or -1 for the default.
 void add_device_option(ArgParser& parser, int& device, const std::string& help);
 void add_seed_option(ArgParser& parser, uint64_t& seed);
+
+// --camera N, --look-at EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ], --fov DEG: which camera to render from.
+struct CameraArgs {
+    int camera = -1;
+    std::string look_at;
+    float fov = 0.0f;
+    scene::CameraChoice choice;  // filled by the parser's check
+};
+void add_camera_options(ArgParser& parser, CameraArgs& args);
 
 }  // namespace mvpl::cli

@@ -50,6 +50,8 @@ int run_preview(const Args& args) {
     parser.add_float("--exposure", &o.exposure, "exposure in stops");
     add_seed_option(parser, o.seed);
     add_max_depth_option(parser, o.max_depth);
+    CameraArgs camera;
+    add_camera_options(parser, camera);
     add_renderer_options(parser, renderer);  // C toggles clamping in the window
     parser.add_flag("--no-hud", &no_hud, "no text overlay");
     parser.add_flag("--no-motion-scaling", &no_motion_scaling,
@@ -73,6 +75,7 @@ int run_preview(const Args& args) {
     o.clamp = renderer.clamp;
     o.hud = !no_hud;
     o.motion_scaling = !no_motion_scaling;
+    o.camera = camera.choice;
     return preview::run_preview(o);
 }
 

@@ -30,6 +30,8 @@ int run_reference(const Args& args) {
     add_max_depth_option(parser, options.max_depth);
     parser.add_resolution("--res", &options.width, &options.height, "image size WxH");
     add_seed_option(parser, options.seed);
+    CameraArgs camera;
+    add_camera_options(parser, camera);
     parser.add_strings("-o", &outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &exposure, "PNG exposure in stops");
     parser.add_int("--threads", &threads, "worker threads (0 = all cores)");
@@ -45,7 +47,7 @@ int run_reference(const Args& args) {
                                                       threads);
     }
 
-    const session::SceneSession session(scene_path);
+    const session::SceneSession session(scene_path, camera.choice);
     session.warn_if_no_light("the image is black");
 
     reference::RenderStats stats;

@@ -21,6 +21,7 @@ namespace {
 // Everything `mvpl render` reads from its command line.
 struct RenderArgs {
     std::string scene_path;
+    CameraArgs camera;
     std::string sampler_name = "mc";
     std::string per_path;  // empty: each sampler's default
     uint64_t paths = 1024;
@@ -54,6 +55,7 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     add_renderer_options(parser, a.renderer);
     add_max_depth_option(parser, a.settings.tracer.max_depth);
     add_seed_option(parser, a.settings.seed);
+    add_camera_options(parser, a.camera);
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
     add_device_option(parser, a.device, "Vulkan device index (see mvpl info); -1 = default");
@@ -131,7 +133,7 @@ int run_render(const Args& args) {
     check_outputs(a.outputs);
 
     Timer total;
-    const session::SceneSession session(a.scene_path);
+    const session::SceneSession session(a.scene_path, a.camera.choice);
     session.warn_if_no_light("the image shows emitters only");
     RenderJob job = make_job(a, session);
     std::unique_ptr<gpu::Context> context;

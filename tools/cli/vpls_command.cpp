@@ -118,6 +118,8 @@ int run_vpls(const Args& args) {
     add_metropolis_options(parser, settings);
     add_max_depth_option(parser, settings.tracer.max_depth);
     add_seed_option(parser, settings.seed);
+    CameraArgs camera;
+    add_camera_options(parser, camera);
     parser.add_strings("-o", &outputs, "output image, .png or .exr");
     parser.add_flag("--quiet", &quiet, "no summary line");
     if (!parser.parse(args)) return 0;
@@ -128,7 +130,7 @@ int run_vpls(const Args& args) {
     if (outputs.empty()) outputs.push_back("vpls.png");
     check_outputs(outputs);
 
-    const session::SceneSession session(scene_path);
+    const session::SceneSession session(scene_path, camera.choice);
     const scene::Scene& scene = session.scene();
     const trace::Accel& accel = session.accel();
     // The Metropolis target is the scene camera's view, whatever this picture shows.

@@ -8,11 +8,13 @@
 #include <string>
 
 #include "engine/render/vpl_renderer.h"
+#include "engine/scene/camera_choice.h"
 
 namespace mvpl::preview {
 
 struct PreviewOptions {
     std::string scene_path;
+    scene::CameraChoice camera;  // --camera, --look-at, --fov
     std::string sampler = "mc";
     int width = 512;  // initial window size
     int height = 512;

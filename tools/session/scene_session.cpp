@@ -6,14 +6,19 @@
 
 namespace mvpl::session {
 
-SceneSession::SceneSession(const std::string& path)
+SceneSession::SceneSession(const std::string& path, const scene::CameraChoice& camera)
     : m_path(path),
       m_scene(scene::load_scene(path)),
       m_load_seconds(m_clock.seconds()),
       m_accel(m_scene),
       m_bvh_seconds(m_clock.seconds() - m_load_seconds),
       m_lights(m_scene),
-      m_setup_seconds(m_clock.seconds()) {}
+      m_setup_seconds(m_clock.seconds()) {
+    // Neither the BVH nor the lights depend on the camera; the samplers read it later.
+    m_scene.camera = scene::choose_camera(m_scene, camera);
+    for (const std::string& w : m_scene.warnings)
+        std::fprintf(stderr, "mvpl: warning: %s: %s\n", m_path.c_str(), w.c_str());
+}
 
 bool SceneSession::warn_if_no_light(const std::string& consequence) const {
     if (!m_lights.empty()) return false;

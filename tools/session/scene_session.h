@@ -8,6 +8,7 @@
 #include "engine/core/image.h"
 #include "engine/core/timer.h"
 #include "engine/light/light_sampler.h"
+#include "engine/scene/camera_choice.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
@@ -15,8 +16,9 @@ namespace mvpl::session {
 
 class SceneSession {
 public:
-    // Throws InputError (exit code 2) when the scene cannot be read.
-    explicit SceneSession(const std::string& path);
+    // Throws InputError (exit code 2) when the scene cannot be read, UsageError when `camera`
+    // names no camera of it. Prints the loader's warnings (Scene::warnings).
+    explicit SceneSession(const std::string& path, const scene::CameraChoice& camera = {});
     SceneSession(const SceneSession&) = delete;
     SceneSession& operator=(const SceneSession&) = delete;
 
