@@ -17,15 +17,23 @@
 namespace mvpl::render {
 namespace {
 
-// The Cornell box with a few finely tessellated spheres in it: many clusters, spread out.
-scene::Scene box_with_spheres() {
+// The Cornell box with icospheres of `subdivisions` levels and radius `size` × the box's
+// smallest side, centred at the given fractions of the box.
+scene::Scene box_with_spheres(std::initializer_list<Vec3> centres, float size, int subdivisions) {
     scene::Scene s = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
     const scene::Bounds b = s.bounds();
-    const Vec3 size = b.hi - b.lo;
-    const float radius = 0.08f * std::min({size.x, size.y, size.z});
-    for (const Vec3 at : {Vec3(0.3f, 0.2f, 0.4f), Vec3(0.7f, 0.5f, 0.6f), Vec3(0.5f, 0.8f, 0.3f)})
-        s.meshes.push_back(test::make_icosphere(b.lo + at * size, radius, 4, false, 0));
+    const Vec3 extent = b.hi - b.lo;
+    const float radius = size * std::min({extent.x, extent.y, extent.z});
+    for (const Vec3& at : centres)
+        s.meshes.push_back(
+            test::make_icosphere(b.lo + at * extent, radius, subdivisions, false, 0));
     return s;
+}
+
+// A few finely tessellated spheres: many clusters, spread out.
+scene::Scene box_with_spheres() {
+    return box_with_spheres(
+        {Vec3(0.3f, 0.2f, 0.4f), Vec3(0.7f, 0.5f, 0.6f), Vec3(0.5f, 0.8f, 0.3f)}, 0.08f, 4);
 }
 
 // Whether point x lies in face `face` of the cube at p (its closed frustum) and, with a normal,
@@ -112,22 +120,9 @@ TEST_F(ShadowCullingTest, ImagesAreTheSameWithCullingOnAndOff) {
     }
 }
 
-}  // namespace
-}  // namespace mvpl::render
-
-namespace mvpl::render {
-namespace {
-
-// The Cornell box with one finely tessellated sphere (20480 triangles, above the proxy's
-// threshold) resting in it.
+// One sphere of 20480 triangles (above the proxy's threshold) near the floor.
 scene::Scene box_with_dense_sphere() {
-    scene::Scene s = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
-    const scene::Bounds b = s.bounds();
-    const Vec3 size = b.hi - b.lo;
-    const float radius = 0.2f * std::min({size.x, size.y, size.z});
-    s.meshes.push_back(test::make_icosphere(
-        b.lo + Vec3(0.5f, 0.0f, 0.5f) * size + Vec3(0.0f, radius, 0.0f), radius, 5, false, 0));
-    return s;
+    return box_with_spheres({Vec3(0.5f, 0.25f, 0.5f)}, 0.2f, 5);
 }
 
 TEST(ShadowProxy, SimplifiesLargeMeshesOnly) {
