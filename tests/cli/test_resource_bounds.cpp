@@ -75,8 +75,9 @@ PeakRss run_for(const std::vector<std::string>& args, double seconds) {
 TEST(ResourceBounds, PeakMemoryDoesNotGrowWithTheVplCount) {
     const std::string out = testing::TempDir() + "resource_bounds.exr";
     auto args = [&](const std::string& vpls) {
-        return std::vector<std::string>{"render",       kCbox, "--vpls",  vpls, "--res", "16x16",
-                                        "--shadow-res", "16",  "--quiet", "-o", out};
+        return std::vector<std::string>{"render",  kCbox,          "--vpls", vpls,      "--res",
+                                        "16x16",   "--shadow-res", "16",     "--batch", "256",
+                                        "--quiet", "-o",           out};
     };
     const PeakRss small = run_for(args("10000"), 300.0);
     ASSERT_TRUE(small.finished);
