@@ -90,3 +90,28 @@ TEST(Outputs, AFileSizeLimitLeavesNoPartialFileAndKeepsTheOldImage) {
 
 }  // namespace
 }  // namespace mvpl
+
+namespace mvpl {
+namespace {
+
+// Without -o the command picks the file's name itself, and says it (issue 12, item 4).
+TEST(Outputs, WithoutOutputTheCommandSaysWhichFileItWrote) {
+    const fs::path dir = fresh_dir("default_output");
+    const test::CommandResult r = test::run_mvpl_env("cd " + shell_quote(dir.string()) + " &&",
+                                                     "reference " + kCbox + " --spp 1 --res 8x8");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_EQ(r.out.rfind("reference: wrote reference.exr\n", 0), 0u) << r.out;
+    EXPECT_TRUE(fs::is_regular_file(dir / "reference.exr"));
+    // --quiet keeps stdout empty; an explicit -o is not announced.
+    const test::CommandResult quiet =
+        test::run_mvpl_env("cd " + shell_quote(dir.string()) + " &&",
+                           "reference " + kCbox + " --spp 1 --res 8x8 --quiet");
+    EXPECT_TRUE(quiet.out.empty()) << quiet.out;
+    const test::CommandResult named = test::run_mvpl(
+        "reference " + kCbox + " --spp 1 --res 8x8 -o " + shell_quote((dir / "n.exr").string()));
+    EXPECT_EQ(named.out.find("wrote"), std::string::npos) << named.out;
+    fs::remove_all(dir);
+}
+
+}  // namespace
+}  // namespace mvpl

@@ -2,6 +2,7 @@
 
 #include <unistd.h>
 
+#include <cstdio>
 #include <filesystem>
 
 #include "engine/core/error.h"
@@ -28,6 +29,18 @@ void check_outputs(const std::vector<std::string>& outputs) {
             throw InputError(out,
                              "cannot be written: the folder " + dir.string() + " is not writable");
     }
+}
+
+std::vector<std::string> outputs_or(const std::vector<std::string>& outputs,
+                                    const std::string& fallback, bool& defaulted) {
+    defaulted = outputs.empty();
+    return defaulted ? std::vector<std::string>{fallback} : outputs;
+}
+
+void say_written(const std::string& command, const std::vector<std::string>& outputs,
+                 bool defaulted, bool quiet) {
+    if (defaulted && !quiet && !outputs.empty())
+        std::printf("%s: wrote %s\n", command.c_str(), outputs.front().c_str());
 }
 
 }  // namespace mvpl::cli

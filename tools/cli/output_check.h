@@ -9,4 +9,13 @@ namespace mvpl::cli {
 // (InputError naming the path).
 void check_outputs(const std::vector<std::string>& outputs);
 
+// Without -o a command writes `fallback`: returns `outputs`, or {fallback} when it is empty.
+// `defaulted` tells the command to say where the image went once it is written
+// (say_written), so that a user who gave no -o learns the file's name.
+std::vector<std::string> outputs_or(const std::vector<std::string>& outputs,
+                                    const std::string& fallback, bool& defaulted);
+// "COMMAND: wrote PATH" on stdout when the output was defaulted and the command is not quiet.
+void say_written(const std::string& command, const std::vector<std::string>& outputs,
+                 bool defaulted, bool quiet);
+
 }  // namespace mvpl::cli

@@ -39,7 +39,8 @@ int run_reference(const Args& args) {
     if (!parser.parse(args)) return 0;
     if (options.spp < 1) throw UsageError("reference: --spp must be at least 1");
     if (threads < 0) throw UsageError("reference: --threads must not be negative");
-    if (outputs.empty()) outputs.push_back("reference.exr");
+    bool defaulted = false;
+    outputs = outputs_or(outputs, "reference.exr", defaulted);
     check_outputs(outputs);
     std::unique_ptr<tbb::global_control> limit;
     if (threads > 0) {
@@ -55,6 +56,7 @@ int run_reference(const Args& args) {
     const Image image = tracer.render(options, &stats);
     session.warn_if_black(image);
     write_images(image, outputs, exposure);
+    say_written("reference", outputs, defaulted, options.quiet);
 
     if (stats.nonfinite_samples > 0) {
         std::fprintf(stderr, "mvpl: warning: %llu non-finite path samples were discarded\n",

@@ -129,7 +129,8 @@ int run_render(const Args& args) {
     add_options(parser, a);
     if (!parser.parse(args)) return 0;
     check_device(a);
-    if (a.outputs.empty()) a.outputs.push_back("render.exr");
+    bool defaulted = false;
+    a.outputs = outputs_or(a.outputs, "render.exr", defaulted);
     check_outputs(a.outputs);
 
     Timer total;
@@ -155,6 +156,7 @@ int run_render(const Args& args) {
     }
     session.warn_if_black(result.image);
     write_images(result.image, a.outputs, a.exposure);
+    say_written("render", a.outputs, defaulted, a.quiet);
     if (!a.quiet) std::fputs(summary_line(job, result, total.seconds()).c_str(), stdout);
     return 0;
 }

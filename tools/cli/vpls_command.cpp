@@ -127,7 +127,8 @@ int run_vpls(const Args& args) {
         throw UsageError("vpls: --view must be top or camera");
     if (count < 1 || count > (uint64_t(1) << 24))
         throw UsageError("vpls: --vpls must be in 1..2^24");
-    if (outputs.empty()) outputs.push_back("vpls.png");
+    bool defaulted = false;
+    outputs = outputs_or(outputs, "vpls.png", defaulted);
     check_outputs(outputs);
 
     const session::SceneSession session(scene_path, camera.choice);
@@ -168,6 +169,7 @@ int run_vpls(const Args& args) {
         ++drawn;
     }
     write_images(image, outputs);
+    say_written("vpls", outputs, defaulted, quiet);
     if (!quiet) {
         const std::string stats = stream->statistics();
         std::printf("vpls: %zu VPLs (%zu drawn) from %llu %s%s%s\n", vpls.size(), drawn,
