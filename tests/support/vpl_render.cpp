@@ -28,6 +28,7 @@ Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::
     o.batch = uint32_t(settings.batch);
     o.clamp = settings.clamp;
     o.shadows = settings.shadows;
+    o.jitter = settings.jitter;
     return renderer.render(vpls, o);
 }
 
@@ -37,6 +38,7 @@ Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
     reference::GatherOptions o;
     o.width = o.height = settings.res;
     o.clamp = settings.clamp;
+    o.subpixel = {settings.jitter, uint64_t(settings.batch)};
     return reference::gather_vpls(scene, accel, vpls, o);
 }
 

@@ -24,6 +24,7 @@ struct VplRenderSettings {
     float clamp = 0.05f;   // fraction of the scene diagonal; 0: off
     bool shadows = true;
     int batch = 32;
+    bool jitter = true;  // a sub-pixel position per batch, the same in both renderers
 };
 
 // The GPU renderer's image of `vpls` seen by the scene camera.

@@ -37,6 +37,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.height = uint32_t(c.height);
     ro.shadow_resolution = uint32_t(c.shadow_resolution);
     ro.batch = uint32_t(c.batch);
+    ro.jitter = c.jitter;
     ro.clamp = clamp;
     ro.shadows = shadows;
     return ro;
@@ -57,6 +58,7 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.shadow_ms = t.shadow_ms;
     s.shading_ms = t.shading_ms;
     s.batches = t.batches;
+    s.g_buffers = t.g_buffers;
     return s;
 }
 
@@ -105,6 +107,7 @@ int run_bench(const Args& args) {
     if (!parser.parse(args)) return 0;
     config.shadow_resolution = renderer_args.shadow_res;
     config.batch = renderer_args.batch;
+    config.jitter = !renderer_args.no_jitter;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     if (paths < 1 || paths > (uint64_t(1) << 24))

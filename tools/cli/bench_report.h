@@ -13,6 +13,7 @@ struct BenchConfig {
     int height = 512;
     int shadow_resolution = 256;
     int batch = 32;
+    bool jitter = true;  // a G-buffer per batch (false with --no-jitter: one per render)
 };
 
 // One measured render of the VPLs with one configuration. Times in seconds unless named _ms.
@@ -22,6 +23,7 @@ struct RenderSample {
     double shading_ms = 0.0;
     double wall_s = 0.0;  // host time of begin + accumulate + resolve (uploads, read-back)
     uint32_t batches = 0;
+    uint32_t g_buffers = 0;  // one per sub-pixel position
 };
 
 // The medians over the repeats of one configuration, and the rates derived from those medians

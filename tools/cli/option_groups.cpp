@@ -20,6 +20,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_resolution = uint32_t(shadow_res);
     o.batch = uint32_t(batch);
     o.clamp = clamp;
+    o.jitter = !no_jitter;
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -27,6 +28,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_int("--batch", &args.batch, "VPLs per shadow/shading batch");
     parser.add_float("--clamp", &args.clamp,
                      "clamping distance as a fraction of the scene diagonal (0 = off)");
+    parser.add_flag("--no-jitter", &args.no_jitter,
+                    "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     // The renderer's limits: 4096² faces × 6 × a batch must still fit in memory.
     parser.add_check([&parser, &args] {
         if (args.shadow_res < 4 || args.shadow_res > 4096)

@@ -12,14 +12,15 @@
 
 namespace mvpl::cli {
 
-// --shadow-res, --batch, --clamp: the GPU renderer's (render::RenderOptions), as ints for the
-// parser.
+// --shadow-res, --batch, --clamp, --no-jitter: the GPU renderer's (render::RenderOptions), as
+// ints for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
     int batch = int(render::RenderOptions{}.batch);
     float clamp = render::RenderOptions{}.clamp;
+    bool no_jitter = !render::RenderOptions{}.jitter;
 
-    // Copies the three into `o`.
+    // Copies the four into `o`.
     void apply(render::RenderOptions& o) const;
 };
 void add_renderer_options(ArgParser& parser, RendererArgs& args);
