@@ -43,3 +43,17 @@ Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
 }
 
 }  // namespace mvpl::test
+
+namespace mvpl::test {
+
+Image emission_at_positions(const scene::Scene& scene, size_t vpl_count,
+                            const VplRenderSettings& settings) {
+    const trace::Accel accel(scene);
+    reference::GatherOptions o;
+    o.width = o.height = settings.res;
+    o.subpixel = {settings.jitter, uint64_t(settings.batch)};
+    o.first_vpl = vpl_count;  // no VPL of its own: the emission over the positions of vpl_count
+    return reference::gather_vpls(scene, accel, {}, o);
+}
+
+}  // namespace mvpl::test
