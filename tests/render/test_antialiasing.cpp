@@ -99,9 +99,9 @@ double relative_to(const Rgb& got, const Rgb& want) {
     return worst;
 }
 
-// The rasteriser snaps vertices to 1/256 pixel (subPixelPrecisionBits 8 on lavapipe), so a
-// position that close to the edge may fall on the other side than the oracle's exact ray: each
-// such position moves a pixel by R / positions.
+// The rasteriser snaps vertices to a fixed-point sub-pixel grid, so a position that close to the
+// edge may fall on the other side than the oracle's exact ray: each such position moves a pixel
+// by R / positions (measured on lavapipe: one position of 256, 0.0039 R).
 void expect_gpu_matches_oracle(const Image& gpu, const Image& oracle, const Rgb& radiance,
                                double allowed) {
     double worst = 0.0;
