@@ -16,17 +16,49 @@ namespace mvpl::reference {
 
 namespace {
 
-Rgb shade(const scene::Scene& scene, const trace::Accel& accel,
-          const std::vector<light::PreparedVpl>& vpls, double scale, const trace::Ray& camera_ray,
-          float d_min2, bool show_emitters) {
-    Rgb L(0.0f);
-    const std::optional<light::Receiver> receiver =
-        light::make_receiver(scene, accel, camera_ray, show_emitters ? &L : nullptr);
-    if (!receiver) return L;
+// What every pixel shares.
+struct Gather {
+    const scene::Scene& scene;
+    const trace::Accel& accel;
+    const std::vector<light::PreparedVpl>& vpls;
+    const GatherOptions& options;
+    double scale;
+    float d_min2;
+    bool show_emitters;
+};
+
+// The pixel (x, y): per sub-pixel position a camera ray, the emitted radiance if the position is
+// one the emission is averaged over, and the contributions of the list's VPLs at that position.
+Rgb shade_pixel(const Gather& g, int x, int y) {
+    const SubpixelSchedule& schedule = g.options.subpixel;
+    const uint64_t first = g.options.first_vpl;
+    const size_t n = g.vpls.size();
+    const uint64_t emission_positions = schedule.positions_after(first + n);
+    const uint64_t lo = g.show_emitters || n == 0 ? 0 : schedule.position_of(first);
+    uint64_t hi = g.show_emitters ? emission_positions : 0;
+    if (n > 0) hi = std::max(hi, schedule.position_of(first + n - 1) + 1);
+    Rgb emitted(0.0f);
     DVec3 sum(0.0);
-    for (const light::PreparedVpl& pv : vpls)
-        sum += DVec3(light::vpl_contribution(accel, *receiver, pv, d_min2));
-    return L + Rgb(sum * scale);
+    size_t i = 0;  // the first VPL not yet shaded; its position is ≥ p
+    for (uint64_t p = lo; p < hi; ++p) {
+        size_t end = i;
+        while (end < n && schedule.position_of(first + end) == p)
+            ++end;
+        const bool emission = g.show_emitters && p < emission_positions;
+        if (end == i && !emission) continue;
+        const Vec2 offset = schedule.position(p);
+        const Vec2 film(float(x) + offset.x, float(y) + offset.y);
+        const scene::CameraRay cr =
+            scene::generate_camera_ray(g.scene.camera, g.options.width, g.options.height, film);
+        const std::optional<light::Receiver> receiver = light::make_receiver(
+            g.scene, g.accel, trace::Ray{cr.origin, cr.direction}, emission ? &emitted : nullptr);
+        if (receiver) {
+            for (size_t k = i; k < end; ++k)
+                sum += DVec3(light::vpl_contribution(g.accel, *receiver, g.vpls[k], g.d_min2));
+        }
+        i = end;
+    }
+    return emitted / float(emission_positions) + Rgb(sum * g.scale);
 }
 
 }  // namespace
@@ -40,19 +72,19 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
     for (const light::Vpl& v : vpls.vpls)
         prepared.push_back(light::prepare_vpl(v));
     const float d_min = options.clamp * scene.bounds().diagonal();
-    const bool show_emitters = options.max_depth < 0 || options.max_depth >= 1;
+    const Gather g{scene,
+                   accel,
+                   prepared,
+                   options,
+                   vpls.scale,
+                   d_min * d_min,
+                   options.max_depth < 0 || options.max_depth >= 1};
     Image image(options.width, options.height);
     Progress progress("vpl gather", options.height, options.quiet);
     parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {
         for (int64_t y = y0; y < y1; ++y) {
-            for (int x = 0; x < options.width; ++x) {
-                const Vec2 film(float(x) + 0.5f, float(y) + 0.5f);
-                const scene::CameraRay cr =
-                    scene::generate_camera_ray(scene.camera, options.width, options.height, film);
-                image.at(x, int(y)) =
-                    shade(scene, accel, prepared, vpls.scale, trace::Ray{cr.origin, cr.direction},
-                          d_min * d_min, show_emitters);
-            }
+            for (int x = 0; x < options.width; ++x)
+                image.at(x, int(y)) = shade_pixel(g, x, int(y));
             progress.advance();
         }
     });

@@ -4,11 +4,15 @@
 // formulas of vpl.h) and exact Embree visibility, so that a difference from the GPU image is a
 // shadow-map or shader error, never a sampler error.
 //
-// One camera ray per pixel through the pixel centre (the G-buffer rasterises pixel centres). At
-// its first hit: the emitted radiance seen directly (front face only, when max_depth ≥ 1 or
-// unlimited) plus the VplSet's scale times the sum over VPLs of their contributions, with
+// One camera ray per pixel and sub-pixel position, the positions the GPU renderer's G-buffers
+// take for the same VPLs (engine/core/subpixel.h, render::VplRenderer). At its first hit: the
+// emitted radiance seen directly (front face only, when max_depth ≥ 1 or unlimited) plus the
+// VplSet's scale times the sum over the VPLs at that position of their contributions, with
 // d_min = clamp · (diagonal of the scene's bounding box); clamp 0 turns clamping off.
+#include <cstdint>
 #include <vector>
+
+#include "engine/core/subpixel.h"
 
 #include "engine/core/image.h"
 #include "engine/light/vpl.h"
@@ -25,6 +29,13 @@ struct GatherOptions {
     // Which VPLs exist for that depth is the sampler's business (LightTracer).
     int max_depth = 6;
     bool quiet = true;
+    // VPL i of the list is shaded at sub-pixel position subpixel.position_of(first_vpl + i), as
+    // VplRenderer shades it after first_vpl others since begin() (a chunk of a progressive
+    // render); the emitted radiance seen directly is the mean over the positions 0 …
+    // subpixel.positions_after(first_vpl + list size) − 1, the G-buffers the renderer has drawn by
+    // then. The default schedule is RenderOptions' (batch 32, jitter on).
+    SubpixelSchedule subpixel;
+    uint64_t first_vpl = 0;
 };
 
 struct GatherStats {

@@ -55,7 +55,8 @@ std::unique_ptr<gpu::GraphicsPipeline> make_pipeline(gpu::Context& context,
 
 }  // namespace
 
-Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_t height) {
+Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_t height,
+                            Vec2 subpixel) {
     const float tan_half = std::tan(0.5f * camera.yfov);
     const float aspect = float(width) / float(height);
     const float znear = camera.znear > 0.0f ? camera.znear : 1e-4f;
@@ -66,7 +67,13 @@ Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_
     projection[1][1] = -1.0f / tan_half;
     projection[2][3] = -1.0f;
     projection[3][2] = znear;
-    return projection * glm::inverse(camera.camera_to_world);
+    // The film point x + s must land on the pixel centre x + ½: a shift by (½ − s) pixels, 2/size
+    // in NDC per pixel, applied in clip space as x' = x + shift · w (Vulkan's y runs down the
+    // image as the film's does).
+    Mat4 shift(1.0f);
+    shift[3][0] = 2.0f * (0.5f - subpixel.x) / float(width);
+    shift[3][1] = 2.0f * (0.5f - subpixel.y) / float(height);
+    return shift * projection * glm::inverse(camera.camera_to_world);
 }
 
 GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, uint32_t width,
@@ -104,14 +111,14 @@ GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, u
 
 GBufferPass::~GBufferPass() = default;
 
-void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera) {
+void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec2 subpixel) {
     std::array<gpu::ColorTarget, kGBufferLayerCount> colors;
     for (uint32_t i = 0; i < kGBufferLayerCount; ++i)
         colors[i] = {&m_image, i, {0.0f, 0.0f, 0.0f, 0.0f}};
     const gpu::DepthTarget depth{&m_depth, 0, 0.0f};
     gpu::begin_rendering(cmd, colors, &depth);
     GBufferPush push{};
-    const Mat4 view_proj = camera_view_projection(camera, width(), height());
+    const Mat4 view_proj = camera_view_projection(camera, width(), height(), subpixel);
     std::copy_n(&view_proj[0][0], 16, push.view_proj);
     for (const GeometryDraw& draw : m_geometry->draws()) {
         const GeometryMaterial& m = m_geometry->materials()[draw.material];

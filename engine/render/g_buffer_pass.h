@@ -2,7 +2,8 @@
 // Pass 1 (DESIGN.md, "GPU passes"): rasterises every scene triangle once per view with the scene
 // camera into an RGBA32F 2D array, one layer per attribute, which the shading pass reads.
 // Pixel (x, y) holds the first surface along scene::generate_camera_ray(camera, w, h,
-// (x + 0.5, y + 0.5)), row 0 at the top. Vulkan-free to include.
+// (x + s.x, y + s.y)), row 0 at the top, for the sub-pixel position s ∈ [0, 1)² of the recording
+// (the pixel centre by default; engine/core/subpixel.h). Vulkan-free to include.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -54,8 +55,11 @@ struct GBufferTexel {
 };
 
 // The camera's reversed infinite perspective in Vulkan clip space: x right, y down (row 0 at the
-// top), z_ndc = znear / view depth. aspect = width / height, as generate_camera_ray.
-Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_t height);
+// top), z_ndc = znear / view depth. aspect = width / height, as generate_camera_ray. The image is
+// shifted so that the rasteriser's sample at a pixel's centre sees the film point at `subpixel`
+// inside that pixel.
+Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_t height,
+                            Vec2 subpixel = Vec2(0.5f));
 
 class GBufferPass {
 public:
@@ -68,7 +72,7 @@ public:
     GBufferPass(const GBufferPass&) = delete;
     GBufferPass& operator=(const GBufferPass&) = delete;
 
-    void record(gpu::CommandList& cmd, const scene::Camera& camera);
+    void record(gpu::CommandList& cmd, const scene::Camera& camera, Vec2 subpixel = Vec2(0.5f));
 
     const gpu::Image& image() const { return m_image; }
     uint32_t width() const { return m_image.width(); }

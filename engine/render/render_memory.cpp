@@ -27,17 +27,18 @@ MemoryEstimate estimate_memory(const RenderOptions& o) {
     const uint64_t pixels = uint64_t(o.width) * o.height;
     const uint64_t texels = uint64_t(o.shadow_resolution) * o.shadow_resolution;
     // The passes' images (g_buffer_pass.cpp, shadow_pass.cpp, shading_pass.cpp): the G-buffer
-    // layers and their depth, the accumulation, one cube of six faces per VPL of a batch with one
-    // depth cube, and the directional maps (at least two layers) with one depth face.
+    // layers and their depth, the accumulation and the emission sum (emission_sum.cpp), one cube
+    // of six faces per VPL of a batch with one depth cube, and the directional maps (at least two
+    // layers) with one depth face.
     const uint64_t g_buffer = pixels * kRgba32f * kGBufferLayerCount;
     const uint64_t cubes = texels * kR32f * 6 * o.batch;
     const uint64_t ortho = texels * kR32f * std::max(o.batch, 2u);
     MemoryEstimate e;
-    e.device_bytes = g_buffer + pixels * kD32f + pixels * kRgba32f + cubes + texels * kD32f * 6 +
-                     ortho + texels * kD32f;
+    e.device_bytes = g_buffer + pixels * kD32f + 2 * pixels * kRgba32f + cubes +
+                     texels * kD32f * 6 + ortho + texels * kD32f;
     e.largest_image = std::max({g_buffer, cubes, ortho});
-    // The accumulation read back as RGBA32F, then the linear RGB image.
-    e.host_bytes = pixels * (kRgba32f + 12);
+    // The accumulation and the emission sum read back as RGBA32F, then the linear RGB image.
+    e.host_bytes = pixels * (2 * kRgba32f + 12);
     return e;
 }
 

@@ -10,6 +10,7 @@
 #include "engine/gpu/context.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
+#include "engine/render/emission_sum.h"
 #include "engine/render/g_buffer_pass.h"
 #include "engine/render/render_memory.h"
 #include "engine/render/scene_geometry.h"
@@ -36,7 +37,39 @@ std::unique_ptr<ShadowClusters> make_proxy(const scene::Scene& s) {
     return nullptr;
 }
 
+// A shadow/shading batch: `count` VPLs from `first` of an accumulate() call, all at one sub-pixel
+// position.
+struct Slice {
+    size_t first = 0;
+    size_t count = 0;
+    uint64_t position = 0;
+};
+
+// The batches of `count` VPLs that follow `shaded` others since begin(): at most options.batch
+// each and, with jitter, cut where the sub-pixel position changes, so that every VPL is shaded
+// at the position of its index since begin(), however the calls split the VPLs.
+std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptions& options) {
+    const SubpixelSchedule schedule = subpixel_schedule(options);
+    std::vector<Slice> slices;
+    for (size_t first = 0; first < count;) {
+        const uint64_t position = schedule.position_of(shaded + first);
+        size_t end = std::min(count, first + options.batch);
+        if (schedule.jitter) {
+            end = size_t(
+                std::min<uint64_t>(end, (position + 1) * schedule.vpls_per_position - shaded));
+        }
+        slices.push_back({first, end - first, position});
+        first = end;
+    }
+    return slices;
+}
+
 }  // namespace
+
+SubpixelSchedule subpixel_schedule(const RenderOptions& options) {
+    return {options.jitter,
+            uint64_t(options.batch) * std::max<uint64_t>(options.batches_per_position, 1)};
+}
 
 struct VplRenderer::Impl {
     Impl(gpu::Context& c, const scene::Scene& s)
@@ -49,6 +82,7 @@ struct VplRenderer::Impl {
     std::unique_ptr<ShadowClusters> proxy;  // null when no mesh is large enough for one
     // Passes are kept between renders with the same sizes (pipelines compile in ~100 ms).
     std::unique_ptr<GBufferPass> g_buffer;
+    std::unique_ptr<EmissionSum> emission;
     std::unique_ptr<ShadowPass> shadow;
     std::unique_ptr<ShadingPass> shading;
     RenderOptions built_for = unbuilt();
@@ -57,6 +91,20 @@ struct VplRenderer::Impl {
     scene::Camera view_camera;
     RenderTimings timings;
     bool begun = false;
+    uint64_t shaded = 0;    // VPLs accumulated since begin()
+    uint64_t position = 0;  // the sub-pixel position of the G-buffer drawn last
+
+    // Draws the G-buffer at sub-pixel `index` and adds its emission to the sum.
+    void record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index) {
+        const uint32_t scope = timer.begin(cmd, "g-buffer");
+        g_buffer->record(cmd, view_camera, subpixel_schedule(options).position(index));
+        cmd.barrier();
+        emission->record_add(cmd, g_buffer->image());
+        timer.end(cmd, scope);
+        cmd.barrier();
+        position = index;
+        ++timings.g_buffers;
+    }
 
     void add_timing(std::chrono::steady_clock::time_point start, double shadow_ms,
                     double shading_ms) {
@@ -81,6 +129,7 @@ struct VplRenderer::Impl {
         if (!g_buffer || o.width != built_for.width || o.height != built_for.height) {
             g_buffer = std::make_unique<GBufferPass>(*context, geometry, o.width, o.height, nullptr,
                                                      nullptr, cache);
+            emission = std::make_unique<EmissionSum>(*context, o.width, o.height);
             shading.reset();
         }
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
@@ -122,8 +171,10 @@ Image VplRenderer::render(const light::VplSet& vpls, const RenderOptions& option
 
 void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& options) {
     if (options.width == 0 || options.height == 0 || options.batch == 0 ||
-        options.shadow_resolution == 0) {
-        throw gpu::GpuError("VplRenderer::begin: zero width, height, batch or shadow resolution");
+        options.shadow_resolution == 0 || options.batches_per_position == 0) {
+        throw gpu::GpuError(
+            "VplRenderer::begin: zero width, height, batch, shadow resolution or batches per "
+            "position");
     }
     const auto start = std::chrono::steady_clock::now();
     Impl& m = *m_impl;
@@ -131,13 +182,12 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     m.options = options;
     m.view_camera = camera;
     m.timings = RenderTimings{};
+    m.shaded = 0;
     gpu::GpuTimer timer(*m.context, 1);
     m.context->submit_and_wait([&](gpu::CommandList& cmd) {
-        const uint32_t scope = timer.begin(cmd, "g-buffer");
-        m.g_buffer->record(cmd, camera);
         m.shading->record_clear(cmd);
-        timer.end(cmd, scope);
-        cmd.barrier();
+        m.emission->record_clear(cmd);
+        m.record_g_buffer(cmd, timer, 0);
     });
     m.timings.g_buffer_ms = timer.milliseconds("g-buffer");
     m.begun = true;
@@ -150,23 +200,23 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
     if (vpls.empty()) return;
     const auto start = std::chrono::steady_clock::now();
     const RenderOptions& options = m.options;
-    const uint32_t batches = uint32_t((vpls.size() + options.batch - 1) / options.batch);
-    gpu::GpuTimer timer(*m.context, 2 * batches);
+    const std::vector<Slice> slices = plan_batches(vpls.size(), m.shaded, options);
+    gpu::GpuTimer timer(*m.context, 3 * uint32_t(slices.size()));
 
     ShadingBatch batch;
     batch.camera_position = m.view_camera.position();
     batch.d_min = options.clamp * m.geometry.bounds().diagonal();
     batch.shadows = options.shadows ? &m.shadow->cubes() : nullptr;
     batch.ortho_shadows = options.shadows ? &m.shadow->ortho_maps() : nullptr;
-    // Emitted radiance is added by resolve(), unscaled, so the accumulation holds VPLs only.
+    // Emitted radiance is summed per G-buffer (EmissionSum) and added by resolve(), unscaled, so
+    // the accumulation holds VPLs only.
     batch.add_emission = false;
     const uint64_t drawn_before = m.shadow->triangles_drawn();
-    for (uint32_t b = 0; b < batches; ++b) {
-        const size_t first = size_t(b) * options.batch;
-        const std::span<const light::Vpl> slice =
-            vpls.subspan(first, std::min<size_t>(options.batch, vpls.size() - first));
+    for (const Slice& s : slices) {
+        const std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
         m.shading->upload(slice, m.geometry.bounds());
         m.context->submit_and_wait([&](gpu::CommandList& cmd) {
+            if (s.position != m.position) m.record_g_buffer(cmd, timer, s.position);
             if (options.shadows) {
                 const uint32_t scope = timer.begin(cmd, "shadow");
                 m.shadow->record(cmd, slice);
@@ -177,9 +227,11 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
             m.shading->record(cmd, m.g_buffer->image(), batch);
             timer.end(cmd, scope);
         });
+        m.shaded += s.count;
         if (options.on_batch) options.on_batch(slice.size());
     }
-    m.timings.batches += batches;
+    m.timings.batches += uint32_t(slices.size());
+    m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
     m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
 }
@@ -189,14 +241,17 @@ Image VplRenderer::resolve(double scale) {
     if (!m.begun) throw gpu::GpuError("VplRenderer::resolve before begin");
     const auto start = std::chrono::steady_clock::now();
     const std::vector<float> rgba = m.shading->accumulation().download_as<float>();
-    const std::vector<float> emission = m.g_buffer->image().download_as<float>(kGBufferEmission, 1);
+    const std::vector<float> emission = m.emission->image().download_as<float>();
     Image image(int(m.options.width), int(m.options.height));
     for (size_t i = 0; i < image.pixels().size(); ++i) {
         const float* a = &rgba[4 * i];
         const float* e = &emission[4 * i];
+        // e[3] counts the G-buffers summed (one at least after begin()).
+        const double count = std::max(double(e[3]), 1.0);
         // In double, so that a huge 1/N or a tiny one does not round the sum twice.
         image.pixels()[i] =
-            Rgb(float(scale * a[0] + e[0]), float(scale * a[1] + e[1]), float(scale * a[2] + e[2]));
+            Rgb(float(scale * a[0] + e[0] / count), float(scale * a[1] + e[1] / count),
+                float(scale * a[2] + e[2] / count));
     }
     m.add_timing(start, 0.0, 0.0);
     require_finite(image, "VplRenderer::resolve");
@@ -210,6 +265,11 @@ const RenderTimings& VplRenderer::timings() const {
 const gpu::Image& VplRenderer::accumulation() const {
     if (!m_impl->shading) throw gpu::GpuError("VplRenderer::accumulation before begin");
     return m_impl->shading->accumulation();
+}
+
+const gpu::Image& VplRenderer::emission() const {
+    if (!m_impl->emission) throw gpu::GpuError("VplRenderer::emission before begin");
+    return m_impl->emission->image();
 }
 
 const gpu::Image& VplRenderer::g_buffer() const {

@@ -4,6 +4,9 @@
 // not divided by the number of light paths (vpl.h): render() takes a VplSet and applies its scale
 // in the resolve; the progressive interface (begin/accumulate/resolve) takes the scale at the end
 // (sampler/vpl_stream.h), for time budgets and the interactive preview.
+// Anti-aliasing: each batch is shaded against a G-buffer drawn at its own sub-pixel position
+// (engine/core/subpixel.h), and the emitted radiance seen directly is averaged over the
+// G-buffers drawn, so the image converges to the box-filtered pixel.
 // Tonemapping happens when a PNG is written. Vulkan-free to include (pimpl).
 #include <cstdint>
 #include <functional>
@@ -12,6 +15,7 @@
 #include <vector>
 
 #include "engine/core/image.h"
+#include "engine/core/subpixel.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 
@@ -36,6 +40,12 @@ struct RenderOptions {
     // Surface VPLs draw the simplified shadow proxy of the scene's large meshes
     // (shadow_clusters.h); false: every VPL draws the full geometry.
     bool shadow_proxy = true;
+    // Sub-pixel positions: VPL i since begin() is shaded at position i / (batch ·
+    // batches_per_position) of the sequence, its G-buffer drawn when that position comes up, so
+    // that the image does not depend on how the VPLs were split into accumulate() calls. false:
+    // one G-buffer at the pixel centres for the whole image (no anti-aliasing).
+    bool jitter = true;
+    uint32_t batches_per_position = 1;
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
     bool surface_vpls = true;
@@ -45,15 +55,20 @@ struct RenderOptions {
     std::function<void(size_t)> on_batch;
 };
 
+// Which VPLs share a sub-pixel position under these options (the CPU oracle's GatherOptions take
+// the same schedule).
+SubpixelSchedule subpixel_schedule(const RenderOptions& options);
+
 // GPU milliseconds per pass (GpuTimer), summed over batches.
 struct RenderTimings {
-    double g_buffer_ms = 0.0;
+    double g_buffer_ms = 0.0;  // the G-buffers and the emission sum
     double shadow_ms = 0.0;
     double shading_ms = 0.0;
     double total_ms = 0.0;  // the three above
     double wall_ms = 0.0;   // host time of render(), uploads and read-back included
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // triangles drawn into cube faces
+    uint32_t g_buffers = 0;         // G-buffers drawn: one per sub-pixel position
 };
 
 class VplRenderer {
@@ -65,14 +80,16 @@ public:
     VplRenderer& operator=(const VplRenderer&) = delete;
 
     // Linear radiance seen by the scene camera, row 0 at the top: vpls.scale · Σ contributions
-    // plus the emitted radiance of surfaces seen directly (once, unscaled).
+    // plus the emitted radiance of surfaces seen directly (averaged over the G-buffers, unscaled).
     Image render(const light::VplSet& vpls, const RenderOptions& options,
                  RenderTimings* timings = nullptr);
 
-    // Progressive rendering. begin() renders the G-buffer seen by `camera` and clears the
-    // accumulation; accumulate() shades VPLs into it, options.batch per shadow/shading batch (any
-    // number of calls, any number of VPLs each); resolve(scale) reads back
-    // scale · Σ contributions + the emitted radiance of surfaces seen directly (not scaled).
+    // Progressive rendering. begin() renders the first G-buffer seen by `camera` and clears the
+    // accumulation; accumulate() shades VPLs into it, at most options.batch per shadow/shading
+    // batch and a new G-buffer per sub-pixel position (any number of calls, any number of VPLs
+    // each: with jitter, batches are cut at the positions' boundaries, so the image is that of
+    // one call); resolve(scale) reads back scale · Σ contributions + the mean emitted radiance of
+    // surfaces seen directly over the G-buffers drawn (not scaled).
     // Throws GpuError if accumulate() or resolve() come before begin(), and NonFiniteError
     // (engine/core/finite_check.h) naming the first pixel if the image holds a NaN or an
     // infinity: it is never returned silently.
@@ -83,9 +100,11 @@ public:
     const RenderTimings& timings() const;
 
     // For presenting on the GPU (mvpl preview), valid after begin(): the RGBA32F accumulation of
-    // Σ VPL contributions (no emission, unscaled) and the G-buffer array (GBufferLayer), whose
-    // layer kGBufferEmission holds the emitted radiance.
+    // Σ VPL contributions (no emission, unscaled), the RGBA32F emission sum (rgb Σ emitted
+    // radiance over the G-buffers drawn, a their count: show rgb / a) and the G-buffer array
+    // (GBufferLayer) of the latest sub-pixel position.
     const gpu::Image& accumulation() const;
+    const gpu::Image& emission() const;
     const gpu::Image& g_buffer() const;
     gpu::Context& context() const;
 

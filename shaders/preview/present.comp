@@ -1,13 +1,14 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// mvpl preview: the running VPL estimate scale · Σ contributions + emitted radiance, exposed and
+// mvpl preview: the running VPL estimate scale · Σ contributions + the emitted radiance averaged
+// over the G-buffers drawn so far (engine/render/emission_sum.h: rgb / a), exposed and
 // sRGB-encoded exactly as engine/core/image.cpp writes a PNG (linear_to_srgb, then
 // round(255 · v)), into the 8-bit display image that is blitted to the window; the HUD's text
 // (an RGBA8 image with coverage in alpha, at hud_origin) is blended on top when enabled.
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0, rgba32f) readonly uniform image2D accumulation;
-layout(set = 0, binding = 1, rgba32f) readonly uniform image2DArray g_buffer;
+layout(set = 0, binding = 1, rgba32f) readonly uniform image2D emission_sum;
 layout(set = 0, binding = 2, rgba8) writeonly uniform image2D display;
 layout(set = 0, binding = 3, rgba8) readonly uniform image2D hud;
 
@@ -28,7 +29,8 @@ void main() {
     const ivec2 q = ivec2((vec2(p) + 0.5) * vec2(params.source_width, params.source_height) /
                           vec2(params.width, params.height));
     const vec3 sum = imageLoad(accumulation, q).rgb;
-    const vec3 emitted = imageLoad(g_buffer, ivec3(q, int(params.emission_layer))).rgb;
+    const vec4 emission = imageLoad(emission_sum, q);
+    const vec3 emitted = emission.rgb / max(emission.a, 1.0);
     const vec3 radiance = params.scale * sum + emitted;
     vec3 encoded;
     for (int c = 0; c < 3; ++c) {

@@ -18,13 +18,12 @@ struct PresentPush {
     int hud_y;
     uint hud_width;  // 0: no HUD
     uint hud_height;
-    uint emission_layer;  // kGBufferEmission
-    uint linear_target;   // 1: the window's format encodes sRGB itself
+    uint linear_target;  // 1: the window's format encodes sRGB itself
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(int) == 4);
-static_assert(sizeof(PresentPush) == 48);  // scalars only: std430 adds no padding
+static_assert(sizeof(PresentPush) == 44);  // scalars only: std430 adds no padding
 #endif
 
 MVPL_SHARED_END

@@ -22,6 +22,13 @@ struct MaterialPush {
     uvec2 size;
 };
 
+// The sum of the emitted radiance seen directly over a progressive render's G-buffers
+// (engine/render/emission_sum.cpp; shaders/render/emission_sum.comp).
+struct EmissionPush {
+    uvec2 size;
+    uint layer;  // kGBufferEmission
+};
+
 // A shadow cube face (engine/render/shadow_pass.cpp; shaders/render/shadow.vert).
 struct ShadowPush {
     vec4 vpl_near;  // xyz: the VPL's position; w: the near distance (geometry closer is ignored)
@@ -53,6 +60,8 @@ const uint kShadows = 2u;      // ShadingPush::flags: test visibility in the sha
 MVPL_STD430_MEMBER(GBufferPush, view_proj);
 static_assert(sizeof(GBufferPush) == 72);
 MVPL_STD430_MEMBER(MaterialPush, size);
+MVPL_STD430_MEMBER(EmissionPush, size);
+static_assert(sizeof(EmissionPush) == 12);
 MVPL_STD430_MEMBER(ShadowPush, vpl_near);
 MVPL_STD430_MEMBER(ShadowPush, face);
 static_assert(sizeof(ShadowPush) == 32);

@@ -35,9 +35,10 @@ layout(std430, binding = 3) buffer B3 { ShadowPush shadow; };
 layout(std430, binding = 4) buffer B4 { OrthoPush ortho; };
 layout(std430, binding = 5) buffer B5 { ShadingPush shading; };
 layout(std430, binding = 6) buffer B6 { PresentPush present; };
+layout(std430, binding = 7) buffer B7 { EmissionPush emission; };
 void main() {
     shading.vpl_count = vpl.type + g_buffer.material + material.size.x + shadow.face.x +
-                        uint(ortho.extents.x) + present.width;
+                        uint(ortho.extents.x) + present.width + emission.layer;
 }
 )";
 
@@ -75,6 +76,8 @@ const Member kMembers[] = {
     MVPL_MEMBER(GBufferPush, material_flags),
     MVPL_MEMBER(GBufferPush, material),
     MVPL_MEMBER(MaterialPush, size),
+    MVPL_MEMBER(EmissionPush, size),
+    MVPL_MEMBER(EmissionPush, layer),
     MVPL_MEMBER(ShadowPush, vpl_near),
     MVPL_MEMBER(ShadowPush, face),
     MVPL_MEMBER(OrthoPush, u_origin),
@@ -97,7 +100,6 @@ const Member kMembers[] = {
     MVPL_MEMBER(PresentPush, hud_y),
     MVPL_MEMBER(PresentPush, hud_width),
     MVPL_MEMBER(PresentPush, hud_height),
-    MVPL_MEMBER(PresentPush, emission_layer),
     MVPL_MEMBER(PresentPush, linear_target),
 };
 

@@ -37,9 +37,9 @@ std::optional<TriangleHit> intersect(const DVec3& o, const DVec3& d, const DVec3
 }  // namespace
 
 std::optional<CpuHit> cast_camera_ray(const scene::Scene& scene, int width, int height, int x,
-                                      int y) {
-    const scene::CameraRay ray =
-        scene::generate_camera_ray(scene.camera, width, height, Vec2(x + 0.5f, y + 0.5f));
+                                      int y, Vec2 subpixel) {
+    const scene::CameraRay ray = scene::generate_camera_ray(
+        scene.camera, width, height, Vec2(float(x) + subpixel.x, float(y) + subpixel.y));
     const DVec3 o(ray.origin);
     const DVec3 d(ray.direction);
     std::optional<CpuHit> best;

@@ -20,10 +20,11 @@ struct CpuHit {
     bool front_face = true;
 };
 
-// The first hit of the ray through the centre of pixel (x, y) (scene::generate_camera_ray)
-// among the scene's meshes, brute force over all triangles (Möller–Trumbore, double precision).
+// The first hit of the ray through the point `subpixel` of pixel (x, y), its centre by default
+// (scene::generate_camera_ray), among the scene's meshes, brute force over all triangles
+// (Möller–Trumbore, double precision).
 std::optional<CpuHit> cast_camera_ray(const scene::Scene& scene, int width, int height, int x,
-                                      int y);
+                                      int y, Vec2 subpixel = Vec2(0.5f));
 // Whether the segment from a to b hits any triangle of mesh (strictly between the ends).
 bool segment_hits_mesh(const scene::Mesh& mesh, const Vec3& a, const Vec3& b);
 

@@ -93,6 +93,44 @@ TEST_F(GBufferTest, MatchesACpuRayCastThroughPixelCentres) {
     EXPECT_GT(back_faces, 100);
 }
 
+// A sub-pixel position shifts the whole image: pixel (x, y) then holds the surface that the ray
+// through (x + s.x, y + s.y) hits, not the pixel centre's (which is farther than the tolerance).
+TEST_F(GBufferTest, ASubpixelPositionMatchesTheRayThroughThatPoint) {
+    const scene::Scene scene = two_quads();
+    constexpr int kWidth = 64;
+    constexpr int kHeight = 48;
+    const SceneGeometry geometry(context(), scene);
+    GBufferPass pass(context(), geometry, kWidth, kHeight);
+    for (const Vec2 s : {Vec2(0.1f, 0.85f), Vec2(0.9f, 0.2f)}) {
+        context().submit_and_wait(
+            [&](gpu::CommandList& cmd) { pass.record(cmd, scene.camera, s); });
+        const std::vector<GBufferTexel> texels = pass.download();
+        int compared = 0, mismatches = 0, off_centre = 0;
+        for (int y = 0; y < kHeight; ++y) {
+            for (int x = 0; x < kWidth; ++x) {
+                const GBufferTexel& t = texels[size_t(y) * kWidth + x];
+                const std::optional<testing::CpuHit> hit =
+                    testing::cast_camera_ray(scene, kWidth, kHeight, x, y, s);
+                const std::optional<testing::CpuHit> centre =
+                    testing::cast_camera_ray(scene, kWidth, kHeight, x, y);
+                if (t.covered != hit.has_value() ||
+                    (hit && glm::dot(t.geometric_normal, hit->ng) < 0.5f)) {
+                    ++mismatches;
+                    continue;
+                }
+                if (!hit) continue;
+                ++compared;
+                const float distance = glm::length(hit->p - scene.camera.position());
+                EXPECT_LT(glm::length(t.position - hit->p), 1e-4f * distance) << x << "," << y;
+                if (centre && glm::length(t.position - centre->p) > 1e-3f * distance) ++off_centre;
+            }
+        }
+        EXPECT_LE(mismatches, 2);
+        EXPECT_GT(compared, kWidth * kHeight / 3);
+        EXPECT_GT(off_centre, compared * 9 / 10);
+    }
+}
+
 TEST_F(GBufferTest, FrontFacesCarryTheirEmission) {
     scene::Scene scene = two_quads();
     // Look at the wall from behind it, where its winding normal points.

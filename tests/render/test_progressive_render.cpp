@@ -86,6 +86,32 @@ TEST_F(ProgressiveRenderTest, UnevenChunksWithAScaleEqualTheOneShotRender) {
     expect_same_image(renderer.resolve(1.0 / double(kPaths)), one_shot);
 }
 
+// Sub-pixel positions follow the VPL index since begin(), not the calls: with a G-buffer every
+// two batches (16 VPLs a position) uneven chunks still give the one-shot image, one G-buffer per
+// position; without jitter there is one G-buffer whatever the count.
+TEST_F(ProgressiveRenderTest, GBuffersFollowThePositionsNotTheChunks) {
+    const CornellBox box;
+    VplRenderer renderer(context(), box.scene);
+    RenderOptions o = small_options();
+    o.batches_per_position = 2;
+    RenderTimings timings;
+    const Image one_shot = renderer.render(box.set, o, &timings);
+    const uint32_t positions = uint32_t((box.set.vpls.size() + 15) / 16);
+    EXPECT_EQ(timings.g_buffers, positions);
+    renderer.begin(box.scene.camera, o);
+    size_t first = 0;
+    for (size_t chunk : {size_t(5), size_t(11), size_t(17), box.set.vpls.size()}) {
+        const size_t count = std::min(chunk, box.set.vpls.size() - first);
+        renderer.accumulate(std::span<const light::Vpl>(box.set.vpls).subspan(first, count));
+        first += count;
+    }
+    EXPECT_EQ(renderer.timings().g_buffers, positions);
+    expect_same_image(renderer.resolve(1.0 / double(kPaths)), one_shot);
+    o.jitter = false;
+    renderer.render(box.set, o, &timings);
+    EXPECT_EQ(timings.g_buffers, 1u);
+}
+
 TEST_F(ProgressiveRenderTest, ScaleMultipliesTheVplsButNotTheEmission) {
     const CornellBox box;
     VplRenderer renderer(context(), box.scene);

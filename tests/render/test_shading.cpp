@@ -3,6 +3,7 @@
 #include <string>
 
 #include "engine/core/image.h"
+#include "engine/core/subpixel.h"
 #include "engine/gpu/context.h"
 #include "engine/render/vpl_renderer.h"
 #include "tests/gpu/gpu_test.h"
@@ -120,6 +121,9 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
     options.clamp = 0.05f;  // d_min = 0.05 · diagonal ≈ 0.28: active for the nearby pixels
     const Image image = renderer.render({vpls}, options);
 
+    // Each batch at its own sub-pixel position: the CPU formulas at the same positions.
+    const SubpixelSchedule schedule = subpixel_schedule(options);
+    ASSERT_NE(schedule.position_of(0), schedule.position_of(3)) << "the batches are jittered";
     const float d_min = options.clamp * std::sqrt(32.0f);  // the floor's diagonal
     const material::ClosureParams receiver = testing::closure_of(glossy);
     int compared = 0;
@@ -127,12 +131,14 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
     float worst = 0.0f;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
-            const std::optional<testing::CpuHit> hit =
-                testing::cast_camera_ray(scene, kSize, kSize, x, y);
-            if (!hit) continue;
+            if (!testing::cast_camera_ray(scene, kSize, kSize, x, y)) continue;
             Rgb expected(0.0f);
-            for (const light::Vpl& v : vpls) {
-                expected += testing::cpu_contribution(v, hit->p, hit->ng, receiver,
+            for (size_t i = 0; i < vpls.size(); ++i) {
+                const Vec2 at = schedule.position(schedule.position_of(i));
+                const std::optional<testing::CpuHit> hit =
+                    testing::cast_camera_ray(scene, kSize, kSize, x, y, at);
+                if (!hit) continue;
+                expected += testing::cpu_contribution(vpls[i], hit->p, hit->ng, receiver,
                                                       scene.camera.position(), d_min);
             }
             ++compared;
@@ -146,6 +152,9 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
     RecordProperty("worst_relative_error", std::to_string(worst));
 }
 
+// Without jitter every pixel whose centre sees the lamp shows its emission exactly, whatever the
+// number of batches; with jitter it is the mean over the batches' positions, exact where every
+// position sees the lamp (pixels away from the quad's edges) and coverage-weighted on them.
 TEST_F(ShadingTest, EmittedRadianceIsAddedOnceWhateverTheNumberOfBatches) {
     scene::Material lamp = test::diffuse_material(Rgb(0.5f));
     lamp.emissive = Rgb(0.25f, 0.5f, 1.0f);
@@ -164,19 +173,32 @@ TEST_F(ShadingTest, EmittedRadianceIsAddedOnceWhateverTheNumberOfBatches) {
     options.shadow_resolution = 16;
     options.batch = 1;
     options.clamp = 0.0f;
+    const auto covered = [&](int x, int y) {
+        return bool(testing::cast_camera_ray(scene, 16, 16, x, y));
+    };
     RenderTimings timings;
-    for (const std::vector<light::Vpl>& list : {std::vector<light::Vpl>{}, vpls}) {
-        const Image image = renderer.render({list}, options, &timings);
-        EXPECT_EQ(timings.batches, uint32_t(list.size()));
-        int covered = 0;
-        for (int y = 0; y < 16; ++y) {
-            for (int x = 0; x < 16; ++x) {
-                if (!testing::cast_camera_ray(scene, 16, 16, x, y)) continue;
-                ++covered;
-                EXPECT_EQ(image.at(x, y), lamp.emission()) << x << "," << y;
+    for (const bool jitter : {false, true}) {
+        options.jitter = jitter;
+        for (const std::vector<light::Vpl>& list : {std::vector<light::Vpl>{}, vpls}) {
+            const Image image = renderer.render({list}, options, &timings);
+            EXPECT_EQ(timings.batches, uint32_t(list.size()));
+            EXPECT_EQ(timings.g_buffers,
+                      jitter ? std::max<uint32_t>(uint32_t(list.size()), 1u) : 1u);
+            int compared = 0;
+            for (int y = 0; y < 16; ++y) {
+                for (int x = 0; x < 16; ++x) {
+                    bool inside = covered(x, y);
+                    for (int dy = -1; dy <= 1 && jitter; ++dy) {
+                        for (int dx = -1; dx <= 1; ++dx)
+                            inside = inside && covered(x + dx, y + dy);
+                    }
+                    if (!inside) continue;
+                    ++compared;
+                    EXPECT_EQ(image.at(x, y), lamp.emission()) << x << "," << y << " " << jitter;
+                }
             }
+            EXPECT_GT(compared, jitter ? 80 : 100);
         }
-        EXPECT_GT(covered, 100);
     }
 }
 

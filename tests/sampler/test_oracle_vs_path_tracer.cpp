@@ -43,7 +43,9 @@ void expect_oracle_matches_path_tracer(const scene::Scene& s) {
     sampler::MonteCarloOptions o;
     o.paths = 256;
     o.seed = 7;
-    const test::BatchedImage oracle = test::batched_oracle(s, o, kBatches, kRes, kDepth);
+    // At the pixel centres, where the path tracer below is evaluated (no sub-pixel jitter).
+    const test::BatchedImage oracle =
+        test::batched_oracle(s, o, kBatches, kRes, kDepth, /*jitter=*/false);
 
     const trace::Accel accel(s);
     const light::LightSampler lights(s);

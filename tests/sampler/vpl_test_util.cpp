@@ -24,7 +24,7 @@ scene::Scene area_lit_plane() {
 }
 
 BatchedImage batched_oracle(const scene::Scene& scene, sampler::MonteCarloOptions options,
-                            int batches, int resolution, int max_depth) {
+                            int batches, int resolution, int max_depth, bool jitter) {
     const trace::Accel accel(scene);
     const light::LightSampler lights(scene);
     const sampler::MonteCarloSampler mc(scene, accel, lights);
@@ -32,6 +32,7 @@ BatchedImage batched_oracle(const scene::Scene& scene, sampler::MonteCarloOption
     g.width = g.height = resolution;
     g.max_depth = max_depth;
     g.clamp = 0.0f;
+    g.subpixel.jitter = jitter;
     options.tracer.max_depth = max_depth;
     BatchedImage out;
     const uint64_t seed = options.seed;

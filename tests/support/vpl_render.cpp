@@ -28,6 +28,7 @@ Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::
     o.batch = uint32_t(settings.batch);
     o.clamp = settings.clamp;
     o.shadows = settings.shadows;
+    o.jitter = settings.jitter;
     return renderer.render(vpls, o);
 }
 
@@ -37,7 +38,22 @@ Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
     reference::GatherOptions o;
     o.width = o.height = settings.res;
     o.clamp = settings.clamp;
+    o.subpixel = {settings.jitter, uint64_t(settings.batch)};
     return reference::gather_vpls(scene, accel, vpls, o);
+}
+
+}  // namespace mvpl::test
+
+namespace mvpl::test {
+
+Image emission_at_positions(const scene::Scene& scene, size_t vpl_count,
+                            const VplRenderSettings& settings) {
+    const trace::Accel accel(scene);
+    reference::GatherOptions o;
+    o.width = o.height = settings.res;
+    o.subpixel = {settings.jitter, uint64_t(settings.batch)};
+    o.first_vpl = vpl_count;  // no VPL of its own: the emission over the positions of vpl_count
+    return reference::gather_vpls(scene, accel, {}, o);
 }
 
 }  // namespace mvpl::test

@@ -24,11 +24,18 @@ struct VplRenderSettings {
     float clamp = 0.05f;   // fraction of the scene diagonal; 0: off
     bool shadows = true;
     int batch = 32;
+    bool jitter = true;  // a sub-pixel position per batch, the same in both renderers
 };
 
 // The GPU renderer's image of `vpls` seen by the scene camera.
 Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::VplSet& vpls,
                  const VplRenderSettings& settings);
+// The emitted radiance seen directly in an image of `vpl_count` VPLs rendered with `settings`:
+// averaged over the sub-pixel positions such an image takes (the oracle's rays; the GPU's
+// rasteriser agrees but for positions within 1/256 pixel of an edge). It is the term of
+// gpu_render and oracle_render that is not VPL light, for tests that swap it for a box filter.
+Image emission_at_positions(const scene::Scene& scene, size_t vpl_count,
+                            const VplRenderSettings& settings);
 // The CPU oracle's image of the same VPLs (exact visibility; settings.shadow_res unused).
 Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
                     const VplRenderSettings& settings);

@@ -37,6 +37,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.height = uint32_t(c.height);
     ro.shadow_resolution = uint32_t(c.shadow_resolution);
     ro.batch = uint32_t(c.batch);
+    ro.jitter = c.jitter;
     ro.clamp = clamp;
     ro.shadows = shadows;
     ro.shadow_culling = c.shadow_culling;
@@ -60,6 +61,7 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.shading_ms = t.shading_ms;
     s.batches = t.batches;
     s.shadow_triangles = t.shadow_triangles;
+    s.g_buffers = t.g_buffers;
     return s;
 }
 
@@ -113,6 +115,7 @@ int run_bench(const Args& args) {
     config.batch = renderer_args.batch;
     config.shadow_culling = !renderer_args.no_shadow_culling;
     config.shadow_proxy = !renderer_args.no_shadow_proxy;
+    config.jitter = !renderer_args.no_jitter;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     if (paths < 1 || paths > (uint64_t(1) << 24))

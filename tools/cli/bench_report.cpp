@@ -49,7 +49,9 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"shadow_culling\": " + (r.config.shadow_culling ? "true" : "false") + ",\n";
     s += i + "\"shadow_proxy\": " + (r.config.shadow_proxy ? "true" : "false") + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
+    s += i + "\"jitter\": " + (r.config.jitter ? "true" : "false") + ",\n";
     s += i + "\"batches\": " + std::to_string(r.median.batches) + ",\n";
+    s += i + "\"g_buffers\": " + std::to_string(r.median.g_buffers) + ",\n";
     s += i + "\"g_buffer_ms\": " + number(r.median.g_buffer_ms) + ",\n";
     s += i + "\"shadow_ms\": " + number(r.median.shadow_ms) + ",\n";
     s += i + "\"shadow_ms_per_vpl\": " + number(r.shadow_ms_per_vpl) + ",\n";
@@ -95,6 +97,7 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
     r.median.wall_s = field(&RenderSample::wall_s);
     r.median.batches = samples.empty() ? 0 : samples.front().batches;
     r.median.shadow_triangles = samples.empty() ? 0 : samples.front().shadow_triangles;
+    r.median.g_buffers = samples.empty() ? 0 : samples.front().g_buffers;
     const double n = double(vpls);
     r.shadow_triangles_per_vpl = ratio(double(r.median.shadow_triangles), n);
     r.shadow_ms_per_vpl = ratio(r.median.shadow_ms, n);
@@ -161,17 +164,18 @@ std::string bench_table(const BenchReport& b) {
     std::snprintf(
         buf, sizeof buf,
         "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
-        "    G-buffer       %8.2f ms\n"
+        "    G-buffer       %8.2f ms  %u G-buffers\n"
         "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL (culling %s, proxy %s)\n"
         "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
         "  end to end       %8.3f s  %.1f VPL/s\n"
         "  peak memory      host %.1f MiB, device %.1f MiB\n",
         m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
-        m.median.batches, m.median.wall_s, m.median.g_buffer_ms, m.median.shadow_ms,
-        m.shadow_ms_per_vpl, m.shadow_triangles_per_vpl, m.config.shadow_culling ? "on" : "off",
-        m.config.shadow_proxy ? "on" : "off", m.median.shading_ms, m.shading_ms_per_vpl,
-        m.shading_pixel_vpls_per_s * 1e-6, m.end_to_end_s, m.end_to_end_vpls_per_s,
-        double(b.peak_host_bytes) / (1 << 20), double(b.peak_device_bytes) / (1 << 20));
+        m.median.batches, m.median.wall_s, m.median.g_buffer_ms, m.median.g_buffers,
+        m.median.shadow_ms, m.shadow_ms_per_vpl, m.shadow_triangles_per_vpl,
+        m.config.shadow_culling ? "on" : "off", m.config.shadow_proxy ? "on" : "off",
+        m.median.shading_ms, m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6,
+        m.end_to_end_s, m.end_to_end_vpls_per_s, double(b.peak_host_bytes) / (1 << 20),
+        double(b.peak_device_bytes) / (1 << 20));
     s += buf;
     if (!b.sweep.empty()) {
         s += "\n  batch  shadow  culling  proxy  shadow ms/VPL  shading ms/VPL  M pixel·VPL/s  "

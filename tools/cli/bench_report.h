@@ -15,6 +15,7 @@ struct BenchConfig {
     int batch = 32;
     bool shadow_culling = true;  // render::RenderOptions::shadow_culling
     bool shadow_proxy = true;    // render::RenderOptions::shadow_proxy
+    bool jitter = true;          // a G-buffer per batch (false with --no-jitter: one per render)
 };
 
 // One measured render of the VPLs with one configuration. Times in seconds unless named _ms.
@@ -25,6 +26,7 @@ struct RenderSample {
     double wall_s = 0.0;  // host time of begin + accumulate + resolve (uploads, read-back)
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // drawn into cube faces
+    uint32_t g_buffers = 0;         // one per sub-pixel position
 };
 
 // The medians over the repeats of one configuration, and the rates derived from those medians

@@ -25,6 +25,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.clamp = clamp;
     o.shadow_culling = !no_shadow_culling;
     o.shadow_proxy = !no_shadow_proxy;
+    o.jitter = !no_jitter;
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -38,6 +39,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-shadow-proxy", &args.no_shadow_proxy,
                     "surface VPLs draw the full geometry into their shadow maps (default: the "
                     "simplified proxy of meshes of 4096+ triangles)");
+    parser.add_flag("--no-jitter", &args.no_jitter,
+                    "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     // The renderer's limits: 4096² faces × 6 × a batch must still fit in memory.
     parser.add_check([&parser, &args] {
         if (args.shadow_res < 4 || args.shadow_res > 4096)

@@ -13,12 +13,13 @@
 
 namespace mvpl::cli {
 
-// --shadow-res, --batch, --clamp, --no-shadow-culling, --no-shadow-proxy: the GPU renderer's
-// (render::RenderOptions), as ints for the parser.
+// --shadow-res, --batch, --clamp, --no-jitter, --no-shadow-culling, --no-shadow-proxy: the GPU
+// renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
     int batch = int(render::RenderOptions{}.batch);
     float clamp = render::RenderOptions{}.clamp;
+    bool no_jitter = !render::RenderOptions{}.jitter;
     bool no_shadow_culling = false;
     bool no_shadow_proxy = false;
 

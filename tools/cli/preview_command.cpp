@@ -72,6 +72,7 @@ int run_preview(const Args& args) {
     o.budget_ms = budget;
     o.shadow_resolution = uint32_t(renderer.shadow_res);
     o.batch = uint32_t(renderer.batch);
+    o.jitter = !renderer.no_jitter;
     o.clamp = renderer.clamp;
     o.hud = !no_hud;
     o.motion_scaling = !no_motion_scaling;

@@ -115,6 +115,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     g.clamp = a.renderer.clamp;
     g.max_depth = max_depth;
     g.quiet = a.quiet;
+    g.subpixel = render::subpixel_schedule(ro);  // the GPU's sub-pixel positions
     return job;
 }
 

@@ -59,7 +59,9 @@ void add_image(Image& sum, const Image& part, float scale = 1.0f) {
 
 // The loop both renders share: a sampler stream whose chunks of VPLs are shaded as they come,
 // on the GPU (begin/accumulate/resolve) or by the CPU oracle, each chunk gathered at once (VPL
-// light only, unscaled) and the emitted radiance added once at the end.
+// light only, unscaled) at the sub-pixel positions that the GPU gives the chunk's VPLs (their
+// indices since the start: GatherOptions::first_vpl) and the emitted radiance added at the end,
+// averaged over the positions drawn.
 class ChunkedRender {
 public:
     ChunkedRender(const RenderJob& job, RenderOutcome& result)
@@ -89,6 +91,7 @@ public:
         if (m_job.renderer) {
             m_job.renderer->accumulate(m_chunk);
         } else if (!m_chunk.empty()) {
+            m_gather.first_vpl = m_result.vpls;
             add_image(m_sum, reference::gather_vpls(m_session.scene(), m_session.accel(), {m_chunk},
                                                     m_gather));
         }
@@ -105,8 +108,10 @@ public:
             m_result.image = m_job.renderer->resolve(m_stream->scale());
             m_result.timings = m_job.renderer->timings();
         } else {
-            m_result.image = reference::gather_vpls(m_session.scene(), m_session.accel(), {},
-                                                    m_job.gather);  // emission
+            reference::GatherOptions emission = m_job.gather;
+            emission.first_vpl = m_result.vpls;  // averaged over the positions of every VPL
+            m_result.image =
+                reference::gather_vpls(m_session.scene(), m_session.accel(), {}, emission);
             add_image(m_result.image, m_sum, float(m_stream->scale()));
         }
         m_result.shading_seconds += shading.seconds();

@@ -163,7 +163,7 @@ void PresentPass::set_hud(const HudBitmap& hud) {
 }
 
 void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& accumulation,
-                         const gpu::Image& g_buffer, const PresentParams& params, bool capture) {
+                         const gpu::Image& emission, const PresentParams& params, bool capture) {
     Impl& m = *m_impl;
     // The display image has the window's size; the accumulation may be smaller (camera moving).
     const uint32_t width = frame.width;
@@ -182,7 +182,7 @@ void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& acc
     }
 
     // The frame before has finished (Swapchain::end_frame waits), so the set is free to update.
-    const std::array<const gpu::Image*, 4> images{&accumulation, &g_buffer, &m.display, &m.hud};
+    const std::array<const gpu::Image*, 4> images{&accumulation, &emission, &m.display, &m.hud};
     std::array<VkDescriptorImageInfo, 4> infos{};
     std::array<VkWriteDescriptorSet, 4> writes{};
     for (size_t i = 0; i < images.size(); ++i) {
@@ -213,7 +213,6 @@ void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& acc
     push.height = height;
     push.source_width = accumulation.width();
     push.source_height = accumulation.height();
-    push.emission_layer = params.emission_layer;
     push.linear_target = m.linear_target ? 1u : 0u;
     const auto dispatch = [&](bool hud) {
         push.hud_width = hud ? m.hud_width : 0;

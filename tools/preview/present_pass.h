@@ -1,8 +1,8 @@
 #pragma once
-// The preview's present pass: scale · accumulation + emission, exposed and sRGB-encoded like the
-// PNG writer (shaders/preview/present.comp), the HUD blended on top, blitted into the swapchain
-// image. A capture reads the display image back before the HUD is drawn, so that a screenshot
-// is the rendered picture only. Vulkan-free to include.
+// The preview's present pass: scale · accumulation + the mean emission, exposed and sRGB-encoded
+// like the PNG writer (shaders/preview/present.comp), the HUD blended on top, blitted into the
+// swapchain image. A capture reads the display image back before the HUD is drawn, so that a
+// screenshot is the rendered picture only. Vulkan-free to include.
 #include <cstdint>
 #include <memory>
 #include <vector>
@@ -22,7 +22,6 @@ struct PresentParams {
     double scale = 1.0;  // the VPL stream's scale()
     float exposure = 0.0f;
     bool hud = true;
-    uint32_t emission_layer = 0;
 };
 
 class PresentPass {
@@ -36,10 +35,11 @@ public:
     // Uploads the HUD text image (outside a frame's recording).
     void set_hud(const HudBitmap& hud);
     // Records into frame.cmd. The display image has the frame's size and shows the accumulation
-    // scaled to it (nearest neighbour; 1:1 when the sizes agree). capture: read the encoded
-    // picture back (captured() after Swapchain::end_frame).
+    // scaled to it (nearest neighbour; 1:1 when the sizes agree). emission: VplRenderer::emission()
+    // (Σ over the G-buffers drawn, their count in alpha). capture: read the encoded picture back
+    // (captured() after Swapchain::end_frame).
     void record(const gpu::SwapchainFrame& frame, const gpu::Image& accumulation,
-                const gpu::Image& g_buffer, const PresentParams& params, bool capture);
+                const gpu::Image& emission, const PresentParams& params, bool capture);
     // RGBA8, rows top first, of the last capture; width × height of that frame.
     std::vector<uint8_t> captured(uint32_t& width, uint32_t& height) const;
 

@@ -14,7 +14,6 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/swapchain.h"
-#include "engine/render/g_buffer_pass.h"
 #include "engine/render/vpl_renderer.h"
 #include "sampler/sampler_factory.h"
 #include "tools/preview/camera_controller.h"
@@ -231,6 +230,7 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     ro.height = m_render_height;
     ro.shadow_resolution = m_options.shadow_resolution;
     ro.batch = m_options.batch;
+    ro.jitter = m_options.jitter;
     ro.clamp = clamp();
     m_renderer.begin(m_controller.camera(), ro);
     m_replayed = 0;
@@ -333,10 +333,9 @@ int PreviewApp::run(const Timer& start) {
         params.scale = m_scale;
         params.exposure = m_exposure;
         params.hud = m_options.hud;
-        params.emission_layer = render::kGBufferEmission;
         gpu::SwapchainFrame sc;
         if (m_swapchain.begin_frame(width, height, sc)) {
-            m_present.record(sc, m_renderer.accumulation(), m_renderer.g_buffer(), params, capture);
+            m_present.record(sc, m_renderer.accumulation(), m_renderer.emission(), params, capture);
             m_swapchain.end_frame();
             const double seconds = frame_timer.seconds();
             // The first frame is the first image (reported on its own), not a camera move.

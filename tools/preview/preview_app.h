@@ -30,6 +30,7 @@ struct PreviewOptions {
     int max_depth = 6;
     uint32_t shadow_resolution = render::RenderOptions{}.shadow_resolution;
     uint32_t batch = render::RenderOptions{}.batch;
+    bool jitter = render::RenderOptions{}.jitter;  // a new sub-pixel position per batch
     bool hud = true;
     // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
     bool motion_scaling = true;

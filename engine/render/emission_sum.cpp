@@ -1,0 +1,43 @@
+#include "engine/render/emission_sum.h"
+
+#include "engine/gpu/command_list.h"
+#include "engine/gpu/compute_pipeline.h"
+#include "engine/gpu/gpu_error.h"
+#include "engine/gpu/shader_compiler.h"
+#include "engine/render/g_buffer_pass.h"
+#include "shaders/shared/push_constants.h"
+
+namespace mvpl::render {
+namespace {
+
+constexpr uint32_t kGroupSize = 8;  // emission_sum.comp's local size
+
+}  // namespace
+
+EmissionSum::EmissionSum(gpu::Context& context, uint32_t width, uint32_t height)
+    : m_sum(context, {width, height, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
+            "emission sum"),
+      m_pipeline(std::make_unique<gpu::ComputePipeline>(
+          context, gpu::compile_embedded_shader("render/emission_sum.comp"),
+          gpu::ComputeLayout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image},
+                             sizeof(shared::EmissionPush)},
+          "emission sum")) {}
+
+EmissionSum::~EmissionSum() = default;
+
+void EmissionSum::record_clear(gpu::CommandList& cmd) {
+    cmd.clear_color(m_sum, {0.0f, 0.0f, 0.0f, 0.0f});
+}
+
+void EmissionSum::record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer) {
+    const uint32_t width = m_sum.width();
+    const uint32_t height = m_sum.height();
+    if (g_buffer.width() != width || g_buffer.height() != height) {
+        throw gpu::GpuError("emission sum: the G-buffer and the sum differ in size");
+    }
+    const shared::EmissionPush push{{width, height}, kGBufferEmission};
+    cmd.dispatch(*m_pipeline, {&g_buffer, &m_sum}, gpu::push_bytes(push),
+                 (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
+}
+
+}  // namespace mvpl::render

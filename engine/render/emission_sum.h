@@ -1,0 +1,38 @@
+#pragma once
+// The emitted radiance seen directly, averaged over the sub-pixel positions of a progressive
+// render (engine/core/subpixel.h): VPL light is summed batch by batch at each batch's position,
+// and emission, which needs no VPL, is summed once per G-buffer drawn, with the count of
+// G-buffers in alpha so that the resolve and the preview divide per pixel. Vulkan-free to include.
+#include <cstdint>
+#include <memory>
+
+#include "engine/gpu/image.h"
+
+namespace mvpl::gpu {
+class CommandList;
+class ComputePipeline;
+class Context;
+}  // namespace mvpl::gpu
+
+namespace mvpl::render {
+
+class EmissionSum {
+public:
+    EmissionSum(gpu::Context& context, uint32_t width, uint32_t height);
+    ~EmissionSum();
+    EmissionSum(const EmissionSum&) = delete;
+    EmissionSum& operator=(const EmissionSum&) = delete;
+
+    void record_clear(gpu::CommandList& cmd);
+    // Adds the emission layer of g_buffer (GBufferPass::image(), after a barrier) and 1 to alpha.
+    void record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer);
+
+    // RGBA32F: rgb Σ emitted radiance, a the number of G-buffers summed.
+    const gpu::Image& image() const { return m_sum; }
+
+private:
+    gpu::Image m_sum;
+    std::unique_ptr<gpu::ComputePipeline> m_pipeline;
+};
+
+}  // namespace mvpl::render
