@@ -44,7 +44,7 @@ MemoryEstimate estimate_memory(const RenderOptions& o) {
 
 std::string memory_shortfall(const RenderOptions& o, const gpu::DeviceInfo& device,
                              uint64_t host_bytes) {
-    const MemoryEstimate e = estimate_memory(o);
+    MemoryEstimate e = estimate_memory(o);
     uint64_t heap = 0;
     for (const gpu::MemoryHeapInfo& h : device.heaps) {
         if (h.device_local) heap = std::max(heap, h.size);
@@ -52,7 +52,15 @@ std::string memory_shortfall(const RenderOptions& o, const gpu::DeviceInfo& devi
     char what[160];
     std::snprintf(what, sizeof what, "a %ux%u image with %u² shadow faces and %u VPLs a batch",
                   o.width, o.height, o.shadow_resolution, o.batch);
-    const uint64_t max_allocation = device.limits.max_memory_allocation_size;
+    uint64_t max_allocation = device.limits.max_memory_allocation_size;
+    if (device.type == gpu::DeviceType::cpu) {
+        // A CPU device's memory is the host's: lavapipe reports a 2 GiB heap and allocation limit
+        // but serves what the host has (4096² images, 2.8 GB in all, render there), so only the
+        // host's memory bounds it.
+        heap = 0;
+        max_allocation = 0;
+        e.host_bytes += e.device_bytes;
+    }
     if (heap > 0 && e.device_bytes > heap) {
         return std::string(what) + " needs about " + gigabytes(e.device_bytes) +
                " of GPU memory; " + device.name + " has " + gigabytes(heap);
