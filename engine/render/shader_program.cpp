@@ -38,6 +38,7 @@ std::vector<std::string> enabled_names(const ShaderFeatures& f) {
     std::vector<std::string> out;
     for (int i = 0; i < kVplTypeCount; ++i)
         if (f.vpl_types[size_t(i)]) out.emplace_back(kVplTypeNames[i]);
+    if (f.thin_walls) out.emplace_back("thin_walls");
     return out;
 }
 
@@ -148,6 +149,7 @@ ShaderFeatures ShaderFeatures::all() {
     ShaderFeatures f;
     f.vpl_types.fill(true);
     f.closure_types.fill(true);
+    f.thin_walls = true;
     return f;
 }
 
@@ -177,7 +179,9 @@ ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& op
     const std::vector<bool> drawn = drawn_materials(scene);
     std::vector<material::MaterialGraph> graphs;
     for (size_t i = 0; i < drawn.size(); ++i) {
-        if (drawn[i]) graphs.push_back(materials.graph(int(i)));
+        if (!drawn[i]) continue;
+        graphs.push_back(materials.graph(int(i)));
+        f.thin_walls = f.thin_walls || graphs.back().double_sided;
     }
     f.closure_types = material::scene_closure_types(graphs);
     return f;

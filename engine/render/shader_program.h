@@ -18,6 +18,9 @@ inline constexpr int kVplTypeCount = 5;
 struct ShaderFeatures {
     std::array<bool, kVplTypeCount> vpl_types{};  // indexed by light::VplType
     std::array<bool, material::kClosureTypeCount> closure_types{};
+    // A drawn material is double-sided, so the scene may hold zero-thickness walls: the shadow
+    // test adds its junction lookup (shaders/render/shading_template.glsl, visibility()).
+    bool thin_walls = false;
 
     bool has(light::VplType t) const { return vpl_types[size_t(t)]; }
     bool has_directional() const { return has(light::VplType::Directional); }

@@ -27,22 +27,43 @@ layout(set = 0, binding = 4) uniform sampler2DArray ortho_shadows;
 
 layout(push_constant) uniform ShadingPushBlock { ShadingPush pc; };
 
-// Shadow test against the VPL's distance cube. Nearest sampling reads the texel that contains
-// the direction w to the receiver; what that texel stores is the distance rasterised along its
-// CENTRE direction w_c. Instead of a slope-scaled bias (which, at grazing angles, must grow to
-// d · tan θ · texel size and then reaches through thin walls: measured as light leaking between
-// the two rooms), the receiver's own plane is intersected along w_c: d_c = n·(p − x)/(n·w_c) is the
-// distance the texel would store if nothing stood in front of the receiver's plane, so the
-// receiver is lit when stored ≥ d_c, up to kConstantBias for the rounding of interpolated
-// distances (~1e-6 relative) and kFootprintBias texel footprints (d · texel_angle) so that a
-// surface meeting the receiver in a concave corner does not shadow it — scale-free and without
-// a slope term ("receiver plane" depth test). An occluder thinner than one footprint in front of
-// the receiver's plane can leak: 0.8% of d at 256² faces. Where w_c runs nearly parallel to the plane, d_c is unreliable and
-// the receiver's own distance d with a bounded slope bias is used instead.
+// Shadow test against the VPL's distance cube, in two lookups.
+//
+// The receiver-plane test. Nearest sampling reads the texel that contains the direction w to the
+// receiver; what that texel stores is the distance rasterised along its CENTRE direction w_c, up
+// to half a texel diagonal (0.71 texel angles τ) away. Instead of a slope-scaled bias (which, at
+// grazing angles, must grow to d · tan θ · τ and then reaches through walls), the receiver's own
+// plane is intersected along w_c: d_c = n·(p − x)/(n·w_c) is the distance the texel would store
+// if nothing stood in front of the receiver's plane, so the receiver is lit when stored ≥ d_c, up
+// to kConstantBias for the rounding of interpolated distances (~1e-6 relative) and
+// kFootprintBias footprints (d · τ) so that a surface meeting the receiver in a concave corner
+// does not shadow it. Where w_c runs nearly parallel to the plane, d_c is unreliable and the
+// receiver's own distance d with a bounded slope bias is used instead.
+//
+// The junction test (issue 13, thin walls). The plane test cannot see a zero-thickness wall that
+// stands on the receiver's surface: within about a footprint behind the wall's foot the texel's
+// centre may pass under the wall and hit the floor in front of it, which lies in the receiver's
+// plane, and the footprint allowance lets the wall's foot itself pass; a thick wall hides that
+// band, a single plane leaves it in view as a bright line along each junction (measured: 88
+// leaking pixels per VPL set in tests/render/test_thin_walls.cpp). The second lookup moves the
+// receiver off its surface towards the VPL by kNormalOffset · d · τ · sin θ (a normal offset:
+// along w_c the receiver's plane then lies (kNormalOffset − 0.71) · d · τ · tan θ beyond the
+// moved point, so the point's own distance can be compared without self-shadowing) and asks
+// whether something stands in front of that point within kJunctionReach footprints: a wall at
+// the receiver's foot (4: the plane test's leak band, its allowance plus half a texel diagonal,
+// 1.71 footprints, plus this lookup's own spread of 0.71 · tan β footprints on a wall met at up
+// to β = 72°). Only such near occluders count, so that the offset, which moves the
+// lookup by up to kNormalOffset texel angles, does not move the shadows of distant occluders
+// (shadowing by every occluder through the offset lookup raised the GPU-vs-oracle error
+// 2.6–3.6× on the Cornell box and the two-room scene). It is generated only where a drawn
+// material is double-sided (ShaderFeatures::thin_walls): a zero-thickness wall that is seen from
+// both sides is one, and a closed model does not pay for the second lookup.
 const float kConstantBias = 2e-4;
 const float kFootprintBias = 1.0;
 const float kSlopeBias = 1.0;
 const float kMaxSlope = 4.0;
+const float kNormalOffset = 1.0;
+const float kJunctionReach = 4.0;
 
 // The cube texel that holds direction w, found as Vulkan's cube sampling finds it (spec, "Cube Map
 // Face Selection", the projection shadow.vert renders with), nearest filtering and clamp to edge:
@@ -88,7 +109,10 @@ CubeTexel cube_texel(vec3 w, float res) {
                      normalize(m_axis + centre.x * s_axis + centre.y * t_axis));
 }
 
+// to_receiver = p − VPL, d = |to_receiver|, ng the receiver's geometric normal on the side it is
+// shaded from.
 float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
+    const float footprint = d * pc.texel_angle;
     const vec3 w = to_receiver / d;
     const CubeTexel ct = cube_texel(w, res);
     const float stored =
@@ -97,12 +121,26 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
     const float along = dot(ng, wc);
     const float d_plane = dot(ng, to_receiver) / along;
     const float cos_r = abs(dot(ng, w));
+    bool lit;
     if (abs(along) > 0.05 * cos_r && d_plane > 0.5 * d && d_plane < 2.0 * d) {
-        return stored >= d_plane - d * (kConstantBias + kFootprintBias * pc.texel_angle) ? 1.0 : 0.0;
+        lit = stored >= d_plane - (kConstantBias * d + kFootprintBias * footprint);
+    } else {
+        const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
+        lit = stored >= d - d * (kConstantBias + kSlopeBias * pc.texel_angle * tan_r);
     }
-    const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
-    const float bias = d * (kConstantBias + kSlopeBias * pc.texel_angle * tan_r);
-    return stored >= d - bias ? 1.0 : 0.0;
+
+//@if thin_walls
+    const float cos_g = dot(ng, w);
+    const vec3 towards_vpl = cos_g <= 0.0 ? ng : -ng;
+    const float sin_g = sqrt(max(0.0, 1.0 - cos_g * cos_g));
+    const vec3 lookup = to_receiver + towards_vpl * (kNormalOffset * footprint * sin_g);
+    const float d_lookup = length(lookup);
+    const CubeTexel moved = cube_texel(lookup / d_lookup, res);
+    const float in_front =
+        d_lookup - imageLoad(shadow_cubes, ivec3(moved.texel.xy, 6 * int(cube) + moved.texel.z)).r;
+    if (in_front > kConstantBias * d_lookup && in_front < kJunctionReach * footprint) lit = false;
+//@endif
+    return lit ? 1.0 : 0.0;
 }
 
 //@if directional

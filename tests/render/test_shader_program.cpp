@@ -87,6 +87,23 @@ TEST(ShaderProgram, CornellBoxHasNoMicrofacetCodeNoSamplerAndOnlyItsLightTypes) 
     EXPECT_TRUE(contains(s.g_buffer_frag.source, "c = lambertian("));
 }
 
+// The shadow test's junction lookup (thin walls) comes with a drawn double-sided material only:
+// the Cornell box's closed, one-sided walls do without it; a double-sided material that no mesh
+// draws adds nothing; one that a mesh draws adds it.
+TEST(ShaderProgram, OnlyDoubleSidedScenesGetTheJunctionLookup) {
+    scene::Scene scene = scene::load_scene(kCornell);
+    const std::string junction = "kJunctionReach * footprint";
+    EXPECT_FALSE(generate_scene_shaders(scene, {}).features.thin_walls);
+    EXPECT_FALSE(contains(generate_scene_shaders(scene, {}).shading_comp.source, junction));
+    scene.materials.push_back(scene.materials[0]);
+    scene.materials.back().double_sided = true;
+    EXPECT_FALSE(contains(generate_scene_shaders(scene, {}).shading_comp.source, junction));
+    scene.meshes[0].material = int(scene.materials.size()) - 1;
+    const SceneShaders with_wall = generate_scene_shaders(scene, {});
+    EXPECT_TRUE(with_wall.features.thin_walls);
+    EXPECT_TRUE(contains(with_wall.shading_comp.source, junction));
+}
+
 TEST(ShaderProgram, ATexturedGlossyMaterialAddsExactlyItsNodes) {
     const scene::Scene cornell = scene::load_scene(kCornell);
     scene::Scene scene = cornell;

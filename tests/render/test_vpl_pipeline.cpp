@@ -51,6 +51,7 @@ TEST_F(VplPipelineTest, GpuAgreesWithTheOracleWithinTheShadowMapResolution) {
             compare_images(gpu_render(context(), s, vpls, 64, 256, 0.05f), oracle).rel_mse;
         EXPECT_LT(fine, 1.25 * 2.0 / 256.0);
         EXPECT_LT(fine, coarse) << "coarse " << coarse;
+        RecordProperty(std::string("coarse") + path, std::to_string(coarse));
         EXPECT_GT(oracle.mean().r, 0.0f);
         RecordProperty(std::string("relmse") + path, std::to_string(fine));
     }
