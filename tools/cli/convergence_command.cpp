@@ -88,6 +88,7 @@ int run_convergence(const Args& args) {
     int width = 0, height = 0;
     sampler::SamplerSettings settings;  // max depth and seed; the rest is each sampler's default
     RendererArgs renderer_args;
+    CompensationArgs compensation_args;
     bool quiet = false, no_plot = false;
     ArgParser parser(
         "convergence",
@@ -104,6 +105,7 @@ int run_convergence(const Args& args) {
                           "image size WxH (default and only allowed: the reference's)");
     parser.add_string("--methods", &methods_text, "comma-separated: pt,mc,metropolis");
     add_renderer_options(parser, renderer_args);
+    add_compensation_options(parser, compensation_args);
     add_seed_option(parser, settings.seed);
     CameraArgs camera;
     add_camera_options(parser, camera);
@@ -143,6 +145,8 @@ int run_convergence(const Args& args) {
     render::RenderOptions render_options;
     renderer_args.apply(render_options);
     run.quiet = quiet;
+    run.compensate = compensation_args.enabled();
+    run.compensation_passes = uint32_t(compensation_args.spp);
 
     std::vector<ConvergencePoint> all;
     std::unique_ptr<gpu::Context> context;

@@ -7,6 +7,7 @@
 #include "engine/core/timer.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/render/vpl_renderer.h"
+#include "tools/cli/compensation_thread.h"
 
 namespace mvpl::cli {
 
@@ -83,6 +84,21 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     o.width = uint32_t(run.reference->width());
     o.height = uint32_t(run.reference->height());
     renderer.begin(s.camera(), o);
+    std::unique_ptr<CompensationThread> compensation;
+    if (run.compensate) {
+        reference::CompensationOptions c;
+        c.width = int(o.width);
+        c.height = int(o.height);
+        c.clamp = o.clamp;
+        c.max_depth = run.max_depth;
+        c.seed = run.seed;
+        auto passes =
+            std::make_unique<reference::ClampCompensation>(s.scene(), s.accel(), s.lights(), c);
+        if (passes->active())
+            compensation = std::make_unique<CompensationThread>(std::move(passes));
+        if (compensation && run.compensation_passes > 0)
+            compensation->allow(run.compensation_passes);
+    }
 
     std::vector<ConvergencePoint> points;
     Progress progress(name, tenths(run.budget_seconds), run.quiet);
@@ -96,7 +112,13 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
         stream->next(work, chunk);
         renderer.accumulate(chunk);
         vpls += chunk.size();
-        const Image image = renderer.resolve(stream->scale());
+        Image image = renderer.resolve(stream->scale());
+        if (compensation) {
+            if (run.compensation_passes == 0) compensation->allow(paced_compensation_passes(vpls));
+            const Image part = compensation->snapshot();
+            for (size_t i = 0; i < image.pixels().size(); ++i)
+                image.pixels()[i] += part.pixels()[i];
+        }
         const double seconds = timer.seconds();
         per_work = seconds / double(stream->work_done());
         points.push_back(measure(name, seconds, vpls, image, *run.reference));

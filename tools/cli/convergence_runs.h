@@ -22,6 +22,10 @@ struct ConvergenceRun {
     int max_depth = 6;
     uint64_t seed = 0;
     bool quiet = false;
+    // VPL runs add clamping compensation (compensation_thread.h): compensation_passes samples per
+    // pixel, or 0: paced by the VPLs shaded.
+    bool compensate = false;
+    uint32_t compensation_passes = 0;
 };
 
 // The reference path tracer, spp doubling per chunk (independent seeds), the running average.

@@ -50,6 +50,25 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     });
 }
 
+void add_compensation_options(ArgParser& parser, CompensationArgs& args) {
+    parser.add_flag("--compensate", &args.compensate,
+                    "recover the light that --clamp removes (the default): BSDF-sampled CPU "
+                    "rays from each pixel, bounded by the clamping distance (Kollig & Keller "
+                    "2004), while the GPU renders");
+    parser.add_flag("--no-compensate", &args.no_compensate,
+                    "leave the clamped light out (biased dark in corners, no CPU rays)");
+    parser.add_int("--compensation-spp", &args.spp,
+                   "compensation samples per pixel; 0: one per 32 VPLs shaded");
+    parser.add_check([&parser, &args] {
+        if (args.compensate && args.no_compensate)
+            throw UsageError(parser.command() +
+                             ": --compensate and --no-compensate exclude "
+                             "each other");
+        if (args.spp < 0 || args.spp > 65536)
+            out_of_range(parser, "--compensation-spp", "0..65536");
+    });
+}
+
 void add_sampler_option(ArgParser& parser, std::string& name) {
     parser.add_string("--sampler", &name, "VPL sampler: mc (default) or metropolis");
     parser.add_check([&parser, &name] {

@@ -28,6 +28,18 @@ struct RendererArgs {
 };
 void add_renderer_options(ArgParser& parser, RendererArgs& args);
 
+// --compensate (the default), --no-compensate, --compensation-spp: clamping compensation
+// (engine/reference/clamp_compensation.h) on a CPU thread beside the GPU.
+struct CompensationArgs {
+    bool compensate = false;
+    bool no_compensate = false;
+    int spp = 0;  // 0: one pass per 32 VPLs shaded
+
+    // On unless --no-compensate.
+    bool enabled() const { return !no_compensate; }
+};
+void add_compensation_options(ArgParser& parser, CompensationArgs& args);
+
 // --sampler: a name of sampler::sampler_names().
 void add_sampler_option(ArgParser& parser, std::string& name);
 

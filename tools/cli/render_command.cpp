@@ -31,6 +31,7 @@ struct RenderArgs {
     float exposure = 0.0f;
     int device = -1;
     bool qmc = false, oracle = false, quiet = false;
+    CompensationArgs compensation;
     std::string dump_shaders;
     bool no_shader_cache = false;
     float time_budget = 0.0f;
@@ -59,6 +60,7 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
     add_device_option(parser, a.device, "Vulkan device index (see mvpl info); -1 = default");
+    add_compensation_options(parser, a.compensation);
     parser.add_flag("--oracle", &a.oracle,
                     "shade on the CPU with exact visibility instead of the GPU");
     parser.add_flag("--quiet", &a.quiet, "no progress bar and no summary line");
@@ -116,6 +118,14 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     g.max_depth = max_depth;
     g.quiet = a.quiet;
     g.subpixel = render::subpixel_schedule(ro);  // the GPU's sub-pixel positions
+    job.compensate = a.compensation.enabled();
+    job.compensation_passes = uint32_t(a.compensation.spp);
+    reference::CompensationOptions& c = job.compensation;
+    c.width = a.width;
+    c.height = a.height;
+    c.clamp = a.renderer.clamp;
+    c.max_depth = max_depth;
+    c.seed = s.seed;
     return job;
 }
 

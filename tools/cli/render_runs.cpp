@@ -9,6 +9,7 @@
 #include "engine/core/progress.h"
 #include "engine/core/timer.h"
 #include "sampler/metropolis_stream.h"
+#include "tools/cli/compensation_thread.h"
 
 namespace mvpl::cli {
 
@@ -64,9 +65,19 @@ void add_image(Image& sum, const Image& part, float scale = 1.0f) {
 // averaged over the positions drawn.
 class ChunkedRender {
 public:
-    ChunkedRender(const RenderJob& job, RenderOutcome& result)
-        : m_job(job), m_session(*job.session), m_result(result) {
+    // open_ended: a time budget, whose compensation stops with it rather than finishing the
+    // passes it was allowed.
+    ChunkedRender(const RenderJob& job, RenderOutcome& result, bool open_ended)
+        : m_job(job), m_session(*job.session), m_result(result), m_open_ended(open_ended) {
         if (job.renderer) job.renderer->begin(m_session.camera(), job.render);
+        if (job.compensate) {
+            auto compensation = std::make_unique<reference::ClampCompensation>(
+                m_session.scene(), m_session.accel(), m_session.lights(), job.compensation);
+            if (compensation->active())
+                m_compensation = std::make_unique<CompensationThread>(std::move(compensation));
+            if (m_compensation && job.compensation_passes > 0)
+                m_compensation->allow(job.compensation_passes);
+        }
         Timer setup;
         m_stream = make_stream(job);
         m_result.sampling_seconds += setup.seconds();
@@ -97,6 +108,8 @@ public:
         }
         m_result.shading_seconds += shading.seconds();
         m_result.vpls += m_chunk.size();
+        if (m_compensation && m_job.compensation_passes == 0)
+            m_compensation->allow(paced_compensation_passes(m_result.vpls));
     }
 
     // The image: scale · Σ contributions + the emitted radiance seen directly.
@@ -114,6 +127,10 @@ public:
                 reference::gather_vpls(m_session.scene(), m_session.accel(), {}, emission);
             add_image(m_result.image, m_sum, float(m_stream->scale()));
         }
+        if (m_compensation) {
+            add_image(m_result.image, m_compensation->finish(!m_open_ended));
+            m_result.compensation_passes = m_compensation->passes();
+        }
         m_result.shading_seconds += shading.seconds();
     }
 
@@ -121,18 +138,20 @@ private:
     const RenderJob& m_job;
     const session::SceneSession& m_session;
     RenderOutcome& m_result;
+    bool m_open_ended;
     std::unique_ptr<sampler::VplStream> m_stream;
     bool m_unlit = false;
     reference::GatherOptions m_gather;
     Image m_sum;
     std::vector<light::Vpl> m_chunk;
+    std::unique_ptr<CompensationThread> m_compensation;
 };
 
 }  // namespace
 
 RenderOutcome render_once(const RenderJob& job, uint64_t units) {
     RenderOutcome result;
-    ChunkedRender run(job, result);
+    ChunkedRender run(job, result, false);
     Progress progress("render", int64_t(std::min<uint64_t>(units, INT64_MAX)), job.quiet);
     // Chunk by chunk, so that memory does not grow with `units`: the same VPLs as at once (the
     // Monte Carlo stream's blocks are aligned to path indices, and a chunk is a whole number of
@@ -152,7 +171,7 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
 RenderOutcome render_for(const RenderJob& job, double seconds) {
     RenderOutcome result;
     Timer budget;
-    ChunkedRender run(job, result);
+    ChunkedRender run(job, result, true);
     // Progress in tenths of the budget.
     const int64_t tenths = int64_t(std::ceil(seconds * 10.0));
     int64_t shown = 0;
@@ -180,6 +199,8 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
             r.timings.g_buffer_ms, r.timings.shadow_ms, r.timings.shading_ms, r.timings.batches);
         pass_times = buf;
     }
+    if (r.compensation_passes > 0)
+        pass_times += "; compensation " + std::to_string(r.compensation_passes) + " spp";
     char line[512];
     std::snprintf(line, sizeof line,
                   "render: %zu VPLs from %llu %s, %dx%d: sampling %.2f s, shading %.2f s (%s), "

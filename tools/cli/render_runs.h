@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/core/image.h"
+#include "engine/reference/clamp_compensation.h"
 #include "engine/reference/vpl_gather.h"
 #include "engine/render/vpl_renderer.h"
 #include "sampler/sampler_factory.h"
@@ -21,6 +22,12 @@ struct RenderJob {
     render::RenderOptions render;             // the GPU renderer's options
     reference::GatherOptions gather;          // the CPU oracle's
     render::VplRenderer* renderer = nullptr;  // null: shade with the CPU oracle
+    // Clamping compensation (reference/clamp_compensation.h), on a CPU thread beside the
+    // shading: `compensation_passes` samples per pixel, or 0: one per 32 VPLs shaded (under a
+    // time budget, those done when it ends).
+    bool compensate = false;
+    uint32_t compensation_passes = 0;
+    reference::CompensationOptions compensation;
     bool quiet = false;
 };
 
@@ -33,6 +40,7 @@ struct RenderOutcome {
     double shading_seconds = 0.0;
     std::string statistics;         // the sampler's, may be empty
     render::RenderTimings timings;  // GPU only
+    uint32_t compensation_passes = 0;
 };
 
 // `units` light paths or chain steps, sampled at once, then shaded.

@@ -1,0 +1,158 @@
+#include "engine/reference/clamp_compensation.h"
+
+#include <algorithm>
+#include <cmath>
+#include <mutex>
+#include <optional>
+#include <vector>
+
+#include "engine/core/parallel.h"
+#include "engine/core/rng.h"
+#include "engine/light/vpl_contribution.h"
+#include "engine/reference/path_tracer.h"
+#include "engine/scene/camera.h"
+#include "engine/trace/ray.h"
+
+namespace mvpl::reference {
+
+struct ClampCompensation::Impl {
+    const scene::Scene& scene;
+    const trace::Accel& accel;
+    CompensationOptions options;
+    PathTracer path_tracer;
+    float d_min = 0.0f;
+    std::vector<const scene::Light*> punctual;  // point and spot lights
+    std::vector<Rgb> pass_image;                // the pass under way
+    mutable std::mutex mutex;                   // guards sum and passes
+    std::vector<DVec3> sum;                     // per pixel, over the passes
+    uint32_t passes = 0;
+
+    Impl(const scene::Scene& s, const trace::Accel& a, const light::LightSampler& lights,
+         const CompensationOptions& o)
+        : scene(s),
+          accel(a),
+          options(o),
+          path_tracer(s, a, lights),
+          d_min(o.clamp * s.bounds().diagonal()),
+          pass_image(size_t(o.width) * size_t(o.height)),
+          sum(pass_image.size(), DVec3(0.0)) {
+        for (const scene::Light& l : s.lights) {
+            if (l.type == scene::LightType::Point || l.type == scene::LightType::Spot)
+                punctual.push_back(&l);
+        }
+    }
+
+    // VPL light needs a light path vertex and the receiver: at least two segments.
+    bool active() const {
+        return d_min > 0.0f && (options.max_depth < 0 || options.max_depth >= 2);
+    }
+
+    // The share of a point at distance d that the clamped estimate leaves out.
+    float missing(float d) const { return std::max(0.0f, 1.0f - (d * d) / (d_min * d_min)); }
+
+    // Punctual lights nearer than d_min: I·(1/d² − 1/d_min²)·f·cos θ, visibility exact.
+    Rgb punctual_part(const light::Receiver& r) const {
+        Rgb out(0.0f);
+        for (const scene::Light* l : punctual) {
+            const Vec3 to_light = l->position - r.sp.p;
+            const float d = glm::length(to_light);
+            if (!(d > 0.0f) || d >= d_min) continue;
+            const Vec3 wi_world = to_light / d;
+            const Vec3 wi = r.sp.frame.to_local(wi_world);
+            if (wi.z <= 0.0f || glm::dot(wi_world, r.sp.ng) <= 0.0f) continue;
+            float falloff = 1.0f;
+            if (l->type == scene::LightType::Spot)
+                falloff = light::spot_attenuation(*l, glm::dot(l->direction, -wi_world));
+            if (falloff <= 0.0f) continue;
+            const Rgb f = r.sp.bsdf.eval(r.wo, wi);
+            if (is_black(f)) continue;
+            if (accel.occluded(trace::spawn_ray_to(r.sp.p, r.sp.ng, l->position, Vec3(0.0f))))
+                continue;
+            out += f * wi.z * l->intensity * falloff * (missing(d) / (d * d));
+        }
+        return out;
+    }
+
+    Rgb sample_pixel(int x, int y, Rng& rng) const {
+        const Vec2 film(float(x) + rng.next_float(), float(y) + rng.next_float());
+        const scene::CameraRay cr =
+            scene::generate_camera_ray(scene.camera, options.width, options.height, film);
+        const std::optional<light::Receiver> r =
+            light::make_receiver(scene, accel, trace::Ray{cr.origin, cr.direction});
+        if (!r) return Rgb(0.0f);
+        Rgb out = punctual_part(*r);
+        const float u_lobe = rng.next_float();
+        const Vec2 u(rng.next_float(), rng.next_float());
+        const std::optional<material::BsdfSample> bs = r->sp.bsdf.sample(r->wo, u, u_lobe);
+        if (!bs) return out;
+        const Vec3 wi_world = glm::normalize(r->sp.frame.to_world(bs->wi));
+        if (glm::dot(wi_world, r->sp.ng) <= 0.0f) return out;
+        trace::Ray ray = trace::spawn_ray(r->sp.p, r->sp.ng, wi_world);
+        ray.tmax = d_min;
+        const std::optional<trace::Hit> hit = accel.intersect(ray);
+        if (!hit) return out;
+        // The path tracer goes on from the receiver: one segment fewer than the whole path.
+        const int depth = options.max_depth < 0 ? -1 : options.max_depth - 1;
+        const Rgb L = path_tracer.radiance(ray, rng, depth, std::max(1, options.rr_depth - 1));
+        return out + bs->weight * L * missing(hit->t);
+    }
+
+    void add_pass() {
+        uint32_t pass = 0;
+        {
+            const std::lock_guard lock(mutex);
+            pass = passes;
+        }
+        std::fill(pass_image.begin(), pass_image.end(), Rgb(0.0f));
+        if (active()) {
+            const uint64_t seed = mix_bits(options.seed ^ (uint64_t(pass) << 32));
+            parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {
+                for (int64_t y = y0; y < y1; ++y) {
+                    for (int x = 0; x < options.width; ++x) {
+                        const size_t pixel = size_t(y) * size_t(options.width) + size_t(x);
+                        Rng rng(seed, pixel);
+                        const Rgb c = sample_pixel(x, int(y), rng);
+                        if (is_finite(c)) pass_image[pixel] = c;
+                    }
+                }
+            });
+        }
+        const std::lock_guard lock(mutex);
+        for (size_t i = 0; i < sum.size(); ++i)
+            sum[i] += DVec3(pass_image[i]);
+        passes = pass + 1;
+    }
+};
+
+ClampCompensation::ClampCompensation(const scene::Scene& scene, const trace::Accel& accel,
+                                     const light::LightSampler& lights,
+                                     const CompensationOptions& options)
+    : m_impl(std::make_unique<Impl>(scene, accel, lights, options)) {}
+
+ClampCompensation::~ClampCompensation() = default;
+
+void ClampCompensation::add_pass() {
+    m_impl->add_pass();
+}
+
+uint32_t ClampCompensation::passes() const {
+    const std::lock_guard lock(m_impl->mutex);
+    return m_impl->passes;
+}
+
+bool ClampCompensation::active() const {
+    return m_impl->active();
+}
+
+Image ClampCompensation::image() const {
+    const CompensationOptions& o = m_impl->options;
+    Image out(o.width, o.height);
+    const std::lock_guard lock(m_impl->mutex);
+    const uint32_t n = m_impl->passes;
+    if (n == 0) return out;
+    for (size_t i = 0; i < m_impl->sum.size(); ++i)
+        out.pixels()[i] = Rgb(m_impl->sum[i] / double(n));
+    return out;
+}
+
+}  // namespace mvpl::reference

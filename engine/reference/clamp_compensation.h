@@ -1,0 +1,61 @@
+#pragma once
+// Clamping compensation (Kollig & Keller 2004, "Illumination in the presence of weak
+// singularities"): the energy that the clamped geometric term of the VPL estimate removes,
+// recovered on the CPU by BSDF sampling from each receiver.
+//
+// The VPL estimate divides by max(d², d_min²) instead of d² (DESIGN.md, "The algorithm"), so a
+// surface point y at distance d < d_min from the receiver x contributes only the fraction d²/d_min²
+// of its light. The rest is
+//
+//     C(x) = ∫ f(x, ω, ωo) L(y(ω) → x) cos θ · max(0, 1 − d(ω)²/d_min²) dω,
+//
+// which one BSDF sample estimates as (f cos θ / pdf) · L(y → x) · max(0, 1 − d²/d_min²), with
+// L(y → x) the radiance the path tracer finds along the sampled ray (reference::PathTracer, the
+// path's remaining depth; emission at y included). A ray is bounded by d_min, so a sample that
+// finds nothing nearer costs one short ray. Point and spot lights nearer than d_min, which no BSDF
+// sample can hit, are compensated by evaluating them: I · (1/d² − 1/d_min²) with exact visibility.
+// Clamped VPL image + C is unbiased, whatever the clamp (tests/reference/test_clamp_compensation).
+#include <cstdint>
+#include <memory>
+
+#include "engine/core/image.h"
+#include "engine/light/light_sampler.h"
+#include "engine/light/vpl.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl::reference {
+
+struct CompensationOptions {
+    int width = 256;
+    int height = 256;
+    float clamp = light::kDefaultClamp;  // d_min as a fraction of the scene's diagonal
+    int max_depth = 6;                   // of the whole path, camera included; < 0: unlimited
+    int rr_depth = 5;
+    uint64_t seed = 0;
+};
+
+class ClampCompensation {
+public:
+    ClampCompensation(const scene::Scene& scene, const trace::Accel& accel,
+                      const light::LightSampler& lights, const CompensationOptions& options);
+    ~ClampCompensation();
+    ClampCompensation(const ClampCompensation&) = delete;
+    ClampCompensation& operator=(const ClampCompensation&) = delete;
+
+    // One sample per pixel at a random sub-pixel position (a box filter, as the GPU's jittered
+    // G-buffers), in parallel over rows; pass k is the same whatever the thread count. One thread
+    // at a time adds passes; passes() and image() may be called from another meanwhile.
+    void add_pass();
+    uint32_t passes() const;
+    // The mean over the passes completed so far (black before the first).
+    Image image() const;
+    // Whether there is anything to compensate (clamping on and paths long enough for VPL light).
+    bool active() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> m_impl;
+};
+
+}  // namespace mvpl::reference

@@ -1,0 +1,66 @@
+#include "tools/cli/compensation_thread.h"
+
+#include <algorithm>
+
+namespace mvpl::cli {
+
+uint32_t paced_compensation_passes(uint64_t vpls) {
+    return uint32_t(std::min<uint64_t>(1 + vpls / 32, uint64_t(1) << 20));
+}
+
+CompensationThread::CompensationThread(std::unique_ptr<reference::ClampCompensation> compensation)
+    : m_compensation(std::move(compensation)) {
+    m_thread = std::thread([this] { run(); });
+}
+
+CompensationThread::~CompensationThread() {
+    {
+        const std::lock_guard lock(m_mutex);
+        m_stop = true;
+    }
+    m_wake.notify_all();
+    if (m_thread.joinable()) m_thread.join();
+}
+
+void CompensationThread::allow(uint32_t passes) {
+    {
+        const std::lock_guard lock(m_mutex);
+        m_allowed = std::max(m_allowed, passes);
+    }
+    m_wake.notify_all();
+}
+
+void CompensationThread::run() {
+    try {
+        for (;;) {
+            {
+                std::unique_lock lock(m_mutex);
+                m_wake.wait(lock, [&] {
+                    return m_stop || m_drain || m_compensation->passes() < m_allowed;
+                });
+                if (m_stop || m_compensation->passes() >= m_allowed) return;
+            }
+            m_compensation->add_pass();
+        }
+    } catch (...) {
+        m_error = std::current_exception();
+    }
+}
+
+Image CompensationThread::finish(bool wait) {
+    {
+        const std::lock_guard lock(m_mutex);
+        if (wait) {
+            m_drain = true;
+        } else {
+            m_stop = true;
+        }
+    }
+    m_wake.notify_all();
+    if (m_thread.joinable()) m_thread.join();
+    if (m_error) std::rethrow_exception(m_error);
+    if (m_compensation->passes() == 0) m_compensation->add_pass();
+    return m_compensation->image();
+}
+
+}  // namespace mvpl::cli
