@@ -9,6 +9,10 @@
 
 namespace mvpl::material {
 
+namespace {
+constexpr size_t kDispatchGroup = 32;
+}  // namespace
+
 void GlslModule::require(std::string_view name) {
     if (m_done.contains(name)) return;
     const GlslFunction* f = find_glsl_function(name);
@@ -281,18 +285,35 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
     };
     // Materials that share the default's function, and unused ones, take the default branch.
     const int fallback = bodies.empty() ? -1 : 0;
-    std::string dispatch =
+    // Two levels of switch, kDispatchGroup cases each at most: lavapipe (Mesa 22.3) mis-shades
+    // a switch of about 80 cases or more (tests/render/test_many_materials.cpp: with 100
+    // materials in one switch, the first 21 resolved black; as one if-chain, the last 20).
+    const std::string fallback_call =
+        fallback < 0 ? std::string("c = lambertian(vec3(0.0)); e = vec3(0.0); n = s.n;")
+                     : function_name(fallback) + "(s, c, e, n);";
+    std::string groups;
+    std::string top =
         "void resolve_material(uint m, SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n"
-        "    switch (m) {\n";
-    for (size_t i = 0; i < graphs.size(); ++i) {
-        if (function_of[i] < 0 || function_of[i] == fallback) continue;
-        dispatch += "        case " + std::to_string(i) + "u: " + function_name(function_of[i]) +
-                    "(s, c, e, n); return;\n";
+        "    switch (m / " +
+        std::to_string(kDispatchGroup) + "u) {\n";
+    for (size_t g0 = 0; g0 < graphs.size(); g0 += kDispatchGroup) {
+        std::string cases;
+        for (size_t i = g0; i < std::min(graphs.size(), g0 + kDispatchGroup); ++i) {
+            if (function_of[i] < 0 || function_of[i] == fallback) continue;
+            cases += "        case " + std::to_string(i) + "u: " + function_name(function_of[i]) +
+                     "(s, c, e, n); return;\n";
+        }
+        if (cases.empty()) continue;
+        const std::string name = "resolve_group_" + std::to_string(g0 / kDispatchGroup);
+        groups += "void " + name +
+                  "(uint m, SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n"
+                  "    switch (m) {\n" +
+                  cases + "        default: " + fallback_call + " return;\n    }\n}\n";
+        top += "        case " + std::to_string(g0 / kDispatchGroup) + "u: " + name +
+               "(m, s, c, e, n); return;\n";
     }
-    dispatch += "        default: " +
-                (fallback < 0 ? std::string("c = lambertian(vec3(0.0)); e = vec3(0.0); n = s.n;")
-                              : function_name(fallback) + "(s, c, e, n);") +
-                " return;\n    }\n}\n";
+    const std::string dispatch =
+        groups + top + "        default: " + fallback_call + " return;\n    }\n}\n";
     if (bodies.empty()) module.require("lambertian");
 
     MaterialCode out;
