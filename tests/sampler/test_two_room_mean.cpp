@@ -5,17 +5,18 @@
 // image (it does not depend on the resolution, so a small one keeps the gather cheap): the oracle
 // gathers each VPL set at 8×8 pixels with the renderer's sub-pixel positions. The path tracer's
 // means are stored below: its variance here is large (a camera path that bounces off room B's wall
-// into the opening meets radiance ≈ 100× the wall's; ≈ 6× the mean per sample), so the 0.1 % that
-// the comparison needs takes 3·10⁷ samples, minutes on this machine. The VPL side's error is taken
-// from the spread of B = 8 independent VPL sets; each configuration must satisfy
+// into the opening meets radiance ≈ 100× the wall's; a sample's spread is 3–10× the mean), so the
+// 0.1 % that the comparison needs takes 3·10⁷ samples, minutes on this machine. The VPL side's
+// error is taken from the spread of B = 8 independent VPL sets; each configuration must satisfy
 // |vpl − pt| ≤ 4.5 · √(se_vpl² + se_pt²) (Student t with 7 degrees of freedom: P(|t| > 4.5) ≈
 // 3·10⁻³ per configuration; the seeds are fixed, so the test is deterministic). With clamping off
 // the VPL estimators are unbiased but heavy tailed (a VPL next to a receiver): the standard errors
 // are 0.6–1.1 % (Monte Carlo) and 1.2–2.2 % (Metropolis, whose 64-point target is noisier than
-// the command line's 256) in the ≈ 20 s of CPU time this takes. The ratio pooled over the six
-// configurations (inverse-variance weights) must lie within 4.5 of its standard error (≈ 0.4 %)
-// of 1: the deficit this guards against was common to both samplers and every depth, and 7–9 %
-// in size. The 1 % agreement itself was measured with longer runs (results.md).
+// the command line's 256) in the ≈ 14 s this takes on two cores (≈ 40 s inside `ctest -j2`). The
+// ratio pooled over the six configurations (inverse-variance weights) must lie within 4.5 of its
+// standard error (≈ 0.4 %) of 1: the deficit this guards against was common to both samplers and
+// every depth, and 7–9 % in size. The 1 % agreement itself was measured with longer runs
+// (results.md).
 #include <gtest/gtest.h>
 
 #include <cmath>
