@@ -67,6 +67,7 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
             break;
         }
         case light::EmitterType::Directional:
+        case light::EmitterType::Environment:  // a directional light of the sampled direction
             emitter.type = light::VplType::Directional;
             emitter.normal = es->direction;
             break;

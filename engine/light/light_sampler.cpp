@@ -95,6 +95,17 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
         }
         m_emitters.push_back(e);
     }
+    if (scene.environment.active()) {
+        // The flux that a uniform radiance L sends into the bounding sphere: π L per unit area,
+        // over 4π r².
+        Emitter e;
+        e.type = EmitterType::Environment;
+        const double r = double(m_scene_radius);
+        e.power = float(4.0 * std::numbers::pi * std::numbers::pi * r * r *
+                        luminance(scene.environment.radiance));
+        m_environment = int(m_emitters.size());
+        m_emitters.push_back(e);
+    }
     // Emitters with no power cannot be sampled; they stay in the list so that indices are stable.
     // A power beyond float is not dropped (that would render black without a word): the loaders
     // refuse such scenes (scene::check_emitted_power), so one here is a bug.
@@ -118,6 +129,7 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
         m_emitters.clear();
         m_cdf.clear();
         m_total_power = 0.0f;
+        m_environment = -1;
     }
 }
 
@@ -133,6 +145,15 @@ Rgb LightSampler::emitted_radiance(int mesh, int triangle, const Vec2& barycentr
     const Vec3 n = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
     if (glm::dot(n, w) <= 0.0f) return Rgb(0.0f);
     return m_materials.emission(m.material, surface_point(m, triangle, barycentric));
+}
+
+Rgb LightSampler::environment_radiance(const Vec3& /*w*/) const {
+    return m_environment >= 0 ? m_scene.environment.radiance : Rgb(0.0f);
+}
+
+float LightSampler::pdf_environment(const Vec3& /*w*/) const {
+    if (m_environment < 0) return 0.0f;
+    return pick_probability(m_environment) / (4.0f * kPi);
 }
 
 std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick,
@@ -166,6 +187,13 @@ std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick
         s.pdf = pick * dist2 / (cos_light * e.area);
         s.li = m_materials.emission(mesh.material, surface_point(mesh, e.triangle, b));
         if (!std::isfinite(s.pdf)) return std::nullopt;
+        return s;
+    }
+    if (e.type == EmitterType::Environment) {
+        s.wi = sample_uniform_sphere(u);
+        s.distance = std::numeric_limits<float>::infinity();
+        s.li = m_scene.environment.radiance;
+        s.pdf = pick / (4.0f * kPi);
         return s;
     }
 
@@ -236,6 +264,21 @@ std::optional<EmissionSample> LightSampler::sample_le(float u_pick, const Vec2& 
         // Le · cos θ / (pick · pdf_pos · cos θ/π): the cosine cancels exactly.
         s.throughput = radiance * (kPi * e.area / s.pick);
         return is_black(s.le) ? std::nullopt : std::optional<EmissionSample>(s);
+    }
+
+    if (e.type == EmitterType::Environment) {
+        // A uniformly chosen direction of travel, entering through a disk of the bounding
+        // sphere's radius as a directional light does.
+        s.direction = sample_uniform_sphere(u_dir);
+        const Frame frame(s.direction);
+        const Vec2 d = m_scene_radius * sample_concentric_disk(u_pos);
+        s.p = m_scene_center - m_scene_radius * s.direction + frame.s * d.x + frame.t * d.y;
+        s.n = s.direction;
+        s.pdf_pos = 1.0f / (kPi * m_scene_radius * m_scene_radius);
+        s.pdf_dir = 1.0f / (4.0f * kPi);
+        s.le = m_scene.environment.radiance / (s.pick * s.pdf_dir);
+        s.throughput = s.le / s.pdf_pos;
+        return s;
     }
 
     const scene::Light& light = m_scene.lights[e.light];

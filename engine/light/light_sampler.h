@@ -12,7 +12,7 @@
 
 namespace mvpl::light {
 
-enum class EmitterType { Triangle, Point, Spot, Directional };
+enum class EmitterType { Triangle, Point, Spot, Directional, Environment };
 
 struct Emitter {
     EmitterType type = EmitterType::Triangle;
@@ -69,12 +69,19 @@ public:
     // Emitted radiance of an emissive triangle point seen from direction w (leaving the
     // surface); zero from the back side.
     Rgb emitted_radiance(int mesh, int triangle, const Vec2& barycentric, const Vec3& w) const;
+    // The environment's radiance arriving from direction w (unit, pointing away from the
+    // receiver), and the solid-angle density with which sample_li picks that direction (0
+    // without an environment): what a ray that leaves the scene sees, and its MIS weight.
+    Rgb environment_radiance(const Vec3& w) const;
+    float pdf_environment(const Vec3& w) const;
 
     // Picks an emitter ∝ power (u_pick), a point on it (u_pos) and a direction of emission (u_dir):
     // point lights uniformly over the sphere, spot lights uniformly within the outer cone (the
     // falloff goes into the throughput), triangles cosine-weighted around the front normal,
     // directional lights from a disk of the scene's bounding-sphere radius perpendicular to the
-    // direction (pdf_pos = 1/(π r²)).
+    // direction (pdf_pos = 1/(π r²)); the environment as a directional light of a uniformly
+    // chosen direction (pdf_dir = 1/(4π)) whose `le` is the radiance over that density, an
+    // irradiance (pbrt-v4's UniformInfiniteLight::SampleLe).
     std::optional<EmissionSample> sample_le(float u_pick, const Vec2& u_pos,
                                             const Vec2& u_dir) const;
     float scene_radius() const { return m_scene_radius; }
@@ -92,6 +99,7 @@ private:
     float m_total_power = 0.0f;
     float m_scene_radius = 1.0f;
     Vec3 m_scene_center{0.0f};
+    int m_environment = -1;  // index of the environment's emitter, or −1
 };
 
 // KHR_lights_punctual spot attenuation for the cosine between the spot axis and the direction

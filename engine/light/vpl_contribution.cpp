@@ -50,7 +50,11 @@ PreparedVpl prepare_vpl(const Vpl& vpl) {
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
                                       const trace::Ray& camera_ray, Rgb* emitted) {
     const std::optional<trace::Hit> hit = accel.intersect(camera_ray);
-    if (!hit) return std::nullopt;
+    if (!hit) {
+        // The environment (constant for now) seen where the ray leaves the scene.
+        if (emitted) *emitted += scene.environment.radiance;
+        return std::nullopt;
+    }
     const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, camera_ray);
     // Emitters emit from their front face only, whatever doubleSided says.
     if (emitted && si.front_face) {

@@ -30,7 +30,8 @@ struct Receiver {
     Vec3 wo{0.0f, 0.0f, 1.0f};  // towards the camera, in sp.frame; wo.z > 0
 };
 // The receiver at the first hit of `camera_ray`, if any and seen from above its shading surface;
-// `emitted` (optional) receives the emitted radiance seen there (front face only).
+// `emitted` (optional) receives the emitted radiance seen there (front face only), or the
+// environment's where the ray leaves the scene.
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
                                       const trace::Ray& camera_ray, Rgb* emitted = nullptr);
 

@@ -37,7 +37,18 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth,
     // depth = number of segments of the path up to the current vertex (Mitsuba's convention).
     for (int depth = 1;; ++depth) {
         const std::optional<trace::Hit> hit = m_accel.intersect(ray);
-        if (!hit) break;
+        if (!hit) {
+            // The environment, weighted against the light sample that could have chosen the
+            // same direction.
+            const Vec3 w = glm::normalize(ray.direction);
+            const Rgb le = m_lights.environment_radiance(w);
+            if (!is_black(le)) {
+                const float weight =
+                    depth > 1 ? power_heuristic(prev_bsdf_pdf, m_lights.pdf_environment(w)) : 1.0f;
+                L += throughput * le * weight;
+            }
+            break;
+        }
         const trace::SurfaceInteraction si = trace::make_interaction(m_scene, *hit, ray);
         const Vec3 wo_world = -glm::normalize(ray.direction);
 

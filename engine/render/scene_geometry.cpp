@@ -10,7 +10,8 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
     : m_graphs(material::SceneMaterials(scene).graphs()),
       m_drawn(drawn_materials(scene)),
       m_features(scene_features(scene, ShaderOptions{})),
-      m_textures(scene.textures) {
+      m_textures(scene.textures),
+      m_environment(scene.environment.radiance) {
     for (const scene::Material& m : scene.materials)
         m_materials.push_back({m.emission(), m.double_sided});
     if (m_materials.empty()) {

@@ -63,6 +63,9 @@ public:
     }
     uint32_t vertex_count() const { return m_vertex_count; }
     const scene::Bounds& bounds() const { return m_bounds; }
+    // The environment's (constant) radiance: what the G-buffer's emission layer holds where no
+    // surface covers a pixel.
+    const Rgb& environment() const { return m_environment; }
 
 private:
     gpu::Buffer m_vertices;
@@ -74,6 +77,7 @@ private:
     std::vector<scene::Texture> m_textures;
     uint32_t m_vertex_count = 0;
     scene::Bounds m_bounds;
+    Rgb m_environment{0.0f};
 };
 
 // Writes the generated GLSL of every stage that the renderer builds for this geometry

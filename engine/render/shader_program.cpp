@@ -175,6 +175,8 @@ ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& op
         }
     }
     f.vpl_types[size_t(light::VplType::Surface)] = options.surface_vpls;
+    // The environment's direct light comes as directional VPLs (light::LightSampler::sample_le).
+    if (scene.environment.active()) f.vpl_types[size_t(light::VplType::Directional)] = true;
     const material::SceneMaterials materials(scene);
     const std::vector<bool> drawn = drawn_materials(scene);
     std::vector<material::MaterialGraph> graphs;

@@ -150,6 +150,34 @@ TEST(Cli, RenderCompensatesTheClampByDefault) {
         std::filesystem::remove(f);
 }
 
+// A scene without any light is lit by a uniform white sky (one line says so); --no-default-light
+// keeps it black with the old warning; --env-color sets the sky, which the background shows.
+TEST(Cli, AnUnlitSceneGetsTheDefaultSky) {
+    const std::string scene = MVPL_TEST_DATA_DIR "/gltf/flat_normals.gltf";
+    const std::string lit = temp_file("sky_lit.exr"), black = temp_file("sky_black.exr"),
+                      tinted = temp_file("sky_tinted.exr");
+    const std::string common = "render " + shell_quote(scene) + " --vpls 16 --res 16x16 --quiet ";
+    const auto r = run_gpu(common + "-o " + shell_quote(lit));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("uniform white sky"), std::string::npos) << r.err;
+    EXPECT_GT(read_exr(lit).mean().g, 0.1f);
+    const auto b = run_gpu(common + "--no-default-light -o " + shell_quote(black));
+    ASSERT_EQ(b.exit_code, 0) << b.err;
+    EXPECT_NE(b.err.find("no light"), std::string::npos) << b.err;
+    EXPECT_EQ(read_exr(black).mean(), Rgb(0.0f));
+    const auto t = run_gpu(common + "--env-color 0,0,2 --env-scale 0.5 -o " + shell_quote(tinted));
+    ASSERT_EQ(t.exit_code, 0) << t.err;
+    EXPECT_EQ(t.err.find("white sky"), std::string::npos) << t.err;
+    const Rgb m = read_exr(tinted).mean();
+    EXPECT_EQ(m.r, 0.0f);
+    EXPECT_GT(m.b, 0.1f);
+    expect_one_line_error(run_gpu(common + "--env-color 1,2"), "--env-color");
+    expect_one_line_error(run_gpu(common + "--env-color 1,x,2"), "--env-color");
+    expect_one_line_error(run_gpu(common + "--env-scale -1"), "--env-scale");
+    for (const auto& f : {lit, black, tinted})
+        std::filesystem::remove(f);
+}
+
 // A camera inside a room with yfov 3.1 and znear 0.2 (tests/data/gltf/wide_angle.gltf): the near
 // plane, where the G-buffer's rasteriser clips, cuts through most of the view. Camera rays start
 // on it (scene::generate_camera_ray), so the oracle shades what the GPU shades and `reference`

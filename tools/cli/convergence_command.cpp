@@ -109,6 +109,8 @@ int run_convergence(const Args& args) {
     add_seed_option(parser, settings.seed);
     CameraArgs camera;
     add_camera_options(parser, camera);
+    EnvironmentArgs environment;
+    add_environment_options(parser, environment);
     parser.add_flag("--no-plot", &no_plot, "write the CSV only");
     parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
     if (!parser.parse(args)) return 0;
@@ -130,7 +132,7 @@ int run_convergence(const Args& args) {
                          std::to_string(reference.width()) + "x" +
                          std::to_string(reference.height()));
     }
-    const session::SceneSession session(scene_path, camera.choice);
+    const session::SceneSession session(scene_path, camera.choice, environment.choice);
     std::filesystem::create_directories(out_dir);
 
     ConvergenceRun run;

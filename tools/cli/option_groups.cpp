@@ -17,6 +17,25 @@ namespace {
     throw UsageError(parser.command() + ": " + option + " must be in " + range);
 }
 
+// The comma-separated numbers of an option's value, each finite.
+std::vector<float> finite_numbers(const ArgParser& parser, const std::string& option,
+                                  const std::string& text) {
+    std::vector<float> v;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t comma = std::min(text.find(',', start), text.size());
+        const std::string item = text.substr(start, comma - start);
+        char* end = nullptr;
+        const float x = std::strtof(item.c_str(), &end);
+        if (item.empty() || *end != '\0' || !std::isfinite(x))
+            throw UsageError(parser.command() + ": " + option + ": '" + item +
+                             "' is not a finite number");
+        v.push_back(x);
+        start = comma + 1;
+    }
+    return v;
+}
+
 }  // namespace
 
 void RendererArgs::apply(render::RenderOptions& o) const {
@@ -141,20 +160,7 @@ void add_camera_options(ArgParser& parser, CameraArgs& args) {
         c.index = args.camera;
         c.fov_degrees = args.fov;
         if (args.look_at.empty()) return;
-        std::vector<float> v;
-        size_t start = 0;
-        while (start <= args.look_at.size()) {
-            const size_t comma = std::min(args.look_at.find(',', start), args.look_at.size());
-            const std::string item = args.look_at.substr(start, comma - start);
-            char* end = nullptr;
-            const float x = std::strtof(item.c_str(), &end);
-            if (item.empty() || *end != '\0' || !std::isfinite(x)) {
-                throw UsageError(parser.command() + ": --look-at: '" + item +
-                                 "' is not a finite number");
-            }
-            v.push_back(x);
-            start = comma + 1;
-        }
+        const std::vector<float> v = finite_numbers(parser, "--look-at", args.look_at);
         if (v.size() != 6 && v.size() != 9) {
             throw UsageError(parser.command() + ": --look-at takes 6 or 9 numbers, not " +
                              std::to_string(v.size()));
@@ -165,6 +171,32 @@ void add_camera_options(ArgParser& parser, CameraArgs& args) {
         if (v.size() == 9) c.up = Vec3(v[6], v[7], v[8]);
         if (!(glm::length(c.eye - c.target) > 0.0f))
             throw UsageError(parser.command() + ": --look-at: the eye is the target");
+    });
+}
+
+void add_environment_options(ArgParser& parser, EnvironmentArgs& args) {
+    parser.add_string("--env-color", &args.color,
+                      "R,G,B: a uniform environment of this radiance around the scene (linear)");
+    parser.add_float("--env-scale", &args.scale, "multiplies the environment's radiance");
+    parser.add_flag("--no-default-light", &args.no_default_light,
+                    "a scene without any light stays black (default: a uniform white sky)");
+    parser.add_check([&parser, &args] {
+        // The range scene_range.h gives emitted radiance.
+        if (!(args.scale >= 0.0f && args.scale <= 1e15f))
+            out_of_range(parser, "--env-scale", "[0, 1e15]");
+        session::EnvironmentChoice& c = args.choice;
+        c.scale = args.scale;
+        c.default_light = !args.no_default_light;
+        if (args.color.empty()) return;
+        const std::vector<float> v = finite_numbers(parser, "--env-color", args.color);
+        if (v.size() != 3)
+            throw UsageError(parser.command() + ": --env-color takes 3 numbers, not " +
+                             std::to_string(v.size()));
+        for (float x : v) {
+            if (!(x >= 0.0f && x <= 1e15f)) out_of_range(parser, "--env-color", "[0, 1e15]");
+        }
+        c.has_color = true;
+        c.color = Rgb(v[0], v[1], v[2]);
     });
 }
 

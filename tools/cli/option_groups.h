@@ -10,6 +10,7 @@
 #include "engine/scene/camera_choice.h"
 #include "sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
+#include "tools/session/scene_session.h"
 
 namespace mvpl::cli {
 
@@ -60,5 +61,15 @@ struct CameraArgs {
     scene::CameraChoice choice;  // filled by the parser's check
 };
 void add_camera_options(ArgParser& parser, CameraArgs& args);
+
+// --env-color R,G,B, --env-scale S, --no-default-light: the environment around the scene
+// (session::EnvironmentChoice).
+struct EnvironmentArgs {
+    std::string color;
+    float scale = 1.0f;
+    bool no_default_light = false;
+    session::EnvironmentChoice choice;  // filled by the parser's check
+};
+void add_environment_options(ArgParser& parser, EnvironmentArgs& args);
 
 }  // namespace mvpl::cli

@@ -52,6 +52,8 @@ int run_preview(const Args& args) {
     add_max_depth_option(parser, o.max_depth);
     CameraArgs camera;
     add_camera_options(parser, camera);
+    EnvironmentArgs environment;
+    add_environment_options(parser, environment);
     add_renderer_options(parser, renderer);  // C toggles clamping in the window
     parser.add_flag("--no-hud", &no_hud, "no text overlay");
     parser.add_flag("--no-motion-scaling", &no_motion_scaling,
@@ -77,6 +79,7 @@ int run_preview(const Args& args) {
     o.hud = !no_hud;
     o.motion_scaling = !no_motion_scaling;
     o.camera = camera.choice;
+    o.environment = environment.choice;
     return preview::run_preview(o);
 }
 

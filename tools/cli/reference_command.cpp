@@ -32,6 +32,8 @@ int run_reference(const Args& args) {
     add_seed_option(parser, options.seed);
     CameraArgs camera;
     add_camera_options(parser, camera);
+    EnvironmentArgs environment;
+    add_environment_options(parser, environment);
     parser.add_strings("-o", &outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &exposure, "PNG exposure in stops");
     parser.add_int("--threads", &threads, "worker threads (0 = all cores)");
@@ -48,7 +50,7 @@ int run_reference(const Args& args) {
                                                       threads);
     }
 
-    const session::SceneSession session(scene_path, camera.choice);
+    const session::SceneSession session(scene_path, camera.choice, environment.choice);
     session.warn_if_no_light("the image is black");
 
     reference::RenderStats stats;

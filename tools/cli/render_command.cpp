@@ -22,6 +22,7 @@ namespace {
 struct RenderArgs {
     std::string scene_path;
     CameraArgs camera;
+    EnvironmentArgs environment;
     std::string sampler_name = "mc";
     std::string per_path;  // empty: each sampler's default
     uint64_t paths = 1024;
@@ -57,6 +58,7 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     add_max_depth_option(parser, a.settings.tracer.max_depth);
     add_seed_option(parser, a.settings.seed);
     add_camera_options(parser, a.camera);
+    add_environment_options(parser, a.environment);
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
     add_device_option(parser, a.device, "Vulkan device index (see mvpl info); -1 = default");
@@ -145,7 +147,7 @@ int run_render(const Args& args) {
     check_outputs(a.outputs);
 
     Timer total;
-    const session::SceneSession session(a.scene_path, a.camera.choice);
+    const session::SceneSession session(a.scene_path, a.camera.choice, a.environment.choice);
     session.warn_if_no_light("the image shows emitters only");
     RenderJob job = make_job(a, session);
     std::unique_ptr<gpu::Context> context;

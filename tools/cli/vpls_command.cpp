@@ -120,6 +120,8 @@ int run_vpls(const Args& args) {
     add_seed_option(parser, settings.seed);
     CameraArgs camera;
     add_camera_options(parser, camera);
+    EnvironmentArgs environment;
+    add_environment_options(parser, environment);
     parser.add_strings("-o", &outputs, "output image, .png or .exr");
     parser.add_flag("--quiet", &quiet, "no summary line");
     if (!parser.parse(args)) return 0;
@@ -131,7 +133,7 @@ int run_vpls(const Args& args) {
     outputs = outputs_or(outputs, "vpls.png", defaulted);
     check_outputs(outputs);
 
-    const session::SceneSession session(scene_path, camera.choice);
+    const session::SceneSession session(scene_path, camera.choice, environment.choice);
     const scene::Scene& scene = session.scene();
     const trace::Accel& accel = session.accel();
     // The Metropolis target is the scene camera's view, whatever this picture shows.

@@ -6,9 +6,32 @@
 
 namespace mvpl::session {
 
-SceneSession::SceneSession(const std::string& path, const scene::CameraChoice& camera)
+namespace {
+
+// The scene with the environment the command asked for; a scene without emitters gets the
+// default sky unless the command said no.
+scene::Scene load_with_environment(const std::string& path, const EnvironmentChoice& choice) {
+    scene::Scene scene = scene::load_scene(path);
+    if (choice.has_color) {
+        scene.environment.radiance = choice.color * choice.scale;
+    } else if (choice.default_light && light::LightSampler(scene).empty()) {
+        scene.environment.radiance = Rgb(choice.scale);
+        char line[160];
+        std::snprintf(line, sizeof line,
+                      "the scene has no light: it is lit by a uniform white sky of radiance %g "
+                      "(--env-color sets another, --no-default-light none)",
+                      double(choice.scale));
+        scene.warnings.emplace_back(line);
+    }
+    return scene;
+}
+
+}  // namespace
+
+SceneSession::SceneSession(const std::string& path, const scene::CameraChoice& camera,
+                           const EnvironmentChoice& environment)
     : m_path(path),
-      m_scene(scene::load_scene(path)),
+      m_scene(load_with_environment(path, environment)),
       m_load_seconds(m_clock.seconds()),
       m_accel(m_scene),
       m_bvh_seconds(m_clock.seconds() - m_load_seconds),

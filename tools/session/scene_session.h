@@ -9,16 +9,20 @@
 #include "engine/core/timer.h"
 #include "engine/light/light_sampler.h"
 #include "engine/scene/camera_choice.h"
+#include "engine/scene/environment_choice.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
 namespace mvpl::session {
 
+using scene::EnvironmentChoice;
+
 class SceneSession {
 public:
     // Throws InputError (exit code 2) when the scene cannot be read, UsageError when `camera`
     // names no camera of it. Prints the loader's warnings (Scene::warnings).
-    explicit SceneSession(const std::string& path, const scene::CameraChoice& camera = {});
+    explicit SceneSession(const std::string& path, const scene::CameraChoice& camera = {},
+                          const EnvironmentChoice& environment = {});
     SceneSession(const SceneSession&) = delete;
     SceneSession& operator=(const SceneSession&) = delete;
 
