@@ -96,13 +96,13 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
         m_emitters.push_back(e);
     }
     if (scene.environment.active()) {
-        // The flux that a uniform radiance L sends into the bounding sphere: π L per unit area,
-        // over 4π r².
+        // The flux through the bounding sphere's disk, π r² ∫ L dω (4π² r² L when uniform), as
+        // a directional light's π r² E.
+        m_environment_sampler = EnvironmentSampler(scene.environment);
         Emitter e;
         e.type = EmitterType::Environment;
         const double r = double(m_scene_radius);
-        e.power = float(4.0 * std::numbers::pi * std::numbers::pi * r * r *
-                        luminance(scene.environment.radiance));
+        e.power = float(std::numbers::pi * r * r * m_environment_sampler.integrated_luminance());
         m_environment = int(m_emitters.size());
         m_emitters.push_back(e);
     }
@@ -147,13 +147,13 @@ Rgb LightSampler::emitted_radiance(int mesh, int triangle, const Vec2& barycentr
     return m_materials.emission(m.material, surface_point(m, triangle, barycentric));
 }
 
-Rgb LightSampler::environment_radiance(const Vec3& /*w*/) const {
-    return m_environment >= 0 ? m_scene.environment.radiance : Rgb(0.0f);
+Rgb LightSampler::environment_radiance(const Vec3& w) const {
+    return m_environment >= 0 ? m_scene.environment.lookup(w) : Rgb(0.0f);
 }
 
-float LightSampler::pdf_environment(const Vec3& /*w*/) const {
+float LightSampler::pdf_environment(const Vec3& w) const {
     if (m_environment < 0) return 0.0f;
-    return pick_probability(m_environment) / (4.0f * kPi);
+    return pick_probability(m_environment) * m_environment_sampler.pdf(w);
 }
 
 std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick,
@@ -190,11 +190,13 @@ std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick
         return s;
     }
     if (e.type == EmitterType::Environment) {
-        s.wi = sample_uniform_sphere(u);
+        const EnvironmentDirection d = m_environment_sampler.sample(u);
+        if (!(d.pdf > 0.0f)) return std::nullopt;
+        s.wi = d.w;
         s.distance = std::numeric_limits<float>::infinity();
-        s.li = m_scene.environment.radiance;
-        s.pdf = pick / (4.0f * kPi);
-        return s;
+        s.li = m_scene.environment.lookup(d.w);
+        s.pdf = pick * d.pdf;
+        return is_black(s.li) ? std::nullopt : std::optional<LightSample>(s);
     }
 
     const scene::Light& light = m_scene.lights[e.light];
@@ -267,18 +269,20 @@ std::optional<EmissionSample> LightSampler::sample_le(float u_pick, const Vec2& 
     }
 
     if (e.type == EmitterType::Environment) {
-        // A uniformly chosen direction of travel, entering through a disk of the bounding
-        // sphere's radius as a directional light does.
-        s.direction = sample_uniform_sphere(u_dir);
+        // A direction towards the environment chosen by its sampler; the light travels the other
+        // way, entering through a disk of the bounding sphere's radius as a directional light's.
+        const EnvironmentDirection towards = m_environment_sampler.sample(u_dir);
+        if (!(towards.pdf > 0.0f)) return std::nullopt;
+        s.direction = -towards.w;
         const Frame frame(s.direction);
         const Vec2 d = m_scene_radius * sample_concentric_disk(u_pos);
         s.p = m_scene_center - m_scene_radius * s.direction + frame.s * d.x + frame.t * d.y;
         s.n = s.direction;
         s.pdf_pos = 1.0f / (kPi * m_scene_radius * m_scene_radius);
-        s.pdf_dir = 1.0f / (4.0f * kPi);
-        s.le = m_scene.environment.radiance / (s.pick * s.pdf_dir);
+        s.pdf_dir = towards.pdf;
+        s.le = m_scene.environment.lookup(towards.w) / (s.pick * s.pdf_dir);
         s.throughput = s.le / s.pdf_pos;
-        return s;
+        return is_black(s.le) ? std::nullopt : std::optional<EmissionSample>(s);
     }
 
     const scene::Light& light = m_scene.lights[e.light];

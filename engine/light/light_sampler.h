@@ -7,6 +7,7 @@
 
 #include "engine/core/color.h"
 #include "engine/core/math.h"
+#include "engine/light/environment_sampler.h"
 #include "engine/material/scene_materials.h"
 #include "engine/scene/scene.h"
 
@@ -79,9 +80,9 @@ public:
     // point lights uniformly over the sphere, spot lights uniformly within the outer cone (the
     // falloff goes into the throughput), triangles cosine-weighted around the front normal,
     // directional lights from a disk of the scene's bounding-sphere radius perpendicular to the
-    // direction (pdf_pos = 1/(π r²)); the environment as a directional light of a uniformly
-    // chosen direction (pdf_dir = 1/(4π)) whose `le` is the radiance over that density, an
-    // irradiance (pbrt-v4's UniformInfiniteLight::SampleLe).
+    // direction (pdf_pos = 1/(π r²)); the environment as a directional light of a direction
+    // chosen by its EnvironmentSampler, whose `le` is the radiance over that density, an
+    // irradiance (pbrt-v4's ImageInfiniteLight::SampleLe).
     std::optional<EmissionSample> sample_le(float u_pick, const Vec2& u_pos,
                                             const Vec2& u_dir) const;
     float scene_radius() const { return m_scene_radius; }
@@ -100,6 +101,7 @@ private:
     float m_scene_radius = 1.0f;
     Vec3 m_scene_center{0.0f};
     int m_environment = -1;  // index of the environment's emitter, or −1
+    EnvironmentSampler m_environment_sampler;
 };
 
 // KHR_lights_punctual spot attenuation for the cosine between the spot axis and the direction

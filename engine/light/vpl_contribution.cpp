@@ -51,8 +51,9 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
                                       const trace::Ray& camera_ray, Rgb* emitted) {
     const std::optional<trace::Hit> hit = accel.intersect(camera_ray);
     if (!hit) {
-        // The environment (constant for now) seen where the ray leaves the scene.
-        if (emitted) *emitted += scene.environment.radiance;
+        // The environment seen where the ray leaves the scene.
+        if (emitted && scene.environment.active())
+            *emitted += scene.environment.lookup(glm::normalize(camera_ray.direction));
         return std::nullopt;
     }
     const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, camera_ray);

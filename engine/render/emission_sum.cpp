@@ -15,13 +15,34 @@ constexpr uint32_t kGroupSize = 8;  // emission_sum.comp's local size
 }  // namespace
 
 EmissionSum::EmissionSum(gpu::Context& context, uint32_t width, uint32_t height)
-    : m_sum(context, {width, height, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
+    : m_context(context),
+      m_sum(context, {width, height, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
             "emission sum"),
+      m_background(context, {1, 1, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
+                   "background"),
       m_pipeline(std::make_unique<gpu::ComputePipeline>(
           context, gpu::compile_embedded_shader("render/emission_sum.comp"),
-          gpu::ComputeLayout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image},
+          gpu::ComputeLayout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
+                              gpu::BindingType::storage_image},
                              sizeof(shared::EmissionPush)},
-          "emission sum")) {}
+          "emission sum")) {
+    m_background.upload(std::vector<float>(4, 0.0f));
+}
+
+void EmissionSum::set_background(const std::vector<float>& rgba) {
+    const uint32_t width = m_sum.width();
+    const uint32_t height = m_sum.height();
+    if (rgba.size() != size_t(width) * size_t(height) * 4)
+        throw gpu::GpuError("emission sum: the background differs from the image in size");
+    if (m_background.width() != width || m_background.height() != height) {
+        m_background = gpu::Image(
+            m_context,
+            {width, height, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
+            "background");
+    }
+    m_background.upload(rgba);
+    m_has_background = true;
+}
 
 EmissionSum::~EmissionSum() = default;
 
@@ -35,8 +56,8 @@ void EmissionSum::record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer) 
     if (g_buffer.width() != width || g_buffer.height() != height) {
         throw gpu::GpuError("emission sum: the G-buffer and the sum differ in size");
     }
-    const shared::EmissionPush push{{width, height}, kGBufferEmission};
-    cmd.dispatch(*m_pipeline, {&g_buffer, &m_sum}, gpu::push_bytes(push),
+    const shared::EmissionPush push{{width, height}, kGBufferEmission, m_has_background ? 1u : 0u};
+    cmd.dispatch(*m_pipeline, {&g_buffer, &m_sum, &m_background}, gpu::push_bytes(push),
                  (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
 }
 

@@ -5,6 +5,7 @@
 // G-buffers in alpha so that the resolve and the preview divide per pixel. Vulkan-free to include.
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "engine/gpu/image.h"
 
@@ -23,6 +24,10 @@ public:
     EmissionSum(const EmissionSum&) = delete;
     EmissionSum& operator=(const EmissionSum&) = delete;
 
+    // The radiance that pixels no surface covers receive (the environment through each pixel's
+    // centre), RGBA32F row by row; without one they receive nothing.
+    void set_background(const std::vector<float>& rgba);
+
     void record_clear(gpu::CommandList& cmd);
     // Adds the emission layer of g_buffer (GBufferPass::image(), after a barrier) and 1 to alpha.
     void record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer);
@@ -31,7 +36,10 @@ public:
     const gpu::Image& image() const { return m_sum; }
 
 private:
+    gpu::Context& m_context;
     gpu::Image m_sum;
+    gpu::Image m_background;  // 1×1 and unread until set_background
+    bool m_has_background = false;
     std::unique_ptr<gpu::ComputePipeline> m_pipeline;
 };
 

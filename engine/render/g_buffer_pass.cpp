@@ -115,9 +115,6 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec
     std::array<gpu::ColorTarget, kGBufferLayerCount> colors;
     for (uint32_t i = 0; i < kGBufferLayerCount; ++i)
         colors[i] = {&m_image, i, {0.0f, 0.0f, 0.0f, 0.0f}};
-    // Background pixels see the environment: the emission sum and the preview read it there.
-    const Rgb& sky = m_geometry->environment();
-    colors[kGBufferEmission].clear = {sky.r, sky.g, sky.b, 0.0f};
     const gpu::DepthTarget depth{&m_depth, 0, 0.0f};
     gpu::begin_rendering(cmd, colors, &depth);
     GBufferPush push{};

@@ -11,7 +11,7 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
       m_drawn(drawn_materials(scene)),
       m_features(scene_features(scene, ShaderOptions{})),
       m_textures(scene.textures),
-      m_environment(scene.environment.radiance) {
+      m_environment(scene.environment) {
     for (const scene::Material& m : scene.materials)
         m_materials.push_back({m.emission(), m.double_sided});
     if (m_materials.empty()) {

@@ -63,9 +63,8 @@ public:
     }
     uint32_t vertex_count() const { return m_vertex_count; }
     const scene::Bounds& bounds() const { return m_bounds; }
-    // The environment's (constant) radiance: what the G-buffer's emission layer holds where no
-    // surface covers a pixel.
-    const Rgb& environment() const { return m_environment; }
+    // The scene's environment: what pixels that no surface covers show.
+    const scene::Environment& environment() const { return m_environment; }
 
 private:
     gpu::Buffer m_vertices;
@@ -77,7 +76,7 @@ private:
     std::vector<scene::Texture> m_textures;
     uint32_t m_vertex_count = 0;
     scene::Bounds m_bounds;
-    Rgb m_environment{0.0f};
+    scene::Environment m_environment;
 };
 
 // Writes the generated GLSL of every stage that the renderer builds for this geometry

@@ -16,10 +16,32 @@
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shading_pass.h"
 #include "engine/render/shadow_pass.h"
+#include "engine/scene/camera.h"
 
 namespace mvpl::render {
 
 namespace {
+
+// The environment seen through each pixel's centre, RGBA32F rows from the top, what the
+// G-buffer's uncovered pixels show (EmissionSum::set_background). Pixel centres, not the
+// sub-pixel positions: an environment varies little within a pixel, and where a silhouette cuts
+// the pixel, the G-buffers' coverage over the positions still weighs the two.
+std::vector<float> background_image(const scene::Environment& environment,
+                                    const scene::Camera& camera, uint32_t width, uint32_t height) {
+    std::vector<float> rgba(size_t(width) * size_t(height) * 4, 0.0f);
+    for (uint32_t y = 0; y < height; ++y) {
+        for (uint32_t x = 0; x < width; ++x) {
+            const scene::CameraRay r = scene::generate_camera_ray(
+                camera, int(width), int(height), Vec2(float(x) + 0.5f, float(y) + 0.5f));
+            const Rgb l = environment.lookup(glm::normalize(r.direction));
+            float* out = &rgba[(size_t(y) * width + x) * 4];
+            out[0] = l.r;
+            out[1] = l.g;
+            out[2] = l.b;
+        }
+    }
+    return rgba;
+}
 
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
     return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
@@ -181,6 +203,10 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     m.prepare(options);
     m.options = options;
     m.view_camera = camera;
+    if (m.geometry.environment().active()) {
+        m.emission->set_background(
+            background_image(m.geometry.environment(), camera, options.width, options.height));
+    }
     m.timings = RenderTimings{};
     m.shaded = 0;
     gpu::GpuTimer timer(*m.context, 1);

@@ -1,14 +1,19 @@
 #pragma once
-// The environment a command asks for (--env-color, --env-scale, --no-default-light), applied by
+// The environment a command asks for (--env, --env-color, --env-scale, --env-rotate,
+// --no-default-light), applied by
 // the scene session (tools/session/scene_session.cpp) once the scene is loaded.
+#include <string>
+
 #include "engine/core/color.h"
 
 namespace mvpl::scene {
 
 struct EnvironmentChoice {
-    bool has_color = false;  // --env-color given
+    std::string map;         // --env: a latitude-longitude .hdr or .exr (environment_map.h)
+    bool has_color = false;  // --env-color given: the constant, or the map's tint
     Rgb color{1.0f};
     float scale = 1.0f;
+    float rotation_degrees = 0.0f;  // --env-rotate, about +Y
     // A scene without any emitter gets a uniform white sky of radiance `scale` (and one line on
     // stderr saying so), as glTF viewers light such models; false keeps it black.
     bool default_light = true;

@@ -9,6 +9,7 @@
 #include "engine/core/color.h"
 #include "engine/core/math.h"
 #include "engine/scene/bounds.h"
+#include "engine/scene/environment.h"
 #include "engine/scene/texture.h"
 
 namespace mvpl::scene {
@@ -83,21 +84,13 @@ struct Camera {
     Vec3 position() const { return Vec3(camera_to_world[3]); }
 };
 
-// Light arriving from infinitely far away in every direction (an environment, a sky): constant
-// radiance for now, black for none. Camera rays that leave the scene see it.
-struct Environment {
-    Rgb radiance{0.0f};
-
-    bool active() const { return radiance.r > 0.0f || radiance.g > 0.0f || radiance.b > 0.0f; }
-};
-
 struct Scene {
     std::string path;
     std::vector<Mesh> meshes;
     std::vector<Material> materials;
     std::vector<Texture> textures;
     std::vector<Light> lights;
-    Environment environment;
+    Environment environment;  // black: none; camera rays that leave the scene see it
     Camera camera;
     bool has_camera = false;  // false: the camera was made to frame the scene bounds
     // The file's perspective cameras in node traversal order (camera is the first); what

@@ -26,7 +26,8 @@ struct MaterialPush {
 // (engine/render/emission_sum.cpp; shaders/render/emission_sum.comp).
 struct EmissionPush {
     uvec2 size;
-    uint layer;  // kGBufferEmission
+    uint layer;       // kGBufferEmission
+    uint background;  // 1: uncovered pixels take the background image
 };
 
 // A shadow cube face (engine/render/shadow_pass.cpp; shaders/render/shadow.vert).
@@ -61,7 +62,7 @@ MVPL_STD430_MEMBER(GBufferPush, view_proj);
 static_assert(sizeof(GBufferPush) == 72);
 MVPL_STD430_MEMBER(MaterialPush, size);
 MVPL_STD430_MEMBER(EmissionPush, size);
-static_assert(sizeof(EmissionPush) == 12);
+static_assert(sizeof(EmissionPush) == 16);
 MVPL_STD430_MEMBER(ShadowPush, vpl_near);
 MVPL_STD430_MEMBER(ShadowPush, face);
 static_assert(sizeof(ShadowPush) == 32);

@@ -78,6 +78,7 @@ const Member kMembers[] = {
     MVPL_MEMBER(MaterialPush, size),
     MVPL_MEMBER(EmissionPush, size),
     MVPL_MEMBER(EmissionPush, layer),
+    MVPL_MEMBER(EmissionPush, background),
     MVPL_MEMBER(ShadowPush, vpl_near),
     MVPL_MEMBER(ShadowPush, face),
     MVPL_MEMBER(OrthoPush, u_origin),

@@ -175,8 +175,13 @@ void add_camera_options(ArgParser& parser, CameraArgs& args) {
 }
 
 void add_environment_options(ArgParser& parser, EnvironmentArgs& args) {
+    parser.add_string("--env", &args.map,
+                      "latitude-longitude environment map around the scene (.hdr or .exr, twice "
+                      "as wide as high; its centre faces +X, its top +Y)");
+    parser.add_float("--env-rotate", &args.rotate, "turns the environment map about +Y (degrees)");
     parser.add_string("--env-color", &args.color,
-                      "R,G,B: a uniform environment of this radiance around the scene (linear)");
+                      "R,G,B: a uniform environment of this radiance around the scene (linear); "
+                      "with --env, the map's tint");
     parser.add_float("--env-scale", &args.scale, "multiplies the environment's radiance");
     parser.add_flag("--no-default-light", &args.no_default_light,
                     "a scene without any light stays black (default: a uniform white sky)");
@@ -184,9 +189,12 @@ void add_environment_options(ArgParser& parser, EnvironmentArgs& args) {
         // The range scene_range.h gives emitted radiance.
         if (!(args.scale >= 0.0f && args.scale <= 1e15f))
             out_of_range(parser, "--env-scale", "[0, 1e15]");
+        if (!std::isfinite(args.rotate)) out_of_range(parser, "--env-rotate", "finite degrees");
         session::EnvironmentChoice& c = args.choice;
         c.scale = args.scale;
         c.default_light = !args.no_default_light;
+        c.map = args.map;
+        c.rotation_degrees = args.rotate;
         if (args.color.empty()) return;
         const std::vector<float> v = finite_numbers(parser, "--env-color", args.color);
         if (v.size() != 3)

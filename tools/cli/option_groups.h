@@ -62,9 +62,11 @@ struct CameraArgs {
 };
 void add_camera_options(ArgParser& parser, CameraArgs& args);
 
-// --env-color R,G,B, --env-scale S, --no-default-light: the environment around the scene
-// (session::EnvironmentChoice).
+// --env FILE, --env-color R,G,B, --env-scale S, --env-rotate DEG, --no-default-light: the
+// environment around the scene (scene::EnvironmentChoice).
 struct EnvironmentArgs {
+    std::string map;
+    float rotate = 0.0f;
     std::string color;
     float scale = 1.0f;
     bool no_default_light = false;

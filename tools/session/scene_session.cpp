@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "engine/scene/environment_map.h"
 #include "engine/scene/scene_loader.h"
 
 namespace mvpl::session {
@@ -12,7 +13,11 @@ namespace {
 // default sky unless the command said no.
 scene::Scene load_with_environment(const std::string& path, const EnvironmentChoice& choice) {
     scene::Scene scene = scene::load_scene(path);
-    if (choice.has_color) {
+    scene.environment.rotation = choice.rotation_degrees * (kPi / 180.0f);
+    if (!choice.map.empty()) {
+        scene.environment.map = scene::load_environment_map(choice.map);
+        scene.environment.radiance = choice.color * choice.scale;
+    } else if (choice.has_color) {
         scene.environment.radiance = choice.color * choice.scale;
     } else if (choice.default_light && light::LightSampler(scene).empty()) {
         scene.environment.radiance = Rgb(choice.scale);
