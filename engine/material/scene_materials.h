@@ -11,6 +11,9 @@
 
 namespace mvpl::material {
 
+// Per material: whether a mesh with COLOR_0 uses it.
+std::vector<bool> materials_with_vertex_colors(const scene::Scene& scene);
+
 class SceneMaterials {
 public:
     // Keeps a reference to scene.textures: the scene must outlive this.
@@ -34,6 +37,14 @@ public:
     // The graph has an emission node: the material's triangles are area lights.
     bool is_emissive(int material) const { return graph(material).emission >= 0; }
     bool double_sided(int material) const { return graph(material).double_sided; }
+    // glTF alphaMode MASK: whether the material cuts its surface at p (alpha < alphaCutoff).
+    bool masked(int material) const { return graph(material).masked(); }
+    bool cut(int material, const SurfacePoint& p) const {
+        const MaterialGraph& g = graph(material);
+        return g.masked() && evaluate_input(g, g.alpha, m_textures, p).x < g.alpha_cutoff;
+    }
+    // Some material is masked (the BVH then filters its hits).
+    bool any_masked() const;
 
 private:
     const std::vector<scene::Texture>& m_textures;

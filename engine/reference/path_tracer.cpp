@@ -36,7 +36,9 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth,
     Vec3 prev_p(0.0f);
     // depth = number of segments of the path up to the current vertex (Mitsuba's convention).
     for (int depth = 1;; ++depth) {
-        const std::optional<trace::Hit> hit = m_accel.intersect(ray);
+        // The camera does not see the back faces of one-sided materials (glTF doubleSided).
+        const std::optional<trace::Hit> hit =
+            depth == 1 ? m_accel.intersect_camera(ray) : m_accel.intersect(ray);
         if (!hit) break;
         const trace::SurfaceInteraction si = trace::make_interaction(m_scene, *hit, ray);
         const Vec3 wo_world = -glm::normalize(ray.direction);

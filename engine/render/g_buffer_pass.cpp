@@ -24,7 +24,8 @@ gpu::GraphicsLayout g_buffer_layout() {
                          {gpu::VertexFormat::float3, offsetof(GeometryVertex, normal)},
                          {gpu::VertexFormat::float3, offsetof(GeometryVertex, face_normal)},
                          {gpu::VertexFormat::float4, offsetof(GeometryVertex, uv)},
-                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, tangent)}};
+                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, tangent)},
+                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, color)}};
     layout.color_formats.assign(kGBufferLayerCount, gpu::Format::rgba32_float);
     layout.depth = true;
     layout.push_constant_bytes = sizeof(GBufferPush);

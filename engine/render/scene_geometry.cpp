@@ -67,6 +67,9 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
                 v.uv[3] = uv1.y;
                 store(v.tangent, mesh.tangents.empty() ? dpdu : Vec3(mesh.tangents[idx[k]]));
                 v.tangent[3] = sign;
+                const Vec4 color = mesh.colors.empty() ? Vec4(1.0f) : mesh.colors[idx[k]];
+                for (int c = 0; c < 4; ++c)
+                    v.color[c] = color[c];
                 vertices.push_back(v);
                 m_bounds.extend(mesh.positions[idx[k]]);
             }

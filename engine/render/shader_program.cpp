@@ -207,6 +207,20 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
     const material::MaterialCode code =
         material::generate_material_code(graphs, textures, 0, false, drawn);
     GBufferSources out;
+    const material::MaterialCode textured =
+        material::generate_material_code(graphs, textures, 1, true, drawn);
+    out.color_handoff = !textured.textures.empty() &&
+                        std::find(textured.node_functions.begin(), textured.node_functions.end(),
+                                  "vertex_color") != textured.node_functions.end();
+    std::vector<std::string> enabled;
+    if (out.color_handoff) enabled.emplace_back("color_handoff");
+    // A discard costs early depth testing: only scenes that draw a one-sided material get it.
+    for (size_t i = 0; i < graphs.size(); ++i) {
+        if ((drawn.empty() || (i < drawn.size() && drawn[i])) && !graphs[i].double_sided) {
+            enabled.emplace_back("one_sided");
+            break;
+        }
+    }
     out.functions = code.node_functions;
     const std::string push =
         expand_template(gpu::embedded_shader("render/g_buffer_push.glsl"), {}, {});
@@ -214,16 +228,14 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
                 expand_template(gpu::embedded_shader("render/g_buffer.vert"), {}, {})};
     out.frag = {"g_buffer.frag",
                 expand_template(
-                    gpu::embedded_shader("render/g_buffer.frag"), {},
+                    gpu::embedded_shader("render/g_buffer.frag"), enabled,
                     {{"push", push}, {"bindings", code.bindings}, {"materials", code.functions}})};
-    const material::MaterialCode textured =
-        material::generate_material_code(graphs, textures, 1, true, drawn);
     if (!textured.textures.empty()) {
         out.textures = textured.textures;
         out.material_functions = textured.node_functions;
         out.material = {
             "material.comp",
-            expand_template(gpu::embedded_shader("render/material_template.glsl"), {},
+            expand_template(gpu::embedded_shader("render/material_template.glsl"), enabled,
                             {{"bindings", textured.bindings}, {"materials", textured.functions}})};
     }
     return out;

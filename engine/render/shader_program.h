@@ -72,6 +72,9 @@ struct GBufferSources {
     StageSource material;
     std::vector<int> textures;
     std::vector<std::string> material_functions;
+    // The fragment stage hands COLOR_0 to the material pass in the specular layer (which that
+    // pass rewrites): a drawn graph reads vertex colours and the scene has a material pass.
+    bool color_handoff = false;
     bool has_material_pass() const { return !textures.empty(); }
 };
 // The G-buffer stages for material graphs (textures: the scene's, for the bump-map step; drawn:

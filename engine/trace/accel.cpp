@@ -5,14 +5,38 @@
 #include <atomic>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "engine/trace/interaction.h"
 
 namespace mvpl::trace {
+
+namespace {
+
+// What a mesh's Embree filter needs: hits on cut texels (alpha MASK) are skipped by every ray,
+// back faces of one-sided materials by camera rays.
+struct MeshFilter {
+    const scene::Mesh* mesh = nullptr;
+    const material::SceneMaterials* materials = nullptr;
+    int material = 0;
+    bool masked = false;
+    bool one_sided = false;
+};
+
+// The intersect context the filters read: Embree hands back the pointer it was given.
+struct FilterContext {
+    RTCIntersectContext context;
+    bool camera = false;
+};
+
+}  // namespace
 
 struct Accel::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     mutable std::atomic<uint64_t> rays{0};
     std::string error;
+    std::vector<MeshFilter> filters;  // per mesh; stable addresses (reserved up front)
 
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
@@ -29,6 +53,35 @@ static void embree_error(void* user, RTCError code, const char* message) {
                       (message ? message : ""));
 }
 
+// Rejects (valid = 0) the hits a ray passes through; Embree then goes on traversing.
+static void filter_hits(const RTCFilterFunctionNArguments* args) {
+    const auto* f = static_cast<const MeshFilter*>(args->geometryUserPtr);
+    const bool camera = reinterpret_cast<const FilterContext*>(args->context)->camera;
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const int triangle = int(RTCHitN_primID(args->hit, args->N, i));
+        if (camera && f->one_sided) {
+            const uint32_t* idx = &f->mesh->indices[3 * size_t(triangle)];
+            const Vec3& p0 = f->mesh->positions[idx[0]];
+            const Vec3 winding =
+                glm::cross(f->mesh->positions[idx[1]] - p0, f->mesh->positions[idx[2]] - p0);
+            const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, i),
+                           RTCRayN_dir_y(args->ray, args->N, i),
+                           RTCRayN_dir_z(args->ray, args->N, i));
+            // As make_interaction's front_face: the ray arrives on the side ng points to.
+            if (!(glm::dot(dir, winding) < 0.0f)) {
+                args->valid[i] = 0;
+                continue;
+            }
+        }
+        if (f->masked) {
+            const Vec2 b(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+            if (f->materials->cut(f->material, surface_attributes(*f->mesh, triangle, b)))
+                args->valid[i] = 0;
+        }
+    }
+}
+
 Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_materials(scene) {
     m_impl->device = rtcNewDevice(nullptr);
     if (!m_impl->device) throw std::runtime_error("cannot create an Embree device");
@@ -37,6 +90,7 @@ Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_ma
     // Robust mode: watertight traversal, so that rays through shared edges do not leak light.
     rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST);
     rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
+    m_impl->filters.reserve(scene.meshes.size());
     for (size_t id = 0; id < scene.meshes.size(); ++id) {
         const scene::Mesh& mesh = scene.meshes[id];
         RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -52,6 +106,17 @@ Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_ma
             rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                     sizeof(uint32_t) * 3, mesh.triangle_count()));
         std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), indices);
+        // Only meshes that need a filter get one: the others trace at full speed.
+        MeshFilter& filter = m_impl->filters.emplace_back();
+        if (mesh.material >= 0 && size_t(mesh.material) < m_materials.graphs().size()) {
+            filter = {&mesh, &m_materials, mesh.material, m_materials.masked(mesh.material),
+                      !m_materials.double_sided(mesh.material)};
+        }
+        if (filter.masked || filter.one_sided) {
+            rtcSetGeometryUserData(geom, &filter);
+            rtcSetGeometryIntersectFilterFunction(geom, filter_hits);
+            if (filter.masked) rtcSetGeometryOccludedFilterFunction(geom, filter_hits);
+        }
         rtcCommitGeometry(geom);
         rtcAttachGeometryByID(m_impl->scene, geom, static_cast<unsigned>(id));
         rtcReleaseGeometry(geom);
@@ -78,14 +143,23 @@ static RTCRay to_embree(const Ray& ray) {
 }
 
 std::optional<Hit> Accel::intersect(const Ray& ray) const {
+    return intersect(ray, false);
+}
+
+std::optional<Hit> Accel::intersect_camera(const Ray& ray) const {
+    return intersect(ray, true);
+}
+
+std::optional<Hit> Accel::intersect(const Ray& ray, bool camera) const {
     m_impl->rays.fetch_add(1, std::memory_order_relaxed);
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    FilterContext context;
+    rtcInitIntersectContext(&context.context);
+    context.camera = camera;
     RTCRayHit rayhit{};
     rayhit.ray = to_embree(ray);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_impl->scene, &context, &rayhit);
+    rtcIntersect1(m_impl->scene, &context.context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     Hit hit;
     hit.t = rayhit.ray.tfar;
@@ -97,10 +171,10 @@ std::optional<Hit> Accel::intersect(const Ray& ray) const {
 
 bool Accel::occluded(const Ray& ray) const {
     m_impl->rays.fetch_add(1, std::memory_order_relaxed);
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    FilterContext context;
+    rtcInitIntersectContext(&context.context);
     RTCRay r = to_embree(ray);
-    rtcOccluded1(m_impl->scene, &context, &r);
+    rtcOccluded1(m_impl->scene, &context.context, &r);
     // Embree marks an occluded ray by setting tfar to −∞.
     return r.tfar < 0.0f;
 }
