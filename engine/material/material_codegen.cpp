@@ -295,6 +295,19 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
                 " return;\n    }\n}\n";
     if (bodies.empty()) module.require("lambertian");
 
+    std::string alpha_helpers;
+    std::string alpha_cases;
+    for (size_t i = 0; i < graphs.size(); ++i) {
+        if (!used.empty() && (i >= used.size() || !used[i])) continue;
+        const MaterialGraph& g = graphs[i];
+        if (!g.masked()) continue;
+        writer.begin(g, "alpha_" + std::to_string(i));
+        const std::string alpha = writer.scalar(g.alpha);
+        alpha_helpers += writer.helpers();
+        alpha_cases += "        case " + std::to_string(i) + "u: return " + alpha + " < " +
+                       glsl_number(g.alpha_cutoff) + ";\n";
+    }
+
     MaterialCode out;
     out.textures.resize(bindings.size());
     for (const auto& [texture, slot] : bindings) {
@@ -305,6 +318,13 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
     }
     out.node_functions = module.functions();
     out.functions = module.code() + materials + dispatch;
+    if (!alpha_cases.empty()) {
+        out.masked = true;
+        out.functions += alpha_helpers +
+                         "// glTF alphaMode MASK: whether material m cuts its surface at s.\n"
+                         "bool alpha_cut(uint m, SurfacePoint s) {\n    switch (m) {\n" +
+                         alpha_cases + "        default: return false;\n    }\n}\n";
+    }
     return out;
 }
 

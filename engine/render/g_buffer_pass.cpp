@@ -17,7 +17,7 @@ namespace {
 using shared::GBufferPush;
 using shared::MaterialPush;
 
-gpu::GraphicsLayout g_buffer_layout() {
+gpu::GraphicsLayout g_buffer_layout(size_t textures) {
     gpu::GraphicsLayout layout;
     layout.vertex_stride = sizeof(GeometryVertex);
     layout.attributes = {{gpu::VertexFormat::float3, offsetof(GeometryVertex, position)},
@@ -29,6 +29,7 @@ gpu::GraphicsLayout g_buffer_layout() {
     layout.color_formats.assign(kGBufferLayerCount, gpu::Format::rgba32_float);
     layout.depth = true;
     layout.push_constant_bytes = sizeof(GBufferPush);
+    layout.bindings.assign(textures, gpu::BindingType::sampled_image);
     return layout;
 }
 
@@ -42,16 +43,24 @@ std::unique_ptr<gpu::GraphicsPipeline> make_pipeline(gpu::Context& context,
                                                      const StageSource* vert,
                                                      const StageSource* frag,
                                                      const gpu::SpirvCacheOptions& cache) {
-    GBufferSources generated;
+    GBufferSources generated =
+        generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
     if (!vert || !frag) {
-        generated =
-            generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
         vert = &generated.vert;
         frag = &generated.frag;
     }
-    return std::make_unique<gpu::GraphicsPipeline>(context, compile_stage(*vert, cache),
-                                                   compile_stage(*frag, cache), g_buffer_layout(),
-                                                   "g-buffer");
+    return std::make_unique<gpu::GraphicsPipeline>(
+        context, compile_stage(*vert, cache), compile_stage(*frag, cache),
+        g_buffer_layout(generated.fragment_textures.size()), "g-buffer");
+}
+
+gpu::Image upload_texture(gpu::Context& context, const scene::Texture& t) {
+    gpu::Image image(context,
+                     {uint32_t(t.width), uint32_t(t.height), 1, gpu::Format::rgba32_float,
+                      gpu::ImageUsage::sampled, false},
+                     "texture " + t.name);
+    image.upload(t.texels);
+    return image;
 }
 
 }  // namespace
@@ -91,16 +100,12 @@ GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, u
       m_pipeline(make_pipeline(context, geometry, vert, frag, cache)) {
     const GBufferSources sources =
         generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
+    for (const int index : sources.fragment_textures)
+        m_fragment_textures.push_back(upload_texture(context, geometry.textures()[size_t(index)]));
     if (!sources.has_material_pass()) return;
     gpu::ComputeLayout layout{{gpu::BindingType::storage_image}, sizeof(MaterialPush)};
     for (const int index : sources.textures) {
-        const scene::Texture& t = geometry.textures()[size_t(index)];
-        gpu::Image image(context,
-                         {uint32_t(t.width), uint32_t(t.height), 1, gpu::Format::rgba32_float,
-                          gpu::ImageUsage::sampled, false},
-                         "texture " + t.name);
-        image.upload(t.texels);
-        m_textures.push_back(std::move(image));
+        m_textures.push_back(upload_texture(context, geometry.textures()[size_t(index)]));
         layout.bindings.push_back(gpu::BindingType::sampled_image);
     }
     m_material_pipeline = std::make_unique<gpu::ComputePipeline>(
@@ -118,6 +123,12 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec
         colors[i] = {&m_image, i, {0.0f, 0.0f, 0.0f, 0.0f}};
     const gpu::DepthTarget depth{&m_depth, 0, 0.0f};
     gpu::begin_rendering(cmd, colors, &depth);
+    if (!m_fragment_textures.empty()) {
+        std::vector<const gpu::Image*> images;
+        for (const gpu::Image& t : m_fragment_textures)
+            images.push_back(&t);
+        gpu::bind_images(cmd, *m_pipeline, images);
+    }
     GBufferPush push{};
     const Mat4 view_proj = camera_view_projection(camera, width(), height(), subpixel);
     std::copy_n(&view_proj[0][0], 16, push.view_proj);

@@ -202,11 +202,18 @@ StageSource generate_shading_source(const ShaderFeatures& features,
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
                                          const std::vector<scene::Texture>& textures,
                                          const std::vector<bool>& drawn) {
-    // The G-buffer pipeline has no descriptor sets yet (gpu::GraphicsPipeline): image textures
-    // read as their factors there; the CPU path tracer and the VPLs apply them.
+    // Image textures read as their factors in the G-buffer's fragment stage, and the material
+    // pass applies them, unless a drawn material is masked: then the fragment stage binds the
+    // textures, as its alpha test needs them (and the material pass repeats what it resolved).
+    const bool masked = std::any_of(graphs.begin(), graphs.end(), [&](const auto& g) {
+        const size_t i = size_t(&g - graphs.data());
+        return g.masked() && (drawn.empty() || (i < drawn.size() && drawn[i]));
+    });
     const material::MaterialCode code =
-        material::generate_material_code(graphs, textures, 0, false, drawn);
+        material::generate_material_code(graphs, textures, 0, masked, drawn);
     GBufferSources out;
+    out.masked = code.masked;
+    out.fragment_textures = code.textures;
     const material::MaterialCode textured =
         material::generate_material_code(graphs, textures, 1, true, drawn);
     out.color_handoff = !textured.textures.empty() &&
@@ -214,6 +221,7 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
                                   "vertex_color") != textured.node_functions.end();
     std::vector<std::string> enabled;
     if (out.color_handoff) enabled.emplace_back("color_handoff");
+    if (out.masked) enabled.emplace_back("masked");
     // A discard costs early depth testing: only scenes that draw a one-sided material get it.
     for (size_t i = 0; i < graphs.size(); ++i) {
         if ((drawn.empty() || (i < drawn.size() && drawn[i])) && !graphs[i].double_sided) {

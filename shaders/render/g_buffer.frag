@@ -62,6 +62,10 @@ void main() {
     s.n = ns;
     s.t = tangent;
     s.b = sign * cross(ns, tangent);
+//@if masked
+    // glTF alphaMode MASK (material_codegen.h, alpha_cut): what lies behind shows.
+    if (alpha_cut(pc.material, s)) discard;
+//@endif
     Closure c;
     vec3 emitted;
     vec3 n;
