@@ -300,12 +300,18 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
     for (size_t i = 0; i < graphs.size(); ++i) {
         if (!used.empty() && (i >= used.size() || !used[i])) continue;
         const MaterialGraph& g = graphs[i];
-        if (!g.masked()) continue;
+        if (!g.alpha_tested()) continue;
         writer.begin(g, "alpha_" + std::to_string(i));
         const std::string alpha = writer.scalar(g.alpha);
         alpha_helpers += writer.helpers();
-        alpha_cases += "        case " + std::to_string(i) + "u: return " + alpha + " < " +
-                       glsl_number(g.alpha_cutoff) + ";\n";
+        if (g.masked()) {
+            alpha_cases += "        case " + std::to_string(i) + "u: return " + alpha + " < " +
+                           glsl_number(g.alpha_cutoff) + ";\n";
+        } else {
+            module.require("alpha_hash");
+            alpha_cases += "        case " + std::to_string(i) +
+                           "u: return alpha_hash(p, seed) >= " + alpha + ";\n";
+        }
     }
 
     MaterialCode out;
@@ -319,10 +325,12 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
     out.node_functions = module.functions();
     out.functions = module.code() + materials + dispatch;
     if (!alpha_cases.empty()) {
-        out.masked = true;
+        out.alpha_tested = true;
         out.functions += alpha_helpers +
-                         "// glTF alphaMode MASK: whether material m cuts its surface at s.\n"
-                         "bool alpha_cut(uint m, SurfacePoint s) {\n    switch (m) {\n" +
+                         "// glTF alphaMode MASK or BLEND: whether material m cuts its surface at "
+                         "s (at p).\n"
+                         "bool alpha_cut(uint m, SurfacePoint s, vec3 p, uint seed) {\n"
+                         "    switch (m) {\n" +
                          alpha_cases + "        default: return false;\n    }\n}\n";
     }
     return out;

@@ -40,11 +40,15 @@ struct MaterialGraph {
     int normal = -1;    // a normal node (NormalMap, BumpMap) or -1: the interpolated normal
     bool double_sided = false;
     // glTF alpha: the base colour's alpha (factor · texture A · COLOR_0 A) where alpha_mode is
-    // not Opaque; unused (node −1) otherwise. Mask cuts the surface where alpha < alpha_cutoff.
+    // not Opaque; unused (node −1) otherwise. Mask cuts the surface where alpha < alpha_cutoff;
+    // Blend keeps a hit with probability alpha (hashed transparency: alpha_kept).
     NodeInput alpha;
     scene::AlphaMode alpha_mode = scene::AlphaMode::Opaque;
     float alpha_cutoff = 0.5f;
     bool masked() const { return alpha_mode == scene::AlphaMode::Mask && alpha.node >= 0; }
+    bool blended() const { return alpha_mode == scene::AlphaMode::Blend && alpha.node >= 0; }
+    // Hits on the surface are tested against its alpha (every ray, the G-buffer, shadow maps).
+    bool alpha_tested() const { return masked() || blended(); }
 
     // Throws std::logic_error for a node without a kind.
     int add(const Node& node);

@@ -1,7 +1,5 @@
 #include "engine/material/scene_materials.h"
 
-#include <algorithm>
-
 namespace mvpl::material {
 
 std::vector<bool> materials_with_vertex_colors(const scene::Scene& scene) {
@@ -18,11 +16,6 @@ SceneMaterials::SceneMaterials(const scene::Scene& scene) : m_textures(scene.tex
     m_graphs.reserve(scene.materials.size());
     for (size_t i = 0; i < scene.materials.size(); ++i)
         m_graphs.push_back(graph_from_gltf(scene.materials[i], {.vertex_colors = coloured[i]}));
-}
-
-bool SceneMaterials::any_masked() const {
-    return std::any_of(m_graphs.begin(), m_graphs.end(),
-                       [](const MaterialGraph& g) { return g.masked(); });
 }
 
 }  // namespace mvpl::material

@@ -37,14 +37,17 @@ public:
     // The graph has an emission node: the material's triangles are area lights.
     bool is_emissive(int material) const { return graph(material).emission >= 0; }
     bool double_sided(int material) const { return graph(material).double_sided; }
-    // glTF alphaMode MASK: whether the material cuts its surface at p (alpha < alphaCutoff).
+    // glTF alphaMode MASK: whether the material cuts its surface at p (alpha < alphaCutoff);
+    // BLEND as hashed transparency: whether a hit with the uniform number u ∈ [0, 1) (a hash of
+    // the ray, so that a hit is deterministic) passes through it (u ≥ alpha).
     bool masked(int material) const { return graph(material).masked(); }
-    bool cut(int material, const SurfacePoint& p) const {
+    bool alpha_tested(int material) const { return graph(material).alpha_tested(); }
+    bool cut(int material, const SurfacePoint& p, float u = 0.0f) const {
         const MaterialGraph& g = graph(material);
-        return g.masked() && evaluate_input(g, g.alpha, m_textures, p).x < g.alpha_cutoff;
+        if (!g.alpha_tested()) return false;
+        const float alpha = evaluate_input(g, g.alpha, m_textures, p).x;
+        return g.masked() ? alpha < g.alpha_cutoff : u >= alpha;
     }
-    // Some material is masked (the BVH then filters its hits).
-    bool any_masked() const;
 
 private:
     const std::vector<scene::Texture>& m_textures;

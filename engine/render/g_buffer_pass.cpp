@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/compute_pipeline.h"
@@ -130,11 +131,16 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec
         gpu::bind_images(cmd, *m_pipeline, images);
     }
     GBufferPush push{};
+    // glTF BLEND's hashed transparency: a pattern per sub-pixel position, so that the batches
+    // of a jittered render average it into transparency (and a render is deterministic).
+    const uint32_t seed = std::bit_cast<uint32_t>(subpixel.x) * 0x9E3779B9u ^
+                          std::bit_cast<uint32_t>(subpixel.y) * 0x85EBCA6Bu;
     const Mat4 view_proj = camera_view_projection(camera, width(), height(), subpixel);
     std::copy_n(&view_proj[0][0], 16, push.view_proj);
     for (const GeometryDraw& draw : m_geometry->draws()) {
         const GeometryMaterial& m = m_geometry->materials()[draw.material];
         push.material_flags = m.double_sided ? 1u : 0u;
+        push.seed = seed;
         push.material = draw.material;
         gpu::draw(cmd, *m_pipeline, m_geometry->vertices(), gpu::push_bytes(push),
                   draw.first_vertex, draw.vertex_count);

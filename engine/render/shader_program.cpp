@@ -207,12 +207,12 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
     // textures, as its alpha test needs them (and the material pass repeats what it resolved).
     const bool masked = std::any_of(graphs.begin(), graphs.end(), [&](const auto& g) {
         const size_t i = size_t(&g - graphs.data());
-        return g.masked() && (drawn.empty() || (i < drawn.size() && drawn[i]));
+        return g.alpha_tested() && (drawn.empty() || (i < drawn.size() && drawn[i]));
     });
     const material::MaterialCode code =
         material::generate_material_code(graphs, textures, 0, masked, drawn);
     GBufferSources out;
-    out.masked = code.masked;
+    out.alpha_tested = code.alpha_tested;
     out.fragment_textures = code.textures;
     const material::MaterialCode textured =
         material::generate_material_code(graphs, textures, 1, true, drawn);
@@ -221,7 +221,7 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
                                   "vertex_color") != textured.node_functions.end();
     std::vector<std::string> enabled;
     if (out.color_handoff) enabled.emplace_back("color_handoff");
-    if (out.masked) enabled.emplace_back("masked");
+    if (out.alpha_tested) enabled.emplace_back("alpha_tested");
     // A discard costs early depth testing: only scenes that draw a one-sided material get it.
     for (size_t i = 0; i < graphs.size(); ++i) {
         if ((drawn.empty() || (i < drawn.size() && drawn[i])) && !graphs[i].double_sided) {

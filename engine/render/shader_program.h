@@ -72,10 +72,11 @@ struct GBufferSources {
     StageSource material;
     std::vector<int> textures;
     std::vector<std::string> material_functions;
-    // Scenes that draw a masked material (glTF alphaMode MASK): the fragment stage binds these
-    // scene textures (binding i: textures[i]) to test alpha, and discards what is cut.
+    // Scenes that draw an alpha-tested material (glTF alphaMode MASK or BLEND): the fragment
+    // stage binds these scene textures (binding i: textures[i]) to test alpha, and discards
+    // what is cut.
     std::vector<int> fragment_textures;
-    bool masked = false;
+    bool alpha_tested = false;
     // The fragment stage hands COLOR_0 to the material pass in the specular layer (which that
     // pass rewrites): a drawn graph reads vertex colours and the scene has a material pass.
     bool color_handoff = false;

@@ -70,9 +70,9 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
                                float simplify_error) {
     std::vector<uint32_t> triangles;  // three indices each, into m_positions
     for (const scene::Mesh& mesh : scene.meshes) {
-        // Masked meshes cast shadows through ShadowPass's alpha-tested draws instead.
+        // Masked and blended meshes cast shadows through ShadowPass's alpha-tested draws.
         if (mesh.material >= 0 && size_t(mesh.material) < scene.materials.size() &&
-            scene.materials[size_t(mesh.material)].alpha_mode == scene::AlphaMode::Mask)
+            scene.materials[size_t(mesh.material)].alpha_mode != scene::AlphaMode::Opaque)
             continue;
         add_mesh(mesh, simplify_error, m_positions, triangles);
     }

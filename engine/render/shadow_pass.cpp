@@ -132,7 +132,7 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
       m_near(kNearFraction * std::max(geometry.bounds().diagonal(), 1e-30f)) {
     std::vector<bool> masked(geometry.graphs().size(), false);
     for (size_t i = 0; i < masked.size(); ++i)
-        masked[i] = geometry.graphs()[i].masked();
+        masked[i] = geometry.graphs()[i].alpha_tested();
     for (const GeometryDraw& draw : geometry.draws()) {
         if (draw.material < masked.size() && masked[draw.material]) m_masked_draws.push_back(draw);
     }
@@ -164,17 +164,19 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
 
 void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline& pipeline,
                              VkDescriptorSet set, std::span<const std::byte> push,
-                             size_t material_offset) {
+                             size_t material_offset, bool floats) {
     gpu::bind_image_set(cmd, pipeline, set);
-    // The push constants with the draw's material at material_offset (a uint for cube faces,
-    // a float for orthographic maps: exact below 2^24 materials).
+    // The push constants with the draw's material at material_offset and the VPL's seed after
+    // it: uints for cube faces, floats for orthographic maps (exact below 2^24).
     std::vector<std::byte> bytes(push.begin(), push.end());
+    const uint32_t seed = m_vpl_seed % (1u << 24);
     for (const GeometryDraw& draw : m_masked_draws) {
-        if (material_offset == offsetof(ShadowPush, face) + sizeof(uint32_t)) {
-            std::memcpy(bytes.data() + material_offset, &draw.material, sizeof(uint32_t));
+        if (floats) {
+            const float values[2] = {float(draw.material), float(seed)};
+            std::memcpy(bytes.data() + material_offset, values, sizeof(values));
         } else {
-            const float m = float(draw.material);
-            std::memcpy(bytes.data() + material_offset, &m, sizeof(float));
+            const uint32_t values[2] = {draw.material, seed};
+            std::memcpy(bytes.data() + material_offset, values, sizeof(values));
         }
         gpu::draw(cmd, pipeline, m_geometry->vertices(), bytes, draw.first_vertex,
                   draw.vertex_count);
@@ -201,6 +203,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
     }
     for (uint32_t i = 0; i < batch.size(); ++i) {
         const light::Vpl& vpl = batch[i];
+        ++m_vpl_seed;  // each VPL its own hashed-transparency pattern (glTF BLEND)
         if (vpl.type == light::VplType::Directional) {
             if (ortho_depth_in_use) cmd.barrier();
             ortho_depth_in_use = true;
@@ -238,7 +241,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
                               gpu::push_bytes(push), m_ranges);
             if (m_masked_pipeline) {
                 draw_masked(cmd, *m_masked_pipeline, m_masked_set, gpu::push_bytes(push),
-                            offsetof(ShadowPush, face) + sizeof(uint32_t));
+                            offsetof(ShadowPush, face) + sizeof(uint32_t), false);
             }
             gpu::end_rendering(cmd);
         }
@@ -259,7 +262,7 @@ void ShadowPass::record_directional(gpu::CommandList& cmd, const light::Vpl& vpl
                       gpu::push_bytes(push), std::span(&all, 1));
     if (m_masked_ortho_pipeline) {
         draw_masked(cmd, *m_masked_ortho_pipeline, m_masked_ortho_set, gpu::push_bytes(push),
-                    offsetof(OrthoPush, extents) + 2 * sizeof(float));
+                    offsetof(OrthoPush, extents) + 2 * sizeof(float), true);
     }
     gpu::end_rendering(cmd);
 }

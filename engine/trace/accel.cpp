@@ -3,10 +3,12 @@
 #include <embree3/rtcore.h>
 
 #include <atomic>
+#include <bit>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
+#include "engine/core/rng.h"
 #include "engine/trace/interaction.h"
 
 namespace mvpl::trace {
@@ -19,9 +21,22 @@ struct MeshFilter {
     const scene::Mesh* mesh = nullptr;
     const material::SceneMaterials* materials = nullptr;
     int material = 0;
-    bool masked = false;
+    bool alpha_tested = false;  // MASK or BLEND
     bool one_sided = false;
 };
+
+// A uniform number in [0, 1) from a ray and the triangle it hits: hashed transparency (glTF
+// BLEND) that is the same for the same ray, so renders are deterministic per seed.
+float ray_hash(const RTCFilterFunctionNArguments* args, unsigned i, int triangle) {
+    const float values[6] = {
+        RTCRayN_org_x(args->ray, args->N, i), RTCRayN_org_y(args->ray, args->N, i),
+        RTCRayN_org_z(args->ray, args->N, i), RTCRayN_dir_x(args->ray, args->N, i),
+        RTCRayN_dir_y(args->ray, args->N, i), RTCRayN_dir_z(args->ray, args->N, i)};
+    uint64_t h = mix_bits(uint64_t(uint32_t(triangle)) + 0x9e3779b97f4a7c15ULL);
+    for (const float v : values)
+        h = mix_bits(h ^ std::bit_cast<uint32_t>(v));
+    return float(h >> 40) * 0x1p-24f;
+}
 
 // The intersect context the filters read: Embree hands back the pointer it was given.
 struct FilterContext {
@@ -74,9 +89,10 @@ static void filter_hits(const RTCFilterFunctionNArguments* args) {
                 continue;
             }
         }
-        if (f->masked) {
+        if (f->alpha_tested) {
             const Vec2 b(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
-            if (f->materials->cut(f->material, surface_attributes(*f->mesh, triangle, b)))
+            if (f->materials->cut(f->material, surface_attributes(*f->mesh, triangle, b),
+                                  ray_hash(args, i, triangle)))
                 args->valid[i] = 0;
         }
     }
@@ -109,13 +125,13 @@ Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_ma
         // Only meshes that need a filter get one: the others trace at full speed.
         MeshFilter& filter = m_impl->filters.emplace_back();
         if (mesh.material >= 0 && size_t(mesh.material) < m_materials.graphs().size()) {
-            filter = {&mesh, &m_materials, mesh.material, m_materials.masked(mesh.material),
+            filter = {&mesh, &m_materials, mesh.material, m_materials.alpha_tested(mesh.material),
                       !m_materials.double_sided(mesh.material)};
         }
-        if (filter.masked || filter.one_sided) {
+        if (filter.alpha_tested || filter.one_sided) {
             rtcSetGeometryUserData(geom, &filter);
             rtcSetGeometryIntersectFilterFunction(geom, filter_hits);
-            if (filter.masked) rtcSetGeometryOccludedFilterFunction(geom, filter_hits);
+            if (filter.alpha_tested) rtcSetGeometryOccludedFilterFunction(geom, filter_hits);
         }
         rtcCommitGeometry(geom);
         rtcAttachGeometryByID(m_impl->scene, geom, static_cast<unsigned>(id));

@@ -62,9 +62,9 @@ void main() {
     s.n = ns;
     s.t = tangent;
     s.b = sign * cross(ns, tangent);
-//@if masked
-    // glTF alphaMode MASK (material_codegen.h, alpha_cut): what lies behind shows.
-    if (alpha_cut(pc.material, s)) discard;
+//@if alpha_tested
+    // glTF alphaMode MASK and BLEND (material_codegen.h, alpha_cut): what lies behind shows.
+    if (alpha_cut(pc.material, s, in_position, pc.seed)) discard;
 //@endif
     Closure c;
     vec3 emitted;

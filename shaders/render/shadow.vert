@@ -17,6 +17,8 @@ layout(location = 2) in vec4 in_color;
 layout(location = 1) out vec4 out_uv;
 layout(location = 2) out vec4 out_color;
 layout(location = 3) flat out uint out_material;
+layout(location = 4) flat out uint out_seed;
+layout(location = 5) out vec3 out_position;
 #endif
 
 void main() {
@@ -35,6 +37,8 @@ void main() {
     out_uv = in_uv;
     out_color = in_color;
     out_material = pc.face.y;
+    out_seed = pc.face.z;
+    out_position = in_position;
 #endif
     gl_Position = vec4(m.x, m.y, pc.vpl_near.w, m.z);
 }

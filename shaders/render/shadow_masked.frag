@@ -1,6 +1,7 @@
 #version 460
-// Shadow maps of scenes that draw masked materials (glTF alphaMode MASK): the distance, as
-// shadow.frag writes it, where the material keeps its surface, nothing where it cuts it.
+// Shadow maps of scenes that draw alpha-tested materials (glTF alphaMode MASK, or BLEND as hashed
+// transparency with a seed per VPL): the distance, as shadow.frag writes it, where the material
+// keeps its surface, nothing where it cuts it.
 // Generated per scene by engine/render/shadow_pass.cpp: `//@insert materials` holds the masked
 // materials' graphs and alpha_cut (engine/material/material_codegen.h).
 //@insert bindings
@@ -10,6 +11,8 @@ layout(location = 0) in vec3 in_offset;
 layout(location = 1) in vec4 in_uv;
 layout(location = 2) in vec4 in_color;
 layout(location = 3) flat in uint in_material;
+layout(location = 4) flat in uint in_seed;
+layout(location = 5) in vec3 in_position;
 layout(location = 0) out float out_distance;
 
 void main() {
@@ -21,6 +24,6 @@ void main() {
     s.t = vec3(1.0, 0.0, 0.0);
     s.b = vec3(0.0, 1.0, 0.0);
     s.n = vec3(0.0, 0.0, 1.0);
-    if (alpha_cut(in_material, s)) discard;
+    if (alpha_cut(in_material, s, in_position, in_seed)) discard;
     out_distance = length(in_offset);
 }

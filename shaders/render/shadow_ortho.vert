@@ -17,6 +17,8 @@ layout(location = 2) in vec4 in_color;
 layout(location = 1) out vec4 out_uv;
 layout(location = 2) out vec4 out_color;
 layout(location = 3) flat out uint out_material;
+layout(location = 4) flat out uint out_seed;
+layout(location = 5) out vec3 out_position;
 #endif
 
 void main() {
@@ -28,6 +30,8 @@ void main() {
     out_uv = in_uv;
     out_color = in_color;
     out_material = uint(pc.extents.z);
+    out_seed = uint(pc.extents.w);
+    out_position = in_position;
 #endif
     gl_Position = vec4(2.0 * u / pc.extents.x - 1.0, 2.0 * v / pc.extents.x - 1.0,
                        1.0 - w / pc.extents.y, 1.0);

@@ -220,6 +220,50 @@ TEST_F(GltfSamplesTest, AlphaBlendModeTestMaskedTexelsShowWhatLiesBehind) {
     RecordProperty("gpu_wrong", gpu_wrong);
 }
 
+// TextureSettingsTest seen head-on (+Z, framing its bounds): every failure of its cells is a red
+// mark — the single-sided cell's comes through a back face that the camera must not see, the
+// others from wrong wrap modes. No base colour the camera sees is red (r > 0.5 with g and b
+// below 0.25); with the back face seen the single-sided cell's red X shows.
+int red_texels_seen(const scene::Scene& s, const trace::Accel& accel) {
+    int red = 0;
+    constexpr int kRes = 128;
+    for (int y = 0; y < kRes; ++y) {
+        for (int x = 0; x < kRes; ++x) {
+            const scene::CameraRay r =
+                scene::generate_camera_ray(s.camera, kRes, kRes, Vec2(x + 0.5f, y + 0.5f));
+            const trace::Ray ray{r.origin, r.direction};
+            const auto hit = accel.intersect_camera(ray);
+            if (!hit) continue;
+            const Rgb c =
+                trace::make_shading_point(accel.materials(), trace::make_interaction(s, *hit, ray))
+                    .bsdf.params()
+                    .base_color;
+            red += c.r > 0.5f && c.g < 0.25f && c.b < 0.25f ? 1 : 0;
+        }
+    }
+    return red;
+}
+
+TEST(GltfSamples, TextureSettingsTestShowsNoRedMark) {
+    std::optional<scene::Scene> s = load_sample("TextureSettingsTest");
+    if (!s) GTEST_SKIP() << "../shared/gltf-samples is not beside this checkout";
+    const scene::Bounds b = s->bounds();
+    const Vec3 centre = b.center();
+    const float half = 0.5f * std::max(b.hi.x - b.lo.x, b.hi.y - b.lo.y);
+    s->camera = test::look_at(centre + Vec3(0, 0, 3.0f * half), centre, 0.7f);
+    const trace::Accel accel(*s);
+    EXPECT_EQ(red_texels_seen(*s, accel), 0);
+    // The single-sided cell seen from behind (its material made double-sided) shows red.
+    scene::Scene seen = *s;
+    for (scene::Material& m : seen.materials) {
+        if (m.name == "SingleSidedMaterial") m.double_sided = true;
+    }
+    const trace::Accel seen_accel(seen);
+    const int red = red_texels_seen(seen, seen_accel);
+    EXPECT_GT(red, 10);  // measured 22 at 128²
+    RecordProperty("red_with_back_face", red);
+}
+
 // BoxVertexColors: a grey (0.8) material whose COLOR_0 paints the cube's corners; its base
 // colour at the camera's hits (the file's framing) is far from grey somewhere.
 TEST(GltfSamples, BoxVertexColorsIsNotUniformGrey) {

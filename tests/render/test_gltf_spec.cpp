@@ -290,6 +290,66 @@ TEST_F(GltfSpecTest, MaskedShadowsAgreeWithTheOracle) {
     }
 }
 
+// BLEND as hashed transparency in the G-buffer: a blended quad of alpha 0.3 in front of an
+// opaque one covers a fraction 0.3 of the pixels (binomial over 48² pixels: σ = 0.0095, 5σ), in
+// another pattern at another sub-pixel position.
+TEST_F(GltfSpecTest, BlendCoversAFractionAlphaOfThePixels) {
+    scene::Scene s = masked_quads();
+    s.materials[1].alpha_mode = scene::AlphaMode::Blend;
+    s.materials[1].base_alpha = 0.3f;
+    s.meshes[1] = test::make_quad(Vec3(-1.5f, -1.5f, 0.5f), Vec3(3, 0, 0), Vec3(0, 3, 0), 1);
+    s.meshes.erase(s.meshes.begin());
+    const SceneGeometry geometry(context(), s);
+    GBufferPass pass(context(), geometry, kRes, kRes);
+    std::vector<bool> first;
+    for (const Vec2 subpixel : {Vec2(0.5f), Vec2(0.25f, 0.75f)}) {
+        context().submit_and_wait(
+            [&](gpu::CommandList& cmd) { pass.record(cmd, s.camera, subpixel); });
+        const std::vector<GBufferTexel> texels = pass.download();
+        int blended = 0;
+        std::vector<bool> pattern;
+        for (const GBufferTexel& t : texels) {
+            ASSERT_TRUE(t.covered);
+            pattern.push_back(t.material == 1);
+            blended += t.material == 1 ? 1 : 0;
+        }
+        EXPECT_NEAR(double(blended) / texels.size(), 0.3, 0.048);
+        if (first.empty()) {
+            first = pattern;
+        } else {
+            EXPECT_NE(first, pattern);
+        }
+    }
+}
+
+// BLEND's shadows: a blended quad of alpha 0.5 over the floor of masked_shadow_scene shadows half
+// of the light that it would shadow opaque. The GPU draws it into each VPL's shadow map with
+// another hash pattern; the oracle traces one shadow ray per VPL and pixel, and the VPLs of a
+// point light coincide, so each of its pixels is lit or not. The image means agree within the
+// oracle's binomial noise: ~60 % of the floor is in the shadow, ~1100 pixels of 48², each lit
+// with probability 0.5, so σ ≈ 0.6 · √(0.25 / 1100) ≈ 0.9 % of the unshadowed level, 1.3 % of
+// the mean: 4 % is 3σ. The quad drawn opaque (measured 44 % darker) is far beyond it.
+TEST_F(GltfSpecTest, BlendShadowsAFractionAlphaOfTheLight) {
+    scene::Scene s = masked_shadow_scene(false);
+    s.materials[1].alpha_mode = scene::AlphaMode::Blend;
+    s.materials[1].base_alpha = 0.5f;
+    s.materials[1].base_color_texture = {};
+    // Facing down, one-sided: the camera sees through it, the light does not (shadows keep
+    // back faces), so the image is the floor's alone.
+    s.meshes[1] = test::make_quad(Vec3(-1, 1, -1), Vec3(2, 0, 0), Vec3(0, 0, 2), 1);
+    const light::VplSet vpls = test::monte_carlo_vpls(s, 32, 2, 1);
+    const test::VplRenderSettings settings{.res = 48, .shadow_res = 256, .clamp = 0.0f};
+    const Rgb oracle = test::oracle_render(s, vpls, settings).mean();
+    const Rgb gpu = test::gpu_render(context(), s, vpls, settings).mean();
+    EXPECT_NEAR(gpu.r / oracle.r, 1.0, 0.04);
+    scene::Scene opaque = s;
+    opaque.materials[1].alpha_mode = scene::AlphaMode::Opaque;
+    const Rgb dark = test::gpu_render(context(), opaque, vpls, settings).mean();
+    EXPECT_LT(dark.r / oracle.r, 0.9);
+    RecordProperty("gpu_over_oracle", std::to_string(gpu.r / oracle.r));
+    RecordProperty("opaque_over_oracle", std::to_string(dark.r / oracle.r));
+}
+
 // Only scenes that draw a masked material get the alpha test (and texture bindings in the
 // G-buffer's fragment stage).
 TEST(GltfSpecShaders, AlphaTestOnlyInMaskedScenes) {

@@ -160,6 +160,37 @@ TEST(GltfVisibility, MaskReadsTheFactorAndTextureAlpha) {
     expect_cut(solid_accel, 0.0f, false);
 }
 
+// BLEND as hashed transparency: a ray passes through with probability 1 − alpha, the same ray
+// always alike (a hash of the ray, not a random draw).
+TEST(GltfVisibility, BlendPassesAFractionOneMinusAlphaDeterministically) {
+    scene::Material blend = test::diffuse_material(Rgb(0.8f));
+    blend.alpha_mode = scene::AlphaMode::Blend;
+    blend.base_alpha = 0.3f;
+    const MaskScene m = mask_scene(blend);
+    const trace::Accel accel(m.scene);
+    constexpr int kSide = 64;
+    int camera_hits = 0;
+    int shadowed = 0;
+    for (int j = 0; j < kSide; ++j) {
+        for (int i = 0; i < kSide; ++i) {
+            const float x = -0.95f + 1.9f * (float(i) + 0.5f) / kSide;
+            const float y = -0.95f + 1.9f * (float(j) + 0.5f) / kSide;
+            const trace::Ray ray{Vec3(x, y, 1.0f), Vec3(0.01f * x, 0.0f, -1.0f)};
+            const auto hit = accel.intersect_camera(ray);
+            ASSERT_TRUE(hit);
+            camera_hits += hit->mesh == 0 ? 1 : 0;
+            EXPECT_EQ(accel.intersect_camera(ray)->mesh, hit->mesh);  // deterministic
+            const trace::Ray shadow{Vec3(x, y, -0.25f), Vec3(0.0f, 0.01f * y, 1.0f), 1.25f};
+            shadowed += accel.occluded(shadow) ? 1 : 0;
+            EXPECT_EQ(accel.occluded(shadow), accel.occluded(shadow));
+        }
+    }
+    // Binomial: 4096 rays, σ = √(0.21 / 4096) = 0.007; 5σ.
+    constexpr double kCount = kSide * kSide;
+    EXPECT_NEAR(camera_hits / kCount, 0.3, 0.036);
+    EXPECT_NEAR(shadowed / kCount, 0.3, 0.036);
+}
+
 TEST(GltfVisibility, OpaqueIgnoresAlpha) {
     scene::Material opaque = test::diffuse_material(Rgb(0.8f));
     opaque.base_alpha = 0.0f;
