@@ -108,6 +108,34 @@ TEST_F(GltfSpecTest, VertexColoursMultiplyTheBaseColourAsOnTheCpu) {
     EXPECT_GT(bluest, 0.5f);
 }
 
+// The coloured quads lit by a point light in front of them: the GPU image against the oracle's
+// (same VPLs). Bound as in test_textured_scene.cpp, relMSE below 1.25 · 2/256 (shadow texels
+// deciding visibility otherwise than Embree; there is no occluder here, so that is generous);
+// the same VPLs on the GPU without COLOR_0 must be far beyond it (the test sees vertex colours).
+TEST_F(GltfSpecTest, VertexColouredImageAgreesWithTheOracle) {
+    scene::Scene s = coloured_quads();
+    scene::Light light;
+    light.type = scene::LightType::Point;
+    light.intensity = Rgb(8.0f);
+    light.position = Vec3(0.0f, 0.5f, 2.0f);
+    s.lights = {light};
+    const light::VplSet vpls = test::monte_carlo_vpls(s, 8, 3, 1);
+    const test::VplRenderSettings settings{.res = 48, .shadow_res = 256};
+    const Image oracle = test::oracle_render(s, vpls, settings);
+    const double error =
+        compare_images(test::gpu_render(context(), s, vpls, settings), oracle).rel_mse;
+    constexpr double kBound = 1.25 * 2.0 / 256.0;
+    EXPECT_LT(error, kBound);
+    scene::Scene plain = s;
+    for (scene::Mesh& m : plain.meshes)
+        m.colors.clear();
+    const double without =
+        compare_images(test::gpu_render(context(), plain, vpls, settings), oracle).rel_mse;
+    EXPECT_GT(without, 4.0 * kBound);
+    RecordProperty("relmse", std::to_string(error));
+    RecordProperty("relmse_without_color_0", std::to_string(without));
+}
+
 // Only scenes with COLOR_0 get vertex-colour code, and only a textured one hands COLOR_0 to the
 // material pass.
 TEST(GltfSpecShaders, VertexColourCodeOnlyWhereAMeshHasColor0) {
