@@ -15,8 +15,9 @@ namespace mvpl::trace {
 
 namespace {
 
-// What a mesh's Embree filter needs: hits on cut texels (alpha MASK) are skipped by every ray,
-// back faces of one-sided materials by camera rays.
+// What a mesh's Embree filters need: every ray skips hits on texels that an alpha-tested
+// material cuts (glTF MASK, or BLEND by a hash of the ray), camera rays also the back faces of
+// one-sided materials.
 struct MeshFilter {
     const scene::Mesh* mesh = nullptr;
     const material::SceneMaterials* materials = nullptr;
@@ -38,10 +39,11 @@ float ray_hash(const RTCFilterFunctionNArguments* args, unsigned i, int triangle
     return float(h >> 40) * 0x1p-24f;
 }
 
-// The intersect context the filters read: Embree hands back the pointer it was given.
-struct FilterContext {
+// The intersect context of camera rays: Embree hands back the pointer it was given to its
+// context filter (set for camera rays only, so that other rays pay nothing for it).
+struct CameraContext {
     RTCIntersectContext context;
-    bool camera = false;
+    const std::vector<MeshFilter>* filters = nullptr;
 };
 
 }  // namespace
@@ -68,14 +70,15 @@ static void embree_error(void* user, RTCError code, const char* message) {
                       (message ? message : ""));
 }
 
-// Rejects (valid = 0) the hits a ray passes through; Embree then goes on traversing.
-static void filter_hits(const RTCFilterFunctionNArguments* args) {
-    const auto* f = static_cast<const MeshFilter*>(args->geometryUserPtr);
-    const bool camera = reinterpret_cast<const FilterContext*>(args->context)->camera;
+// Camera rays (the context filter): rejects (valid = 0) back-face hits of one-sided materials;
+// Embree then goes on traversing.
+static void filter_back_faces(const RTCFilterFunctionNArguments* args) {
+    const auto* context = reinterpret_cast<const CameraContext*>(args->context);
     for (unsigned i = 0; i < args->N; ++i) {
         if (args->valid[i] == 0) continue;
+        const MeshFilter* f = &(*context->filters)[RTCHitN_geomID(args->hit, args->N, i)];
         const int triangle = int(RTCHitN_primID(args->hit, args->N, i));
-        if (camera && f->one_sided) {
+        if (f->one_sided) {
             const uint32_t* idx = &f->mesh->indices[3 * size_t(triangle)];
             const Vec3& p0 = f->mesh->positions[idx[0]];
             const Vec3 winding =
@@ -84,17 +87,21 @@ static void filter_hits(const RTCFilterFunctionNArguments* args) {
                            RTCRayN_dir_y(args->ray, args->N, i),
                            RTCRayN_dir_z(args->ray, args->N, i));
             // As make_interaction's front_face: the ray arrives on the side ng points to.
-            if (!(glm::dot(dir, winding) < 0.0f)) {
-                args->valid[i] = 0;
-                continue;
-            }
+            if (!(glm::dot(dir, winding) < 0.0f)) args->valid[i] = 0;
         }
-        if (f->alpha_tested) {
-            const Vec2 b(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
-            if (f->materials->cut(f->material, surface_attributes(*f->mesh, triangle, b),
-                                  ray_hash(args, i, triangle)))
-                args->valid[i] = 0;
-        }
+    }
+}
+
+// Every ray (the alpha-tested meshes' geometry filter): rejects hits on cut texels.
+static void filter_alpha(const RTCFilterFunctionNArguments* args) {
+    const auto* f = static_cast<const MeshFilter*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const int triangle = int(RTCHitN_primID(args->hit, args->N, i));
+        const Vec2 b(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+        if (f->materials->cut(f->material, surface_attributes(*f->mesh, triangle, b),
+                              ray_hash(args, i, triangle)))
+            args->valid[i] = 0;
     }
 }
 
@@ -104,7 +111,7 @@ Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_ma
     rtcSetDeviceErrorFunction(m_impl->device, embree_error, &m_impl->error);
     m_impl->scene = rtcNewScene(m_impl->device);
     // Robust mode: watertight traversal, so that rays through shared edges do not leak light.
-    rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
     m_impl->filters.reserve(scene.meshes.size());
     for (size_t id = 0; id < scene.meshes.size(); ++id) {
@@ -128,10 +135,10 @@ Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_ma
             filter = {&mesh, &m_materials, mesh.material, m_materials.alpha_tested(mesh.material),
                       !m_materials.double_sided(mesh.material)};
         }
-        if (filter.alpha_tested || filter.one_sided) {
+        if (filter.alpha_tested) {
             rtcSetGeometryUserData(geom, &filter);
-            rtcSetGeometryIntersectFilterFunction(geom, filter_hits);
-            if (filter.alpha_tested) rtcSetGeometryOccludedFilterFunction(geom, filter_hits);
+            rtcSetGeometryIntersectFilterFunction(geom, filter_alpha);
+            rtcSetGeometryOccludedFilterFunction(geom, filter_alpha);
         }
         rtcCommitGeometry(geom);
         rtcAttachGeometryByID(m_impl->scene, geom, static_cast<unsigned>(id));
@@ -168,9 +175,12 @@ std::optional<Hit> Accel::intersect_camera(const Ray& ray) const {
 
 std::optional<Hit> Accel::intersect(const Ray& ray, bool camera) const {
     m_impl->rays.fetch_add(1, std::memory_order_relaxed);
-    FilterContext context;
+    CameraContext context;
     rtcInitIntersectContext(&context.context);
-    context.camera = camera;
+    if (camera) {
+        context.context.filter = filter_back_faces;
+        context.filters = &m_impl->filters;
+    }
     RTCRayHit rayhit{};
     rayhit.ray = to_embree(ray);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
@@ -187,10 +197,10 @@ std::optional<Hit> Accel::intersect(const Ray& ray, bool camera) const {
 
 bool Accel::occluded(const Ray& ray) const {
     m_impl->rays.fetch_add(1, std::memory_order_relaxed);
-    FilterContext context;
-    rtcInitIntersectContext(&context.context);
+    RTCIntersectContext context;
+    rtcInitIntersectContext(&context);
     RTCRay r = to_embree(ray);
-    rtcOccluded1(m_impl->scene, &context.context, &r);
+    rtcOccluded1(m_impl->scene, &context, &r);
     // Embree marks an occluded ray by setting tfar to −∞.
     return r.tfar < 0.0f;
 }
