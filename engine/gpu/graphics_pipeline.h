@@ -6,7 +6,8 @@
 // The shape is what the render passes need and no more: one interleaved vertex buffer, push
 // constants visible to both stages (per-draw data fits in 128 bytes, the guaranteed push-constant
 // size), optionally one descriptor set of sampled images for the fragment stage (the textures
-// that alpha-masked materials test; bind_images), no culling (mvpl never culls geometry), dynamic
+// that alpha-tested materials read; bind_images), no culling (shadow maps keep back faces; the
+// G-buffer discards those of one-sided materials per draw, in its fragment stage), dynamic
 // viewport and scissor, no blending. Depth is reversed (compare GREATER, clear to 0, z_ndc = near /
 // distance): floats then resolve depth with the same relative precision at every distance, which an
 // infinite far plane and any scene scale need.
