@@ -92,6 +92,9 @@ void dump_scene_shaders(const std::string& dir, const SceneGeometry& geometry, b
     const StageSource shading = generate_shading_source(geometry.features(surface_vpls));
     std::vector<const StageSource*> stages{&g.vert, &g.frag, &shading};
     if (g.has_material_pass()) stages.push_back(&g.material);
+    const ShadowAlphaSources alpha =
+        generate_shadow_alpha_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
+    if (!alpha.frag.name.empty()) stages.push_back(&alpha.frag);
     dump_shaders(dir, stages);
 }
 

@@ -249,6 +249,24 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
     return out;
 }
 
+ShadowAlphaSources generate_shadow_alpha_sources(const std::vector<material::MaterialGraph>& graphs,
+                                                 const std::vector<scene::Texture>& textures,
+                                                 const std::vector<bool>& drawn) {
+    std::vector<bool> tested(graphs.size(), false);
+    for (size_t i = 0; i < graphs.size(); ++i)
+        tested[i] = graphs[i].alpha_tested() && (drawn.empty() || (i < drawn.size() && drawn[i]));
+    ShadowAlphaSources out;
+    if (std::find(tested.begin(), tested.end(), true) == tested.end()) return out;
+    // Code for those materials only: their alpha_cut, with their textures bound.
+    const material::MaterialCode code =
+        material::generate_material_code(graphs, textures, 0, true, tested);
+    out.textures = code.textures;
+    out.frag = {"shadow_masked.frag",
+                expand_template(gpu::embedded_shader("render/shadow_masked.frag"), {},
+                                {{"bindings", code.bindings}, {"materials", code.functions}})};
+    return out;
+}
+
 SceneShaders generate_scene_shaders(const scene::Scene& scene, const ShaderOptions& options) {
     SceneShaders out;
     out.features = scene_features(scene, options);

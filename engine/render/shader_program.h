@@ -87,6 +87,16 @@ struct GBufferSources {
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
                                          const std::vector<scene::Texture>& textures,
                                          const std::vector<bool>& drawn = {});
+// The fragment stage of the shadow maps' alpha-tested draws (shadow_masked.frag): alpha_cut for
+// the drawn materials that glTF MASK or BLEND makes alpha-tested, with their textures.
+struct ShadowAlphaSources {
+    StageSource frag;           // "shadow_masked.frag"; empty name: no such material is drawn
+    std::vector<int> textures;  // binding i: the scene texture textures[i]
+};
+ShadowAlphaSources generate_shadow_alpha_sources(const std::vector<material::MaterialGraph>& graphs,
+                                                 const std::vector<scene::Texture>& textures,
+                                                 const std::vector<bool>& drawn = {});
+
 // The shading shader for `features`.
 StageSource generate_shading_source(const ShaderFeatures& features,
                                     std::vector<std::string>* functions = nullptr);

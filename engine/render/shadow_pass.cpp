@@ -9,7 +9,6 @@
 #include "engine/gpu/graphics_pipeline.h"
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
-#include "engine/material/material_codegen.h"
 #include "engine/render/directional_frame.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shader_program.h"
@@ -137,14 +136,10 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
         if (draw.material < masked.size() && masked[draw.material]) m_masked_draws.push_back(draw);
     }
     if (m_masked_draws.empty()) return;
-    // Code for the masked materials only: their alpha_cut, with their textures bound.
-    const material::MaterialCode code =
-        material::generate_material_code(geometry.graphs(), geometry.textures(), 0, true, masked);
-    const std::string frag =
-        expand_template(gpu::embedded_shader("render/shadow_masked.frag"), {},
-                        {{"bindings", code.bindings}, {"materials", code.functions}});
-    const std::vector<uint32_t> frag_spirv =
-        gpu::compile_glsl_cached(gpu::ShaderStage::fragment, frag, "render/shadow_masked.frag", {});
+    const ShadowAlphaSources code =
+        generate_shadow_alpha_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
+    const std::vector<uint32_t> frag_spirv = gpu::compile_glsl_cached(
+        gpu::ShaderStage::fragment, code.frag.source, "render/" + code.frag.name, {});
     for (const int index : code.textures) {
         const scene::Texture& t = geometry.textures()[size_t(index)];
         gpu::Image image(context,

@@ -239,11 +239,18 @@ TEST(GltfAlphaShaders, AlphaTestOnlyInMaskedScenes) {
     GBufferSources g = generate_scene_shaders_g_buffer(s);
     EXPECT_NE(g.frag.source.find("alpha_cut("), std::string::npos);
     EXPECT_EQ(g.fragment_textures.size(), 1u);
+    const material::SceneMaterials materials(s);
+    EXPECT_NE(generate_shadow_alpha_sources(materials.graphs(), s.textures, drawn_materials(s))
+                  .frag.source.find("alpha_cut("),
+              std::string::npos);
     for (scene::Material& m : s.materials)
         m.alpha_mode = scene::AlphaMode::Opaque;
     g = generate_scene_shaders_g_buffer(s);
     EXPECT_EQ(g.frag.source.find("alpha_cut"), std::string::npos);
     EXPECT_TRUE(g.fragment_textures.empty());
+    const material::SceneMaterials opaque(s);
+    EXPECT_TRUE(generate_shadow_alpha_sources(opaque.graphs(), s.textures, drawn_materials(s))
+                    .frag.name.empty());
 }
 
 }  // namespace
