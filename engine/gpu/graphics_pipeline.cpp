@@ -57,11 +57,45 @@ GraphicsPipeline::GraphicsPipeline(Context& context, std::span<const uint32_t> v
     }
     VkShaderModule modules[2] = {VK_NULL_HANDLE, VK_NULL_HANDLE};
     try {
+        if (!m_layout.bindings.empty()) {
+            // Immutable: baked into the set layout, so draws bind only the images.
+            VkSamplerCreateInfo sampler{};
+            sampler.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+            sampler.magFilter = VK_FILTER_NEAREST;
+            sampler.minFilter = VK_FILTER_NEAREST;
+            sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+            sampler.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+            sampler.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+            sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+            sampler.maxLod = 0.0f;
+            vk_check(vkCreateSampler(device, &sampler, nullptr, &m_sampler), "vkCreateSampler");
+            std::vector<VkDescriptorSetLayoutBinding> bindings;
+            for (uint32_t i = 0; i < m_layout.bindings.size(); ++i) {
+                if (m_layout.bindings[i] != BindingType::sampled_image)
+                    throw GpuError(what + ": binding " + std::to_string(i) +
+                                   " is not a sampled image");
+                VkDescriptorSetLayoutBinding b{};
+                b.binding = i;
+                b.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+                b.descriptorCount = 1;
+                b.stageFlags = VK_SHADER_STAGE_FRAGMENT_BIT;
+                b.pImmutableSamplers = &m_sampler;
+                bindings.push_back(b);
+            }
+            VkDescriptorSetLayoutCreateInfo set_info{};
+            set_info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
+            set_info.bindingCount = uint32_t(bindings.size());
+            set_info.pBindings = bindings.data();
+            vk_check(vkCreateDescriptorSetLayout(device, &set_info, nullptr, &m_set_layout),
+                     "vkCreateDescriptorSetLayout(" + m_name + ")");
+        }
         VkPushConstantRange push{};
         push.stageFlags = kPushStages;
         push.size = m_layout.push_constant_bytes;
         VkPipelineLayoutCreateInfo layout_info{};
         layout_info.sType = VK_STRUCTURE_TYPE_PIPELINE_LAYOUT_CREATE_INFO;
+        layout_info.setLayoutCount = m_set_layout ? 1 : 0;
+        layout_info.pSetLayouts = &m_set_layout;
         layout_info.pushConstantRangeCount = push.size > 0 ? 1 : 0;
         layout_info.pPushConstantRanges = &push;
         vk_check(vkCreatePipelineLayout(device, &layout_info, nullptr, &m_pipeline_layout),
@@ -180,8 +214,53 @@ void GraphicsPipeline::release() noexcept {
     const VkDevice device = m_context->device();
     if (m_pipeline) vkDestroyPipeline(device, m_pipeline, nullptr);
     if (m_pipeline_layout) vkDestroyPipelineLayout(device, m_pipeline_layout, nullptr);
+    if (m_set_layout) vkDestroyDescriptorSetLayout(device, m_set_layout, nullptr);
+    if (m_sampler) vkDestroySampler(device, m_sampler, nullptr);
     m_pipeline = nullptr;
     m_pipeline_layout = nullptr;
+    m_set_layout = nullptr;
+    m_sampler = nullptr;
+}
+
+void bind_images(CommandList& cmd, const GraphicsPipeline& pipeline,
+                 std::span<const Image* const> images) {
+    bind_image_set(cmd, pipeline, write_image_set(cmd, pipeline, images));
+}
+
+void bind_image_set(CommandList& cmd, const GraphicsPipeline& pipeline, VkDescriptorSet set) {
+    if (!set) return;
+    vkCmdBindDescriptorSets(cmd.handle(), VK_PIPELINE_BIND_POINT_GRAPHICS,
+                            pipeline.pipeline_layout(), 0, 1, &set, 0, nullptr);
+}
+
+VkDescriptorSet write_image_set(CommandList& cmd, const GraphicsPipeline& pipeline,
+                                std::span<const Image* const> images) {
+    const std::vector<BindingType>& bindings = pipeline.layout().bindings;
+    if (images.size() != bindings.size()) {
+        throw GpuError("bind_images for '" + pipeline.name() +
+                       "': " + std::to_string(images.size()) + " images for " +
+                       std::to_string(bindings.size()) + " bindings");
+    }
+    if (images.empty()) return VK_NULL_HANDLE;
+    const VkDescriptorSet set = cmd.context().allocate_transient_set(pipeline.set_layout());
+    std::vector<VkDescriptorImageInfo> infos;
+    infos.reserve(images.size());  // the writes point into it
+    std::vector<VkWriteDescriptorSet> writes;
+    for (uint32_t i = 0; i < images.size(); ++i) {
+        if (!images[i]) throw GpuError("bind_images for '" + pipeline.name() + "': no image");
+        infos.push_back({VK_NULL_HANDLE, images[i]->view(), VK_IMAGE_LAYOUT_GENERAL});
+        VkWriteDescriptorSet write{};
+        write.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        write.dstSet = set;
+        write.dstBinding = i;
+        write.descriptorCount = 1;
+        write.descriptorType = VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER;
+        write.pImageInfo = &infos.back();
+        writes.push_back(write);
+    }
+    vkUpdateDescriptorSets(cmd.context().device(), uint32_t(writes.size()), writes.data(), 0,
+                           nullptr);
+    return set;
 }
 
 void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,

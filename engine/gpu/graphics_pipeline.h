@@ -4,10 +4,12 @@
 // from one vertex buffer and indexed draws of index ranges. Vulkan-free to include.
 //
 // The shape is what the render passes need and no more: one interleaved vertex buffer, push
-// constants visible to both stages and no descriptor sets (per-draw data fits in 128 bytes, the
-// guaranteed push-constant size), no culling (mvpl never culls geometry), dynamic viewport and
-// scissor, no blending. Depth is reversed (compare GREATER, clear to 0, z_ndc = near / distance):
-// floats then resolve depth with the same relative precision at every distance, which an
+// constants visible to both stages (per-draw data fits in 128 bytes, the guaranteed push-constant
+// size), optionally one descriptor set of sampled images for the fragment stage (the textures
+// that alpha-tested materials read; bind_images), no culling (shadow maps keep back faces; the
+// G-buffer discards those of one-sided materials per draw, in its fragment stage), dynamic
+// viewport and scissor, no blending. Depth is reversed (compare GREATER, clear to 0, z_ndc = near /
+// distance): floats then resolve depth with the same relative precision at every distance, which an
 // infinite far plane and any scene scale need.
 #include <array>
 #include <cstdint>
@@ -16,6 +18,7 @@
 #include <string_view>
 #include <vector>
 
+#include "engine/gpu/compute_pipeline.h"
 #include "engine/gpu/format.h"
 #include "engine/gpu/vk_fwd.h"
 
@@ -39,6 +42,9 @@ struct GraphicsLayout {
     std::vector<Format> color_formats;  // fragment output location i writes attachment i
     bool depth = false;                 // a d32_float depth attachment, test GREATER and write
     uint32_t push_constant_bytes = 0;   // one range, vertex and fragment stages
+    // Set 0 of the fragment stage, binding i; sampled_image only (nearest, clamp to edge: the
+    // generated texture code filters and wraps itself). Empty: no descriptor set.
+    std::vector<BindingType> bindings;
 };
 
 class GraphicsPipeline {
@@ -55,6 +61,7 @@ public:
     const std::string& name() const { return m_name; }
     VkPipeline handle() const { return m_pipeline; }
     VkPipelineLayout pipeline_layout() const { return m_pipeline_layout; }
+    VkDescriptorSetLayout set_layout() const { return m_set_layout; }
 
 private:
     void release() noexcept;
@@ -62,9 +69,22 @@ private:
     Context* m_context;
     GraphicsLayout m_layout;
     std::string m_name;
+    VkSampler m_sampler = nullptr;
+    VkDescriptorSetLayout m_set_layout = nullptr;
     VkPipelineLayout m_pipeline_layout = nullptr;
     VkPipeline m_pipeline = nullptr;
 };
+
+// Binds images (one per layout binding, in order) as the pipeline's set 0 for the draws recorded
+// after it, inside a submit_and_wait recording (a transient descriptor set).
+void bind_images(CommandList& cmd, const GraphicsPipeline& pipeline,
+                 std::span<const Image* const> images);
+// The same in two steps, for a pass that switches pipelines between its draws: a transient set
+// holding images for pipeline's layout (null without bindings), and binding it again (binding
+// another pipeline's set replaces it).
+VkDescriptorSet write_image_set(CommandList& cmd, const GraphicsPipeline& pipeline,
+                                std::span<const Image* const> images);
+void bind_image_set(CommandList& cmd, const GraphicsPipeline& pipeline, VkDescriptorSet set);
 
 // One layer of an image as an attachment, cleared at the start of rendering.
 struct ColorTarget {

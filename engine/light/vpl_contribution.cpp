@@ -49,7 +49,7 @@ PreparedVpl prepare_vpl(const Vpl& vpl) {
 
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
                                       const trace::Ray& camera_ray, Rgb* emitted) {
-    const std::optional<trace::Hit> hit = accel.intersect(camera_ray);
+    const std::optional<trace::Hit> hit = accel.intersect_camera(camera_ray);
     if (!hit) {
         // The environment seen where the ray leaves the scene.
         if (emitted && scene.environment.active())
@@ -62,6 +62,7 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
         material::SurfacePoint point;
         point.uv0 = si.uv0;
         point.uv1 = si.uv1;
+        point.color = si.color;
         *emitted += accel.materials().emission(si.material, point);
     }
     Receiver r{trace::make_shading_point(accel.materials(), si), Vec3(0.0f, 0.0f, 1.0f)};

@@ -40,6 +40,24 @@ struct SurfacePoint {
     vec3 n;
 };
 )"},
+    {"alpha_hash",
+     {},
+     R"(// A uniform number in [0, 1) from a position and a seed: glTF BLEND as hashed
+// transparency (engine/trace/accel.cpp hashes the ray instead).
+float alpha_hash(vec3 p, uint seed) {
+    const uvec3 v = floatBitsToUint(p);
+    uint h = seed * 747796405u + 2891336453u;
+    h = (h ^ v.x) * 0x9E3779B9u;
+    h ^= h >> 16;
+    h = (h ^ v.y) * 0x85EBCA6Bu;
+    h ^= h >> 13;
+    h = (h ^ v.z) * 0xC2B2AE35u;
+    h ^= h >> 16;
+    h *= 0x27D4EB2Du;
+    h ^= h >> 15;
+    return float(h >> 8) * (1.0 / 16777216.0);
+}
+)"},
     {"max_component", {}, R"(float max_component(vec3 v) {
     return max(v.r, max(v.g, v.b));
 }

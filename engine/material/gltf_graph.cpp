@@ -41,11 +41,24 @@ private:
 
 }  // namespace
 
-MaterialGraph graph_from_gltf(const scene::Material& m) {
+MaterialGraph graph_from_gltf(const scene::Material& m, const GltfGraphOptions& options) {
     MaterialGraph g;
     g.double_sided = m.double_sided;
     Builder b(g);
-    NodeInput base = b.value(m.base_color_texture, Vec4(m.base_color, 1.0f), kAllChannels);
+    NodeInput base = b.value(m.base_color_texture, Vec4(m.base_color, m.base_alpha), kAllChannels);
+    if (options.vertex_colors) {
+        Node colour;
+        colour.kind = &node_kind("vertex_color");
+        Node product;
+        product.kind = &node_kind("multiply");
+        product.inputs[0] = base;
+        product.inputs[1] = {g.add(colour), kAllChannels};
+        base = {g.add(product), kAllChannels};
+    }
+    g.alpha_mode = m.alpha_mode;
+    g.alpha_cutoff = m.alpha_cutoff;
+    // Before the transmission mix below, which overwrites the alpha channel.
+    if (m.alpha_mode != scene::AlphaMode::Opaque) g.alpha = {base.node, 3};
     // metallicRoughnessTexture: roughness in G, metallic in B; one texture node serves both.
     NodeInput metallic;
     NodeInput roughness;

@@ -316,6 +316,25 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
         groups + top + "        default: " + fallback_call + " return;\n    }\n}\n";
     if (bodies.empty()) module.require("lambertian");
 
+    std::string alpha_helpers;
+    std::string alpha_cases;
+    for (size_t i = 0; i < graphs.size(); ++i) {
+        if (!used.empty() && (i >= used.size() || !used[i])) continue;
+        const MaterialGraph& g = graphs[i];
+        if (!g.alpha_tested()) continue;
+        writer.begin(g, "alpha_" + std::to_string(i));
+        const std::string alpha = writer.scalar(g.alpha);
+        alpha_helpers += writer.helpers();
+        if (g.masked()) {
+            alpha_cases += "        case " + std::to_string(i) + "u: return " + alpha + " < " +
+                           glsl_number(g.alpha_cutoff) + ";\n";
+        } else {
+            module.require("alpha_hash");
+            alpha_cases += "        case " + std::to_string(i) +
+                           "u: return alpha_hash(p, seed) >= " + alpha + ";\n";
+        }
+    }
+
     MaterialCode out;
     out.textures.resize(bindings.size());
     for (const auto& [texture, slot] : bindings) {
@@ -326,6 +345,15 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
     }
     out.node_functions = module.functions();
     out.functions = module.code() + materials + dispatch;
+    if (!alpha_cases.empty()) {
+        out.alpha_tested = true;
+        out.functions += alpha_helpers +
+                         "// glTF alphaMode MASK or BLEND: whether material m cuts its surface at "
+                         "s (at p).\n"
+                         "bool alpha_cut(uint m, SurfacePoint s, vec3 p, uint seed) {\n"
+                         "    switch (m) {\n" +
+                         alpha_cases + "        default: return false;\n    }\n}\n";
+    }
     return out;
 }
 

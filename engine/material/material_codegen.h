@@ -39,6 +39,11 @@ struct MaterialCode {
     std::string functions;
     std::vector<int> textures;                // scene texture indices, in binding order
     std::vector<std::string> node_functions;  // what `functions` emitted, in order
+    // A used graph is alpha-tested (glTF alphaMode MASK or BLEND): `functions` ends with
+    // `bool alpha_cut(uint m, SurfacePoint s, vec3 p, uint seed)`, true where material m cuts
+    // its surface at s: MASK where the base alpha is below alphaCutoff, BLEND (hashed
+    // transparency) where alpha_hash(p, seed) ≥ alpha. Other scenes get no such function.
+    bool alpha_tested = false;
 };
 
 // GLSL for the G-buffer. first_binding: the binding of the first texture. bind_textures false:

@@ -39,11 +39,28 @@ struct MaterialGraph {
     int emission = -1;  // an Emission node or -1 (not emissive)
     int normal = -1;    // a normal node (NormalMap, BumpMap) or -1: the interpolated normal
     bool double_sided = false;
+    // glTF alpha: the base colour's alpha (factor · texture A · COLOR_0 A) where alpha_mode is
+    // not Opaque; unused (node −1) otherwise. Mask cuts the surface where alpha < alpha_cutoff;
+    // Blend keeps a hit with probability alpha (hashed transparency: alpha_kept).
+    NodeInput alpha;
+    scene::AlphaMode alpha_mode = scene::AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f;
+    bool masked() const { return alpha_mode == scene::AlphaMode::Mask && alpha.node >= 0; }
+    bool blended() const { return alpha_mode == scene::AlphaMode::Blend && alpha.node >= 0; }
+    // Hits on the surface are tested against its alpha (every ray, the G-buffer, shadow maps).
+    bool alpha_tested() const { return masked() || blended(); }
 
     // Throws std::logic_error for a node without a kind.
     int add(const Node& node);
     // The distinct kinds reachable from the outputs, in registration order.
     std::vector<const NodeKind*> kinds() const;
+};
+
+// What graph_from_gltf needs to know of the meshes that use a material.
+struct GltfGraphOptions {
+    // A mesh with COLOR_0 uses the material: the base colour is multiplied by it (a multiply and
+    // a vertex_color node), which graphs of other materials leave out.
+    bool vertex_colors = false;
 };
 
 // A glTF metallic-roughness material as a graph. The closure node is the narrowest that
@@ -55,6 +72,7 @@ struct MaterialGraph {
 // renderer nor in the path tracer): a transmission factor t scales the diffuse base by (1 − t),
 // so the surface keeps its reflection lobe and the transmitted energy is lost. A fully
 // transmissive material becomes the rough dielectric's reflection lobe.
-MaterialGraph graph_from_gltf(const scene::Material& material);
+MaterialGraph graph_from_gltf(const scene::Material& material,
+                              const GltfGraphOptions& options = {});
 
 }  // namespace mvpl::material

@@ -10,6 +10,7 @@
     X(ImageTexture)        \
     X(VertexColor)         \
     X(Mix)                 \
+    X(Multiply)            \
     X(Emission)            \
     X(NormalMap)           \
     X(BumpMap)             \

@@ -11,6 +11,9 @@
 
 namespace mvpl::material {
 
+// Per material: whether a mesh with COLOR_0 uses it.
+std::vector<bool> materials_with_vertex_colors(const scene::Scene& scene);
+
 class SceneMaterials {
 public:
     // Keeps a reference to scene.textures: the scene must outlive this.
@@ -34,6 +37,17 @@ public:
     // The graph has an emission node: the material's triangles are area lights.
     bool is_emissive(int material) const { return graph(material).emission >= 0; }
     bool double_sided(int material) const { return graph(material).double_sided; }
+    // glTF alphaMode MASK: whether the material cuts its surface at p (alpha < alphaCutoff);
+    // BLEND as hashed transparency: whether a hit with the uniform number u ∈ [0, 1) (a hash of
+    // the ray, so that a hit is deterministic) passes through it (u ≥ alpha).
+    bool masked(int material) const { return graph(material).masked(); }
+    bool alpha_tested(int material) const { return graph(material).alpha_tested(); }
+    bool cut(int material, const SurfacePoint& p, float u = 0.0f) const {
+        const MaterialGraph& g = graph(material);
+        if (!g.alpha_tested()) return false;
+        const float alpha = evaluate_input(g, g.alpha, m_textures, p).x;
+        return g.masked() ? alpha < g.alpha_cutoff : u >= alpha;
+    }
 
 private:
     const std::vector<scene::Texture>& m_textures;

@@ -26,8 +26,8 @@ Vec2 next_2d(Rng& rng) {
 
 }  // namespace
 
-Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth,
-                         int rr_depth) const {
+Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, int rr_depth,
+                         bool from_camera) const {
     const bool unlimited = max_depth < 0;
     Rgb L(0.0f);
     Rgb throughput(1.0f);
@@ -36,7 +36,10 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth,
     Vec3 prev_p(0.0f);
     // depth = number of segments of the path up to the current vertex (Mitsuba's convention).
     for (int depth = 1;; ++depth) {
-        const std::optional<trace::Hit> hit = m_accel.intersect(ray);
+        // The camera does not see the back faces of one-sided materials (glTF doubleSided).
+        const std::optional<trace::Hit> hit = depth == 1 && from_camera
+                                                  ? m_accel.intersect_camera(ray)
+                                                  : m_accel.intersect(ray);
         if (!hit) {
             // The environment, weighted against the light sample that could have chosen the
             // same direction.

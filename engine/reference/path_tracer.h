@@ -39,8 +39,11 @@ public:
 
     // Box-filtered image, deterministic for a seed whatever the thread count.
     Image render(const PathTracerOptions& options, RenderStats* stats = nullptr) const;
-    // Radiance arriving along one camera ray.
-    Rgb radiance(const trace::Ray& ray, Rng& rng, int max_depth, int rr_depth) const;
+    // Radiance arriving along one ray: a camera ray (which does not see the back faces of
+    // one-sided materials), or from_camera false for one leaving a surface (clamping
+    // compensation), whose max_depth counts its segments from there.
+    Rgb radiance(const trace::Ray& ray, Rng& rng, int max_depth, int rr_depth,
+                 bool from_camera = true) const;
 
 private:
     const scene::Scene& m_scene;

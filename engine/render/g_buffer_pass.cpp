@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <array>
+#include <bit>
 
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/compute_pipeline.h"
@@ -17,17 +18,19 @@ namespace {
 using shared::GBufferPush;
 using shared::MaterialPush;
 
-gpu::GraphicsLayout g_buffer_layout() {
+gpu::GraphicsLayout g_buffer_layout(size_t textures) {
     gpu::GraphicsLayout layout;
     layout.vertex_stride = sizeof(GeometryVertex);
     layout.attributes = {{gpu::VertexFormat::float3, offsetof(GeometryVertex, position)},
                          {gpu::VertexFormat::float3, offsetof(GeometryVertex, normal)},
                          {gpu::VertexFormat::float3, offsetof(GeometryVertex, face_normal)},
                          {gpu::VertexFormat::float4, offsetof(GeometryVertex, uv)},
-                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, tangent)}};
+                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, tangent)},
+                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, color)}};
     layout.color_formats.assign(kGBufferLayerCount, gpu::Format::rgba32_float);
     layout.depth = true;
     layout.push_constant_bytes = sizeof(GBufferPush);
+    layout.bindings.assign(textures, gpu::BindingType::sampled_image);
     return layout;
 }
 
@@ -41,16 +44,24 @@ std::unique_ptr<gpu::GraphicsPipeline> make_pipeline(gpu::Context& context,
                                                      const StageSource* vert,
                                                      const StageSource* frag,
                                                      const gpu::SpirvCacheOptions& cache) {
-    GBufferSources generated;
+    GBufferSources generated =
+        generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
     if (!vert || !frag) {
-        generated =
-            generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
         vert = &generated.vert;
         frag = &generated.frag;
     }
-    return std::make_unique<gpu::GraphicsPipeline>(context, compile_stage(*vert, cache),
-                                                   compile_stage(*frag, cache), g_buffer_layout(),
-                                                   "g-buffer");
+    return std::make_unique<gpu::GraphicsPipeline>(
+        context, compile_stage(*vert, cache), compile_stage(*frag, cache),
+        g_buffer_layout(generated.fragment_textures.size()), "g-buffer");
+}
+
+gpu::Image upload_texture(gpu::Context& context, const scene::Texture& t) {
+    gpu::Image image(context,
+                     {uint32_t(t.width), uint32_t(t.height), 1, gpu::Format::rgba32_float,
+                      gpu::ImageUsage::sampled, false},
+                     "texture " + t.name);
+    image.upload(t.texels);
+    return image;
 }
 
 }  // namespace
@@ -90,16 +101,12 @@ GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, u
       m_pipeline(make_pipeline(context, geometry, vert, frag, cache)) {
     const GBufferSources sources =
         generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
+    for (const int index : sources.fragment_textures)
+        m_fragment_textures.push_back(upload_texture(context, geometry.textures()[size_t(index)]));
     if (!sources.has_material_pass()) return;
     gpu::ComputeLayout layout{{gpu::BindingType::storage_image}, sizeof(MaterialPush)};
     for (const int index : sources.textures) {
-        const scene::Texture& t = geometry.textures()[size_t(index)];
-        gpu::Image image(context,
-                         {uint32_t(t.width), uint32_t(t.height), 1, gpu::Format::rgba32_float,
-                          gpu::ImageUsage::sampled, false},
-                         "texture " + t.name);
-        image.upload(t.texels);
-        m_textures.push_back(std::move(image));
+        m_textures.push_back(upload_texture(context, geometry.textures()[size_t(index)]));
         layout.bindings.push_back(gpu::BindingType::sampled_image);
     }
     m_material_pipeline = std::make_unique<gpu::ComputePipeline>(
@@ -117,12 +124,23 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec
         colors[i] = {&m_image, i, {0.0f, 0.0f, 0.0f, 0.0f}};
     const gpu::DepthTarget depth{&m_depth, 0, 0.0f};
     gpu::begin_rendering(cmd, colors, &depth);
+    if (!m_fragment_textures.empty()) {
+        std::vector<const gpu::Image*> images;
+        for (const gpu::Image& t : m_fragment_textures)
+            images.push_back(&t);
+        gpu::bind_images(cmd, *m_pipeline, images);
+    }
     GBufferPush push{};
+    // glTF BLEND's hashed transparency: a pattern per sub-pixel position, so that the batches
+    // of a jittered render average it into transparency (and a render is deterministic).
+    const uint32_t seed = std::bit_cast<uint32_t>(subpixel.x) * 0x9E3779B9u ^
+                          std::bit_cast<uint32_t>(subpixel.y) * 0x85EBCA6Bu;
     const Mat4 view_proj = camera_view_projection(camera, width(), height(), subpixel);
     std::copy_n(&view_proj[0][0], 16, push.view_proj);
     for (const GeometryDraw& draw : m_geometry->draws()) {
         const GeometryMaterial& m = m_geometry->materials()[draw.material];
         push.material_flags = m.double_sided ? 1u : 0u;
+        push.seed = seed;
         push.material = draw.material;
         gpu::draw(cmd, *m_pipeline, m_geometry->vertices(), gpu::push_bytes(push),
                   draw.first_vertex, draw.vertex_count);

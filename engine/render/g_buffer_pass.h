@@ -89,6 +89,8 @@ private:
     // The material pass (shader_program.h, GBufferSources): only for graphs with image textures.
     std::unique_ptr<gpu::ComputePipeline> m_material_pipeline;
     std::vector<gpu::Image> m_textures;
+    // The fragment stage's textures (GBufferSources::fragment_textures): masked scenes only.
+    std::vector<gpu::Image> m_fragment_textures;
 };
 
 }  // namespace mvpl::render

@@ -68,6 +68,9 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
                 v.uv[3] = uv1.y;
                 store(v.tangent, mesh.tangents.empty() ? dpdu : Vec3(mesh.tangents[idx[k]]));
                 v.tangent[3] = sign;
+                const Vec4 color = mesh.colors.empty() ? Vec4(1.0f) : mesh.colors[idx[k]];
+                for (int c = 0; c < 4; ++c)
+                    v.color[c] = color[c];
                 vertices.push_back(v);
                 m_bounds.extend(mesh.positions[idx[k]]);
             }
@@ -90,6 +93,9 @@ void dump_scene_shaders(const std::string& dir, const SceneGeometry& geometry, b
     const StageSource shading = generate_shading_source(geometry.features(surface_vpls));
     std::vector<const StageSource*> stages{&g.vert, &g.frag, &shading};
     if (g.has_material_pass()) stages.push_back(&g.material);
+    const ShadowAlphaSources alpha =
+        generate_shadow_alpha_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
+    if (!alpha.frag.name.empty()) stages.push_back(&alpha.frag);
     dump_shaders(dir, stages);
 }
 

@@ -4,7 +4,7 @@
 // The vertex buffer is de-indexed (three vertices per triangle): the G-buffer needs each
 // triangle's winding normal, and a per-triangle attribute needs either de-indexing or
 // gl_PrimitiveID in the fragment shader (which needs the geometry-shader feature). Memory is
-// 36 bytes × 3 per triangle, 11 MB for 100k triangles.
+// 84 bytes × 3 per triangle, 25 MB for 100k triangles.
 #include <cstdint>
 #include <vector>
 
@@ -17,7 +17,7 @@
 
 namespace mvpl::render {
 
-// One vertex as the passes read it (locations 0, 1, 2).
+// One vertex as the passes read it (locations 0 to 5).
 struct GeometryVertex {
     float position[3];
     float normal[3];       // interpolated vertex normal (the shading normal)
@@ -26,8 +26,9 @@ struct GeometryVertex {
     // As trace::make_interaction: TANGENT.xyz, else the triangle's ∂p/∂u from TEXCOORD_0, else
     // 0 (the fragment shader orthonormalises it); w = the tangent sign of the first vertex.
     float tangent[4];
+    float color[4];  // COLOR_0 (linear RGBA), white where the mesh has none
 };
-static_assert(sizeof(GeometryVertex) == 68);
+static_assert(sizeof(GeometryVertex) == 84);
 
 // What the host side draws a material with (the GPU reads the rest from the material graph).
 struct GeometryMaterial {

@@ -208,11 +208,33 @@ StageSource generate_shading_source(const ShaderFeatures& features,
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
                                          const std::vector<scene::Texture>& textures,
                                          const std::vector<bool>& drawn) {
-    // The G-buffer pipeline has no descriptor sets yet (gpu::GraphicsPipeline): image textures
-    // read as their factors there; the CPU path tracer and the VPLs apply them.
+    // Image textures read as their factors in the G-buffer's fragment stage, and the material
+    // pass applies them, unless a drawn material is masked: then the fragment stage binds the
+    // textures, as its alpha test needs them (and the material pass repeats what it resolved).
+    const bool masked = std::any_of(graphs.begin(), graphs.end(), [&](const auto& g) {
+        const size_t i = size_t(&g - graphs.data());
+        return g.alpha_tested() && (drawn.empty() || (i < drawn.size() && drawn[i]));
+    });
     const material::MaterialCode code =
-        material::generate_material_code(graphs, textures, 0, false, drawn);
+        material::generate_material_code(graphs, textures, 0, masked, drawn);
     GBufferSources out;
+    out.alpha_tested = code.alpha_tested;
+    out.fragment_textures = code.textures;
+    const material::MaterialCode textured =
+        material::generate_material_code(graphs, textures, 1, true, drawn);
+    out.color_handoff = !textured.textures.empty() &&
+                        std::find(textured.node_functions.begin(), textured.node_functions.end(),
+                                  "vertex_color") != textured.node_functions.end();
+    std::vector<std::string> enabled;
+    if (out.color_handoff) enabled.emplace_back("color_handoff");
+    if (out.alpha_tested) enabled.emplace_back("alpha_tested");
+    // A discard costs early depth testing: only scenes that draw a one-sided material get it.
+    for (size_t i = 0; i < graphs.size(); ++i) {
+        if ((drawn.empty() || (i < drawn.size() && drawn[i])) && !graphs[i].double_sided) {
+            enabled.emplace_back("one_sided");
+            break;
+        }
+    }
     out.functions = code.node_functions;
     const std::string push =
         expand_template(gpu::embedded_shader("render/g_buffer_push.glsl"), {}, {});
@@ -220,18 +242,34 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
                 expand_template(gpu::embedded_shader("render/g_buffer.vert"), {}, {})};
     out.frag = {"g_buffer.frag",
                 expand_template(
-                    gpu::embedded_shader("render/g_buffer.frag"), {},
+                    gpu::embedded_shader("render/g_buffer.frag"), enabled,
                     {{"push", push}, {"bindings", code.bindings}, {"materials", code.functions}})};
-    const material::MaterialCode textured =
-        material::generate_material_code(graphs, textures, 1, true, drawn);
     if (!textured.textures.empty()) {
         out.textures = textured.textures;
         out.material_functions = textured.node_functions;
         out.material = {
             "material.comp",
-            expand_template(gpu::embedded_shader("render/material_template.glsl"), {},
+            expand_template(gpu::embedded_shader("render/material_template.glsl"), enabled,
                             {{"bindings", textured.bindings}, {"materials", textured.functions}})};
     }
+    return out;
+}
+
+ShadowAlphaSources generate_shadow_alpha_sources(const std::vector<material::MaterialGraph>& graphs,
+                                                 const std::vector<scene::Texture>& textures,
+                                                 const std::vector<bool>& drawn) {
+    std::vector<bool> tested(graphs.size(), false);
+    for (size_t i = 0; i < graphs.size(); ++i)
+        tested[i] = graphs[i].alpha_tested() && (drawn.empty() || (i < drawn.size() && drawn[i]));
+    ShadowAlphaSources out;
+    if (std::find(tested.begin(), tested.end(), true) == tested.end()) return out;
+    // Code for those materials only: their alpha_cut, with their textures bound.
+    const material::MaterialCode code =
+        material::generate_material_code(graphs, textures, 0, true, tested);
+    out.textures = code.textures;
+    out.frag = {"shadow_masked.frag",
+                expand_template(gpu::embedded_shader("render/shadow_masked.frag"), {},
+                                {{"bindings", code.bindings}, {"materials", code.functions}})};
     return out;
 }
 

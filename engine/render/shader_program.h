@@ -75,6 +75,14 @@ struct GBufferSources {
     StageSource material;
     std::vector<int> textures;
     std::vector<std::string> material_functions;
+    // Scenes that draw an alpha-tested material (glTF alphaMode MASK or BLEND): the fragment
+    // stage binds these scene textures (binding i: textures[i]) to test alpha, and discards
+    // what is cut.
+    std::vector<int> fragment_textures;
+    bool alpha_tested = false;
+    // The fragment stage hands COLOR_0 to the material pass in the specular layer (which that
+    // pass rewrites): a drawn graph reads vertex colours and the scene has a material pass.
+    bool color_handoff = false;
     bool has_material_pass() const { return !textures.empty(); }
 };
 // The G-buffer stages for material graphs (textures: the scene's, for the bump-map step; drawn:
@@ -82,6 +90,16 @@ struct GBufferSources {
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
                                          const std::vector<scene::Texture>& textures,
                                          const std::vector<bool>& drawn = {});
+// The fragment stage of the shadow maps' alpha-tested draws (shadow_masked.frag): alpha_cut for
+// the drawn materials that glTF MASK or BLEND makes alpha-tested, with their textures.
+struct ShadowAlphaSources {
+    StageSource frag;           // "shadow_masked.frag"; empty name: no such material is drawn
+    std::vector<int> textures;  // binding i: the scene texture textures[i]
+};
+ShadowAlphaSources generate_shadow_alpha_sources(const std::vector<material::MaterialGraph>& graphs,
+                                                 const std::vector<scene::Texture>& textures,
+                                                 const std::vector<bool>& drawn = {});
+
 // The shading shader for `features`.
 StageSource generate_shading_source(const ShaderFeatures& features,
                                     std::vector<std::string>* functions = nullptr);

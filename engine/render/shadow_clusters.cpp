@@ -69,8 +69,13 @@ void add_mesh(const scene::Mesh& mesh, float simplify_error, std::vector<Vec3>& 
 ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_triangles,
                                float simplify_error) {
     std::vector<uint32_t> triangles;  // three indices each, into m_positions
-    for (const scene::Mesh& mesh : scene.meshes)
+    for (const scene::Mesh& mesh : scene.meshes) {
+        // Masked and blended meshes cast shadows through ShadowPass's alpha-tested draws.
+        if (mesh.material >= 0 && size_t(mesh.material) < scene.materials.size() &&
+            scene.materials[size_t(mesh.material)].alpha_mode != scene::AlphaMode::Opaque)
+            continue;
         add_mesh(mesh, simplify_error, m_positions, triangles);
+    }
     const size_t count = triangles.size() / 3;
     Vec3 lo(INFINITY);
     Vec3 hi(-INFINITY);

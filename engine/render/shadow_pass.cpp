@@ -1,13 +1,17 @@
 #include "engine/render/shadow_pass.h"
 
 #include <array>
+#include <cstring>
 
 #include "engine/gpu/command_list.h"
+#include "engine/gpu/embedded_shaders.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/graphics_pipeline.h"
 #include "engine/gpu/shader_compiler.h"
+#include "engine/gpu/spirv_cache.h"
 #include "engine/render/directional_frame.h"
 #include "engine/render/scene_geometry.h"
+#include "engine/render/shader_program.h"
 #include "shaders/shared/push_constants.h"
 
 namespace mvpl::render {
@@ -49,6 +53,26 @@ gpu::GraphicsLayout shadow_layout(uint32_t push_constant_bytes) {
     layout.depth = true;
     layout.push_constant_bytes = push_constant_bytes;
     return layout;
+}
+
+// The alpha-tested pipelines' vertices: the G-buffer's (position, uv, COLOR_0 at locations 0-2).
+gpu::GraphicsLayout masked_layout(uint32_t push_constant_bytes, size_t textures) {
+    gpu::GraphicsLayout layout = shadow_layout(push_constant_bytes);
+    layout.vertex_stride = sizeof(GeometryVertex);
+    layout.attributes = {{gpu::VertexFormat::float3, offsetof(GeometryVertex, position)},
+                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, uv)},
+                         {gpu::VertexFormat::float4, offsetof(GeometryVertex, color)}};
+    layout.bindings.assign(textures, gpu::BindingType::sampled_image);
+    return layout;
+}
+
+// An embedded vertex stage with MVPL_MASKED defined (after its #version line).
+std::vector<uint32_t> compile_masked_vertex(const std::string& name) {
+    std::string text(gpu::embedded_shader(name));
+    const size_t eol = text.find('\n');
+    text.insert(eol + 1, "#define MVPL_MASKED\n");
+    const std::string source = expand_template(text, {}, {});
+    return gpu::compile_glsl_cached(gpu::ShaderStage::vertex, source, name + " (masked)", {});
 }
 
 template <typename T>
@@ -104,7 +128,56 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
           context, gpu::compile_embedded_shader("render/shadow_ortho.vert"),
           gpu::compile_embedded_shader("render/shadow.frag"), shadow_layout(sizeof(OrthoPush)),
           "directional shadow")),
-      m_near(kNearFraction * std::max(geometry.bounds().diagonal(), 1e-30f)) {}
+      m_near(kNearFraction * std::max(geometry.bounds().diagonal(), 1e-30f)) {
+    std::vector<bool> masked(geometry.graphs().size(), false);
+    for (size_t i = 0; i < masked.size(); ++i)
+        masked[i] = geometry.graphs()[i].alpha_tested();
+    for (const GeometryDraw& draw : geometry.draws()) {
+        if (draw.material < masked.size() && masked[draw.material]) m_masked_draws.push_back(draw);
+    }
+    if (m_masked_draws.empty()) return;
+    const ShadowAlphaSources code =
+        generate_shadow_alpha_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
+    const std::vector<uint32_t> frag_spirv = gpu::compile_glsl_cached(
+        gpu::ShaderStage::fragment, code.frag.source, "render/" + code.frag.name, {});
+    for (const int index : code.textures) {
+        const scene::Texture& t = geometry.textures()[size_t(index)];
+        gpu::Image image(context,
+                         {uint32_t(t.width), uint32_t(t.height), 1, gpu::Format::rgba32_float,
+                          gpu::ImageUsage::sampled, false},
+                         "texture " + t.name);
+        image.upload(t.texels);
+        m_masked_textures.push_back(std::move(image));
+    }
+    m_masked_pipeline = std::make_unique<gpu::GraphicsPipeline>(
+        context, compile_masked_vertex("render/shadow.vert"), frag_spirv,
+        masked_layout(sizeof(ShadowPush), code.textures.size()), "masked shadow");
+    m_masked_ortho_pipeline = std::make_unique<gpu::GraphicsPipeline>(
+        context, compile_masked_vertex("render/shadow_ortho.vert"), frag_spirv,
+        masked_layout(sizeof(OrthoPush), code.textures.size()), "masked directional shadow");
+}
+
+void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline& pipeline,
+                             VkDescriptorSet set, std::span<const std::byte> push,
+                             size_t material_offset, bool floats) {
+    gpu::bind_image_set(cmd, pipeline, set);
+    // The push constants with the draw's material at material_offset and the VPL's seed after
+    // it: uints for cube faces, floats for orthographic maps (exact below 2^24).
+    std::vector<std::byte> bytes(push.begin(), push.end());
+    const uint32_t seed = m_vpl_seed % (1u << 24);
+    for (const GeometryDraw& draw : m_masked_draws) {
+        if (floats) {
+            const float values[2] = {float(draw.material), float(seed)};
+            std::memcpy(bytes.data() + material_offset, values, sizeof(values));
+        } else {
+            const uint32_t values[2] = {draw.material, seed};
+            std::memcpy(bytes.data() + material_offset, values, sizeof(values));
+        }
+        gpu::draw(cmd, pipeline, m_geometry->vertices(), bytes, draw.first_vertex,
+                  draw.vertex_count);
+        m_triangles_drawn += draw.vertex_count / 3;
+    }
+}
 
 ShadowPass::~ShadowPass() = default;
 
@@ -115,8 +188,17 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
     }
     bool depth_in_use = false;
     bool ortho_depth_in_use = false;
+    if (m_masked_pipeline) {
+        // Written once per recording, bound again before each face's masked draws.
+        std::vector<const gpu::Image*> images;
+        for (const gpu::Image& t : m_masked_textures)
+            images.push_back(&t);
+        m_masked_set = gpu::write_image_set(cmd, *m_masked_pipeline, images);
+        m_masked_ortho_set = gpu::write_image_set(cmd, *m_masked_ortho_pipeline, images);
+    }
     for (uint32_t i = 0; i < batch.size(); ++i) {
         const light::Vpl& vpl = batch[i];
+        ++m_vpl_seed;  // each VPL its own hashed-transparency pattern (glTF BLEND)
         if (vpl.type == light::VplType::Directional) {
             if (ortho_depth_in_use) cmd.barrier();
             ortho_depth_in_use = true;
@@ -152,6 +234,10 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
                 m_triangles_drawn += r.index_count / 3;
             gpu::draw_indexed(cmd, *m_pipeline, casters.positions, casters.indices,
                               gpu::push_bytes(push), m_ranges);
+            if (m_masked_pipeline) {
+                draw_masked(cmd, *m_masked_pipeline, m_masked_set, gpu::push_bytes(push),
+                            offsetof(ShadowPush, face) + sizeof(uint32_t), false);
+            }
             gpu::end_rendering(cmd);
         }
     }
@@ -169,6 +255,10 @@ void ShadowPass::record_directional(gpu::CommandList& cmd, const light::Vpl& vpl
     const gpu::IndexRange all = m_full.clusters->all();
     gpu::draw_indexed(cmd, *m_ortho_pipeline, m_full.positions, m_full.indices,
                       gpu::push_bytes(push), std::span(&all, 1));
+    if (m_masked_ortho_pipeline) {
+        draw_masked(cmd, *m_masked_ortho_pipeline, m_masked_ortho_set, gpu::push_bytes(push),
+                    offsetof(OrthoPush, extents) + 2 * sizeof(float), true);
+    }
     gpu::end_rendering(cmd);
 }
 

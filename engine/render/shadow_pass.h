@@ -12,6 +12,12 @@
 // Directional VPLs get no cube but an orthographic map instead: layer i of an R32F 2D array
 // holds, for batch[i], the distance along the direction of travel from the map's near plane
 // (directional_frame.h) to the first surface.
+//
+// Meshes with masked or blended materials (glTF alphaMode MASK, BLEND) are not among the
+// clusters: every cube face and orthographic map draws them whole from the scene's vertex buffer
+// with an alpha-tested pipeline (shadow_masked.frag), which only scenes that draw such a
+// material build. BLEND is hashed transparency with a seed per VPL, so that a blended surface
+// shadows a fraction alpha of the VPLs behind it.
 #include <cstdint>
 #include <memory>
 #include <span>
@@ -20,6 +26,7 @@
 #include "engine/gpu/graphics_pipeline.h"
 #include "engine/gpu/image.h"
 #include "engine/light/vpl.h"
+#include "engine/render/scene_geometry.h"
 #include "engine/render/shadow_clusters.h"
 
 namespace mvpl::gpu {
@@ -85,6 +92,17 @@ private:
     gpu::Image m_ortho_depth;
     std::unique_ptr<gpu::GraphicsPipeline> m_pipeline;
     std::unique_ptr<gpu::GraphicsPipeline> m_ortho_pipeline;
+    // Masked scenes only: the draws of masked materials, their pipelines and textures.
+    void draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline& pipeline,
+                     VkDescriptorSet set, std::span<const std::byte> push, size_t material_offset,
+                     bool floats);
+    std::vector<GeometryDraw> m_masked_draws;
+    std::unique_ptr<gpu::GraphicsPipeline> m_masked_pipeline;
+    std::unique_ptr<gpu::GraphicsPipeline> m_masked_ortho_pipeline;
+    std::vector<gpu::Image> m_masked_textures;
+    VkDescriptorSet m_masked_set = nullptr;  // this recording's, per pipeline
+    VkDescriptorSet m_masked_ortho_set = nullptr;
+    uint32_t m_vpl_seed = 0;  // VPLs recorded so far: the seed of glTF BLEND's hash
     float m_near = 0.0f;
 };
 

@@ -54,6 +54,7 @@ private:
                        const std::string& slot) const;
 
     void read_extensions(Material& out) const;
+    void read_alpha(Material& out) const;
 
     const Document& m_doc;
     TextureCache& m_textures;
@@ -119,9 +120,13 @@ Material MaterialReader::read() const {
     const tinygltf::PbrMetallicRoughness& pbr = m_material.pbrMetallicRoughness;
     Material out;
     out.name = m_material.name.empty() ? m_name : m_material.name;
-    // Alpha (baseColorFactor[3]) is not used by the renderer yet.
     const std::string pbr_name = "pbrMetallicRoughness.";
     out.base_color = colour(pbr.baseColorFactor, m_name + "." + pbr_name + "baseColorFactor", true);
+    if (pbr.baseColorFactor.size() >= 4) {
+        out.base_alpha = fraction(pbr.baseColorFactor[3],
+                                  indexed(m_name + "." + pbr_name + "baseColorFactor", 3));
+    }
+    read_alpha(out);
     out.base_color_texture =
         texture(pbr.baseColorTexture, ColorSpace::Srgb, pbr_name + "baseColorTexture");
     out.metallic = fraction(pbr.metallicFactor, m_name + "." + pbr_name + "metallicFactor");
@@ -147,6 +152,19 @@ Material MaterialReader::read() const {
     check_non_negative(m_doc, double(max_component(out.emissive)) * out.emissive_strength,
                        kMaxFactor, m_name + " emissiveFactor x emissiveStrength");
     return out;
+}
+
+void MaterialReader::read_alpha(Material& out) const {
+    const std::string& mode = m_material.alphaMode;
+    if (mode == "MASK") {
+        out.alpha_mode = AlphaMode::Mask;
+    } else if (mode == "BLEND") {
+        out.alpha_mode = AlphaMode::Blend;
+    } else if (mode != "OPAQUE") {
+        m_doc.fail(m_name + ".alphaMode is '" + mode + "', not OPAQUE, MASK or BLEND");
+    }
+    out.alpha_cutoff = float(
+        check_non_negative(m_doc, m_material.alphaCutoff, kMaxFactor, m_name + ".alphaCutoff"));
 }
 
 void MaterialReader::read_extensions(Material& out) const {

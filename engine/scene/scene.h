@@ -14,10 +14,15 @@
 
 namespace mvpl::scene {
 
+// glTF alphaMode: Mask cuts geometry whose base alpha is below alpha_cutoff for every ray and
+// pass; Blend is stochastic (hashed) transparency where the renderers support it.
+enum class AlphaMode { Opaque, Mask, Blend };
+
 struct Material {
     std::string name;
     // glTF pbrMetallicRoughness; the texture channels are multiplied into the factors.
     Rgb base_color{1.0f};
+    float base_alpha = 1.0f;  // baseColorFactor[3]; times the texture's A and COLOR_0's A
     TextureRef base_color_texture;
     float metallic = 1.0f;
     float roughness = 1.0f;
@@ -40,6 +45,8 @@ struct Material {
     float transmission = 0.0f;
     TextureRef transmission_texture;
     bool double_sided = false;
+    AlphaMode alpha_mode = AlphaMode::Opaque;
+    float alpha_cutoff = 0.5f;  // Mask only
 
     Rgb emission() const { return emissive * emissive_strength; }
     bool is_emissive() const { return max_component(emission()) > 0.0f; }

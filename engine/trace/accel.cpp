@@ -3,16 +3,57 @@
 #include <embree3/rtcore.h>
 
 #include <atomic>
+#include <bit>
 #include <stdexcept>
 #include <string>
+#include <vector>
+
+#include "engine/core/rng.h"
+#include "engine/trace/interaction.h"
 
 namespace mvpl::trace {
+
+namespace {
+
+// What a mesh's Embree filters need: every ray skips hits on texels that an alpha-tested
+// material cuts (glTF MASK, or BLEND by a hash of the ray), camera rays also the back faces of
+// one-sided materials.
+struct MeshFilter {
+    const scene::Mesh* mesh = nullptr;
+    const material::SceneMaterials* materials = nullptr;
+    int material = 0;
+    bool alpha_tested = false;  // MASK or BLEND
+    bool one_sided = false;
+};
+
+// A uniform number in [0, 1) from a ray and the triangle it hits: hashed transparency (glTF
+// BLEND) that is the same for the same ray, so renders are deterministic per seed.
+float ray_hash(const RTCFilterFunctionNArguments* args, unsigned i, int triangle) {
+    const float values[6] = {
+        RTCRayN_org_x(args->ray, args->N, i), RTCRayN_org_y(args->ray, args->N, i),
+        RTCRayN_org_z(args->ray, args->N, i), RTCRayN_dir_x(args->ray, args->N, i),
+        RTCRayN_dir_y(args->ray, args->N, i), RTCRayN_dir_z(args->ray, args->N, i)};
+    uint64_t h = mix_bits(uint64_t(uint32_t(triangle)) + 0x9e3779b97f4a7c15ULL);
+    for (const float v : values)
+        h = mix_bits(h ^ std::bit_cast<uint32_t>(v));
+    return float(h >> 40) * 0x1p-24f;
+}
+
+// The intersect context of camera rays: Embree hands back the pointer it was given to its
+// context filter (set for camera rays only, so that other rays pay nothing for it).
+struct CameraContext {
+    RTCIntersectContext context;
+    const std::vector<MeshFilter>* filters = nullptr;
+};
+
+}  // namespace
 
 struct Accel::Impl {
     RTCDevice device = nullptr;
     RTCScene scene = nullptr;
     mutable std::atomic<uint64_t> rays{0};
     std::string error;
+    std::vector<MeshFilter> filters;  // per mesh; stable addresses (reserved up front)
 
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
@@ -29,14 +70,50 @@ static void embree_error(void* user, RTCError code, const char* message) {
                       (message ? message : ""));
 }
 
+// Camera rays (the context filter): rejects (valid = 0) back-face hits of one-sided materials;
+// Embree then goes on traversing.
+static void filter_back_faces(const RTCFilterFunctionNArguments* args) {
+    const auto* context = reinterpret_cast<const CameraContext*>(args->context);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const MeshFilter* f = &(*context->filters)[RTCHitN_geomID(args->hit, args->N, i)];
+        const int triangle = int(RTCHitN_primID(args->hit, args->N, i));
+        if (f->one_sided) {
+            const uint32_t* idx = &f->mesh->indices[3 * size_t(triangle)];
+            const Vec3& p0 = f->mesh->positions[idx[0]];
+            const Vec3 winding =
+                glm::cross(f->mesh->positions[idx[1]] - p0, f->mesh->positions[idx[2]] - p0);
+            const Vec3 dir(RTCRayN_dir_x(args->ray, args->N, i),
+                           RTCRayN_dir_y(args->ray, args->N, i),
+                           RTCRayN_dir_z(args->ray, args->N, i));
+            // As make_interaction's front_face: the ray arrives on the side ng points to.
+            if (!(glm::dot(dir, winding) < 0.0f)) args->valid[i] = 0;
+        }
+    }
+}
+
+// Every ray (the alpha-tested meshes' geometry filter): rejects hits on cut texels.
+static void filter_alpha(const RTCFilterFunctionNArguments* args) {
+    const auto* f = static_cast<const MeshFilter*>(args->geometryUserPtr);
+    for (unsigned i = 0; i < args->N; ++i) {
+        if (args->valid[i] == 0) continue;
+        const int triangle = int(RTCHitN_primID(args->hit, args->N, i));
+        const Vec2 b(RTCHitN_u(args->hit, args->N, i), RTCHitN_v(args->hit, args->N, i));
+        if (f->materials->cut(f->material, surface_attributes(*f->mesh, triangle, b),
+                              ray_hash(args, i, triangle)))
+            args->valid[i] = 0;
+    }
+}
+
 Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_materials(scene) {
     m_impl->device = rtcNewDevice(nullptr);
     if (!m_impl->device) throw std::runtime_error("cannot create an Embree device");
     rtcSetDeviceErrorFunction(m_impl->device, embree_error, &m_impl->error);
     m_impl->scene = rtcNewScene(m_impl->device);
     // Robust mode: watertight traversal, so that rays through shared edges do not leak light.
-    rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
+    m_impl->filters.reserve(scene.meshes.size());
     for (size_t id = 0; id < scene.meshes.size(); ++id) {
         const scene::Mesh& mesh = scene.meshes[id];
         RTCGeometry geom = rtcNewGeometry(m_impl->device, RTC_GEOMETRY_TYPE_TRIANGLE);
@@ -52,6 +129,17 @@ Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_ma
             rtcSetNewGeometryBuffer(geom, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
                                     sizeof(uint32_t) * 3, mesh.triangle_count()));
         std::copy(mesh.indices.begin(), mesh.indices.begin() + 3 * mesh.triangle_count(), indices);
+        // Only meshes that need a filter get one: the others trace at full speed.
+        MeshFilter& filter = m_impl->filters.emplace_back();
+        if (mesh.material >= 0 && size_t(mesh.material) < m_materials.graphs().size()) {
+            filter = {&mesh, &m_materials, mesh.material, m_materials.alpha_tested(mesh.material),
+                      !m_materials.double_sided(mesh.material)};
+        }
+        if (filter.alpha_tested) {
+            rtcSetGeometryUserData(geom, &filter);
+            rtcSetGeometryIntersectFilterFunction(geom, filter_alpha);
+            rtcSetGeometryOccludedFilterFunction(geom, filter_alpha);
+        }
         rtcCommitGeometry(geom);
         rtcAttachGeometryByID(m_impl->scene, geom, static_cast<unsigned>(id));
         rtcReleaseGeometry(geom);
@@ -78,14 +166,26 @@ static RTCRay to_embree(const Ray& ray) {
 }
 
 std::optional<Hit> Accel::intersect(const Ray& ray) const {
+    return intersect(ray, false);
+}
+
+std::optional<Hit> Accel::intersect_camera(const Ray& ray) const {
+    return intersect(ray, true);
+}
+
+std::optional<Hit> Accel::intersect(const Ray& ray, bool camera) const {
     m_impl->rays.fetch_add(1, std::memory_order_relaxed);
-    RTCIntersectContext context;
-    rtcInitIntersectContext(&context);
+    CameraContext context;
+    rtcInitIntersectContext(&context.context);
+    if (camera) {
+        context.context.filter = filter_back_faces;
+        context.filters = &m_impl->filters;
+    }
     RTCRayHit rayhit{};
     rayhit.ray = to_embree(ray);
     rayhit.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rayhit.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(m_impl->scene, &context, &rayhit);
+    rtcIntersect1(m_impl->scene, &context.context, &rayhit);
     if (rayhit.hit.geomID == RTC_INVALID_GEOMETRY_ID) return std::nullopt;
     Hit hit;
     hit.t = rayhit.ray.tfar;

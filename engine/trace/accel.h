@@ -27,8 +27,13 @@ public:
     Accel(const Accel&) = delete;
     Accel& operator=(const Accel&) = delete;
 
+    // Every ray passes through the surfaces that a glTF MASK material cuts (alpha below its
+    // cutoff), as if they were not there.
     std::optional<Hit> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const;
+    // A camera ray: as intersect, and it passes through the back faces of one-sided materials
+    // too (glTF doubleSided: false), which light paths and shadow rays still hit.
+    std::optional<Hit> intersect_camera(const Ray& ray) const;
 
     // Rays traced so far (closest-hit and shadow), for Mrays/s reports.
     uint64_t ray_count() const;
@@ -38,6 +43,8 @@ public:
 
 private:
     struct Impl;
+    std::optional<Hit> intersect(const Ray& ray, bool camera) const;
+
     std::unique_ptr<Impl> m_impl;
     material::SceneMaterials m_materials;
 };

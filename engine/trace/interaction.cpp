@@ -2,6 +2,19 @@
 
 namespace mvpl::trace {
 
+material::SurfacePoint surface_attributes(const scene::Mesh& mesh, int triangle, const Vec2& b) {
+    const uint32_t* idx = &mesh.indices[3 * size_t(triangle)];
+    const float b0 = 1.0f - b.x - b.y;
+    material::SurfacePoint p;
+    if (!mesh.uv0.empty())
+        p.uv0 = b0 * mesh.uv0[idx[0]] + b.x * mesh.uv0[idx[1]] + b.y * mesh.uv0[idx[2]];
+    if (!mesh.uv1.empty())
+        p.uv1 = b0 * mesh.uv1[idx[0]] + b.x * mesh.uv1[idx[1]] + b.y * mesh.uv1[idx[2]];
+    if (!mesh.colors.empty())
+        p.color = b0 * mesh.colors[idx[0]] + b.x * mesh.colors[idx[1]] + b.y * mesh.colors[idx[2]];
+    return p;
+}
+
 SurfaceInteraction make_interaction(const scene::Scene& scene, const Hit& hit, const Ray& ray) {
     const scene::Mesh& mesh = scene.meshes[hit.mesh];
     const uint32_t i0 = mesh.indices[3 * hit.triangle + 0];
@@ -36,8 +49,11 @@ SurfaceInteraction make_interaction(const scene::Scene& scene, const Hit& hit, c
     if (glm::dot(ns, si.ng) < 0.0f) ns = -ns;
     si.ns = ns;
 
-    if (!mesh.uv0.empty()) si.uv0 = b0 * mesh.uv0[i0] + b1 * mesh.uv0[i1] + b2 * mesh.uv0[i2];
-    if (!mesh.uv1.empty()) si.uv1 = b0 * mesh.uv1[i0] + b1 * mesh.uv1[i1] + b2 * mesh.uv1[i2];
+    const material::SurfacePoint attributes =
+        surface_attributes(mesh, hit.triangle, hit.barycentric);
+    si.uv0 = attributes.uv0;
+    si.uv1 = attributes.uv1;
+    si.color = attributes.color;
 
     // Tangent: the file's TANGENT if present, else ∂p/∂u of the UV parametrisation (pbrt-v3
     // §3.6.2), else any vector perpendicular to the normal.

@@ -11,6 +11,7 @@ ShadingPoint make_shading_point(const material::SceneMaterials& materials,
     material::SurfacePoint point;
     point.uv0 = si.uv0;
     point.uv1 = si.uv1;
+    point.color = si.color;
     Vec3 n = ns;
     if (materials.has_normal_node(si.material)) {
         const Vec3 bitangent = si.tangent_sign * glm::cross(ns, si.dpdu);

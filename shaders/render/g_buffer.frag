@@ -11,6 +11,7 @@ layout(location = 1) in vec3 in_normal;
 layout(location = 2) flat in vec3 in_face_normal;
 layout(location = 3) in vec4 in_uv;
 layout(location = 4) in vec4 in_tangent;
+layout(location = 5) in vec4 in_color;
 
 layout(location = 0) out vec4 out_position;         // xyz, w = 1 + material index where covered
 layout(location = 1) out vec4 out_shading_normal;   // xyz, w = flags (1: front, 2: 2-sided, 4·closure type)
@@ -40,6 +41,10 @@ void main() {
     // Counter-clockwise front faces through a y-flipped projection: the winding normal points
     // towards the camera (tests/render check this against a CPU ray cast).
     const bool front = gl_FrontFacing;
+//@if one_sided
+    // glTF doubleSided: false — the camera does not see back faces (trace::Accel::intersect_camera).
+    if (!front && (pc.material_flags & 1u) == 0u) discard;
+//@endif
 
     // As trace::make_interaction: the tangent Gram-Schmidt-ed against ns, else Frame(ns).s; and
     // as reference::make_shading_point the bitangent sign · ns × t.
@@ -53,10 +58,14 @@ void main() {
     SurfacePoint s;
     s.uv0 = in_uv.xy;
     s.uv1 = in_uv.zw;
-    s.color = vec4(1.0);
+    s.color = in_color;
     s.n = ns;
     s.t = tangent;
     s.b = sign * cross(ns, tangent);
+//@if alpha_tested
+    // glTF alphaMode MASK and BLEND (material_codegen.h, alpha_cut): what lies behind shows.
+    if (alpha_cut(pc.material, s, in_position, pc.seed)) discard;
+//@endif
     Closure c;
     vec3 emitted;
     vec3 n;
@@ -72,4 +81,9 @@ void main() {
     out_emission = vec4(front ? emitted : vec3(0.0), c.ior);
     out_uv = in_uv;
     out_tangent = vec4(tangent, sign);
+//@if color_handoff
+    // The material pass recomputes this layer (every covered pixel's): until then it carries
+    // COLOR_0 to that pass, which the fragment stage has and it has not.
+    out_specular = in_color;
+//@endif
 }

@@ -9,12 +9,14 @@ layout(location = 1) in vec3 in_normal;
 layout(location = 2) in vec3 in_face_normal;
 layout(location = 3) in vec4 in_uv;       // uv0, uv1
 layout(location = 4) in vec4 in_tangent;  // ∂p/∂u (unnormalised), w = sign
+layout(location = 5) in vec4 in_color;    // COLOR_0, white where the mesh has none
 
 layout(location = 0) out vec3 out_position;
 layout(location = 1) out vec3 out_normal;
 layout(location = 2) flat out vec3 out_face_normal;
 layout(location = 3) out vec4 out_uv;
 layout(location = 4) out vec4 out_tangent;
+layout(location = 5) out vec4 out_color;
 
 void main() {
     out_position = in_position;
@@ -22,5 +24,6 @@ void main() {
     out_face_normal = in_face_normal;
     out_uv = in_uv;
     out_tangent = in_tangent;
+    out_color = in_color;
     gl_Position = pc.view_proj * vec4(in_position, 1.0);
 }

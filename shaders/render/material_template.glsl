@@ -29,6 +29,9 @@ void main() {
     s.uv0 = uv.xy;
     s.uv1 = uv.zw;
     s.color = vec4(1.0);
+//@if color_handoff
+    s.color = imageLoad(g_buffer, ivec3(px, 4));  // COLOR_0, until overwritten (g_buffer.frag)
+//@endif
     s.n = side * ns_flags.xyz;
     s.t = tangent.xyz;
     s.b = tangent.w * cross(s.n, s.t);

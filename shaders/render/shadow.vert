@@ -9,6 +9,17 @@ layout(push_constant) uniform ShadowPushBlock { ShadowPush pc; };
 
 layout(location = 0) in vec3 in_position;
 layout(location = 0) out vec3 out_offset;
+#ifdef MVPL_MASKED
+// The alpha-tested pipeline of scenes with masked materials (shadow_masked.frag): face.y is the
+// material of the draw.
+layout(location = 1) in vec4 in_uv;
+layout(location = 2) in vec4 in_color;
+layout(location = 1) out vec4 out_uv;
+layout(location = 2) out vec4 out_color;
+layout(location = 3) flat out uint out_material;
+layout(location = 4) flat out uint out_seed;
+layout(location = 5) out vec3 out_position;
+#endif
 
 void main() {
     const vec3 r = in_position - pc.vpl_near.xyz;
@@ -22,5 +33,12 @@ void main() {
         default: m = vec3(-r.x, -r.y, -r.z); break;
     }
     out_offset = r;
+#ifdef MVPL_MASKED
+    out_uv = in_uv;
+    out_color = in_color;
+    out_material = pc.face.y;
+    out_seed = pc.face.z;
+    out_position = in_position;
+#endif
     gl_Position = vec4(m.x, m.y, pc.vpl_near.w, m.z);
 }

@@ -15,6 +15,7 @@ struct GBufferPush {
     mat4 view_proj;  // reversed infinite perspective, Vulkan clip space (image row 0 at the top)
     uint material_flags;  // bit 0: double-sided
     uint material;        // index of the scene material: resolve_material's argument
+    uint seed;            // of glTF BLEND's hashed transparency: one per sub-pixel position
 };
 
 // The material pass of the G-buffer (g_buffer_pass.cpp; shaders/render/material_template.glsl).
@@ -33,7 +34,8 @@ struct EmissionPush {
 // A shadow cube face (engine/render/shadow_pass.cpp; shaders/render/shadow.vert).
 struct ShadowPush {
     vec4 vpl_near;  // xyz: the VPL's position; w: the near distance (geometry closer is ignored)
-    uvec4 face;     // x: cube face, +X −X +Y −Y +Z −Z
+    uvec4 face;     // x: cube face, +X −X +Y −Y +Z −Z; y: the material, z: the seed of glTF
+                    // BLEND's hash (alpha-tested pipeline, shadow_masked.frag)
 };
 
 // The orthographic map of a directional VPL (shadow_pass.cpp; shaders/render/shadow_ortho.vert).
@@ -41,7 +43,8 @@ struct OrthoPush {
     vec4 u_origin;    // xyz: map x axis, w: its origin
     vec4 v_origin;    // map y axis and origin
     vec4 dir_origin;  // direction of travel and the near plane's w
-    vec4 extents;     // x: window side, y: depth range
+    vec4 extents;     // x: window side, y: depth range; z: the material, w: the seed of glTF
+                      // BLEND's hash, as floats (alpha-tested pipeline, shadow_masked.frag)
 };
 
 // A batch of the shading pass (engine/render/shading_pass.cpp;
@@ -59,7 +62,7 @@ const uint kShadows = 2u;      // ShadingPush::flags: test visibility in the sha
 
 #ifdef __cplusplus
 MVPL_STD430_MEMBER(GBufferPush, view_proj);
-static_assert(sizeof(GBufferPush) == 72);
+static_assert(sizeof(GBufferPush) == 76);
 MVPL_STD430_MEMBER(MaterialPush, size);
 MVPL_STD430_MEMBER(EmissionPush, size);
 static_assert(sizeof(EmissionPush) == 16);

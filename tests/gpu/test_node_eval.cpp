@@ -48,8 +48,8 @@ constexpr int kTexHeight = 3;
 std::string test_shader() {
     GlslModule m;
     for (const char* f :
-         {"Closure", "SurfacePoint", "image_texture", "vertex_color", "mix_node", "emission",
-          "normal_map", "bump_map", "lambertian", "ggx_conductor", "dielectric_diffuse",
+         {"Closure", "SurfacePoint", "image_texture", "vertex_color", "multiply", "mix_node",
+          "emission", "normal_map", "bump_map", "lambertian", "ggx_conductor", "dielectric_diffuse",
           "metal_rough", "rough_dielectric", "lambertian_eval", "ggx_conductor_eval",
           "dielectric_diffuse_eval", "metal_rough_eval"}) {
         m.require(f);
@@ -105,6 +105,7 @@ void main() {
     out3(o, 36, ggx_conductor_eval(c, s.n, wo, wi));
     out3(o, 39, dielectric_diffuse_eval(c, s.n, wo, wi));
     out3(o, 42, metal_rough_eval(c, s.n, wo, wi));
+    out3(o, 45, multiply(in4(b, 10), in4(b, 14)).yzw);  // x is the same code
 }
 )";
 }
@@ -284,6 +285,9 @@ std::vector<float> cpu_eval(const Record& r, const scene::Texture& base_texture)
                                 alpha, wo, wi),
         3);
     out(42, Bsdf(c).eval(wo, wi), 3);
+    const Node product = node_of("multiply");
+    const Vec4 m = product.kind->value(GivenInputs(product, plain, {v4(10), v4(14)}));
+    out(45, Vec3(m.y, m.z, m.w), 3);
     return y;
 }
 
@@ -298,7 +302,8 @@ const char* output_name(int i) {
     if (i < 36) return "lambertian_eval";
     if (i < 39) return "ggx_conductor_eval";
     if (i < 42) return "dielectric_diffuse_eval";
-    return "metal_rough_eval";
+    if (i < 45) return "metal_rough_eval";
+    return "multiply";
 }
 
 // Nearest filtering or a wrap discontinuity within 1e-4 texels of the sample point (see top).

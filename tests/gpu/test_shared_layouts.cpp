@@ -75,6 +75,7 @@ const Member kMembers[] = {
     MVPL_MEMBER(GBufferPush, view_proj),
     MVPL_MEMBER(GBufferPush, material_flags),
     MVPL_MEMBER(GBufferPush, material),
+    MVPL_MEMBER(GBufferPush, seed),
     MVPL_MEMBER(MaterialPush, size),
     MVPL_MEMBER(EmissionPush, size),
     MVPL_MEMBER(EmissionPush, layer),

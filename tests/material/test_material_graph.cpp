@@ -146,6 +146,35 @@ TEST(MaterialGraph, PicksTheNarrowestClosureNode) {
     EXPECT_NEAR(evaluate_closure(g, {}, SurfacePoint{}).base_color.r, 0.6f, 1e-6f);
 }
 
+// COLOR_0 (issue 12): the base colour, alpha included, times the vertex colour in graphs of
+// materials that a mesh with COLOR_0 uses; other graphs have no vertex-colour node.
+TEST(MaterialGraph, VertexColourMultipliesTheBaseColourAndAlpha) {
+    scene::Material m;
+    m.metallic = 0.0f;
+    m.base_color = Rgb(0.5f, 0.8f, 1.0f);
+    m.base_alpha = 0.6f;
+    m.alpha_mode = scene::AlphaMode::Mask;
+    SurfacePoint p;
+    p.color = Vec4(1.0f, 0.5f, 0.0f, 0.5f);
+    const MaterialGraph plain = graph_from_gltf(m);
+    const std::vector<const NodeKind*> plain_kinds = plain.kinds();
+    EXPECT_EQ(std::count(plain_kinds.begin(), plain_kinds.end(), &node_kind("vertex_color")), 0);
+    EXPECT_EQ(evaluate_closure(plain, {}, p).base_color, m.base_color);
+    EXPECT_NEAR(evaluate_input(plain, plain.alpha, {}, p).x, 0.6f, 1e-6f);
+
+    const MaterialGraph coloured = graph_from_gltf(m, {.vertex_colors = true});
+    const std::vector<const NodeKind*> kinds = coloured.kinds();
+    EXPECT_EQ(std::count(kinds.begin(), kinds.end(), &node_kind("vertex_color")), 1);
+    const Rgb base = evaluate_closure(coloured, {}, p).base_color;
+    EXPECT_NEAR(base.r, 0.5f, 1e-6f);
+    EXPECT_NEAR(base.g, 0.4f, 1e-6f);
+    EXPECT_NEAR(base.b, 0.0f, 1e-6f);
+    EXPECT_NEAR(evaluate_input(coloured, coloured.alpha, {}, p).x, 0.3f, 1e-6f);
+    EXPECT_TRUE(coloured.masked());
+    m.alpha_mode = scene::AlphaMode::Opaque;
+    EXPECT_FALSE(graph_from_gltf(m, {.vertex_colors = true}).masked());
+}
+
 TEST(MaterialGraph, BumpMapTiltsAgainstTheHeightGradient) {
     // h = u along a 2-texel ramp: the normal leans towards −tangent.
     scene::Texture ramp;

@@ -84,6 +84,7 @@ const std::map<std::string, std::string> kExpected = {
     {"negative-material-factor.gltf",
      "materials[0].pbrMetallicRoughness.roughnessFactor is -0.5, which is negative"},
     {"ior-below-one.gltf", "below 1"},
+    {"unknown-alpha-mode.gltf", "materials[0].alphaMode is 'CUTOUT', not OPAQUE, MASK or BLEND"},
     {"bad-light-index.gltf", "refers to light 3"},
     {"spot-inner-above-outer.gltf", "invalid cone angles"},
     {"bad-camera-index.gltf", "refers to camera 2"},

@@ -43,7 +43,10 @@ TEST_F(GltfMaterials, PrimitivesGetTheirMaterialsAndTheDefaultIsAppended) {
 TEST_F(GltfMaterials, FactorsAndExtensions) {
     const Material& m = s_scene->materials[0];
     EXPECT_EQ(m.name, "full");
-    EXPECT_EQ(m.base_color, Rgb(0.5f, 0.25f, 1.0f));  // alpha 0.3 ignored
+    EXPECT_EQ(m.base_color, Rgb(0.5f, 0.25f, 1.0f));
+    EXPECT_FLOAT_EQ(m.base_alpha, 0.3f);
+    EXPECT_EQ(m.alpha_mode, AlphaMode::Mask);
+    EXPECT_FLOAT_EQ(m.alpha_cutoff, 0.25f);
     EXPECT_FLOAT_EQ(m.metallic, 0.2f);
     EXPECT_FLOAT_EQ(m.roughness, 0.7f);
     EXPECT_FLOAT_EQ(m.normal_scale, 0.8f);

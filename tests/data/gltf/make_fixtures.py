@@ -204,6 +204,8 @@ def materials():
              "emissiveFactor": [1.0, 0.5, 0.25],
              "emissiveTexture": {"index": 0},
              "doubleSided": True,
+             "alphaMode": "MASK",
+             "alphaCutoff": 0.25,
              "extensions": {
                  "KHR_materials_emissive_strength": {"emissiveStrength": 4.0},
                  "KHR_materials_specular": {
@@ -479,6 +481,7 @@ def bad_corpus():
         ["materials", 0], {"pbrMetallicRoughness": {"roughnessFactor": -0.5}})
     files["ior-below-one.gltf"] = setter(
         ["materials", 0], {"extensions": {"KHR_materials_ior": {"ior": 0.5}}})
+    files["unknown-alpha-mode.gltf"] = setter(["materials", 0], {"alphaMode": "CUTOUT"})
     lit = lambda d, light, node_light=0: (  # noqa: E731
         d.update(extensions={"KHR_lights_punctual": {"lights": [light]}}),
         d["nodes"][0].update(extensions={"KHR_lights_punctual": {"light": node_light}}))
