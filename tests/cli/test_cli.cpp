@@ -174,6 +174,8 @@ TEST(Cli, AnUnlitSceneGetsTheDefaultSky) {
     expect_one_line_error(run_gpu(common + "--env-color 1,2"), "--env-color");
     expect_one_line_error(run_gpu(common + "--env-color 1,x,2"), "--env-color");
     expect_one_line_error(run_gpu(common + "--env-scale -1"), "--env-scale");
+    expect_one_line_error(run_gpu(common + "--env /nonexistent/sky.hdr"),
+                          "/nonexistent/sky.hdr: no such environment map");
     for (const auto& f : {lit, black, tinted})
         std::filesystem::remove(f);
 }
