@@ -146,7 +146,9 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
 //@if directional
 // The same test against a directional VPL's orthographic map (directional_frame.h): w is the
 // receiver's distance along the direction of travel from the map's near plane, and a texel is
-// extent / resolution wide (in place of d · texel_angle).
+// extent / resolution wide (in place of d · texel_angle). The first lookup allows a slope bias;
+// the junction lookup (thin walls) is visibility()'s with parallel rays, its reach grown by that
+// bias, which is what lets a wall's foot pass the first.
 float directional_visibility(uint layer, GpuVpl v, vec3 p, vec3 ng) {
     const vec3 map = vec3(dot(p, v.shading_normal), dot(p, v.wi), dot(p, v.normal)) - v.position;
     const float stored = textureLod(ortho_shadows, vec3(map.xy / v.map_extent, float(layer)), 0.0).r;
@@ -154,7 +156,20 @@ float directional_visibility(uint layer, GpuVpl v, vec3 p, vec3 ng) {
     const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
     const float texel = v.map_extent / float(textureSize(ortho_shadows, 0).x);
     const float bias = kConstantBias * map.z + kSlopeBias * texel * tan_r;
-    return stored >= map.z - bias ? 1.0 : 0.0;
+    bool lit = stored >= map.z - bias;
+//@if thin_walls
+    const float cos_g = dot(ng, v.normal);
+    const vec3 towards_light = cos_g <= 0.0 ? ng : -ng;
+    const float sin_g = sqrt(max(0.0, 1.0 - cos_g * cos_g));
+    const vec3 q = p + towards_light * (kNormalOffset * texel * sin_g);
+    const vec3 moved = vec3(dot(q, v.shading_normal), dot(q, v.wi), dot(q, v.normal)) - v.position;
+    const float in_front =
+        moved.z - textureLod(ortho_shadows, vec3(moved.xy / v.map_extent, float(layer)), 0.0).r;
+    if (in_front > kConstantBias * moved.z &&
+        in_front < (kJunctionReach + kSlopeBias * tan_r) * texel)
+        lit = false;
+//@endif
+    return lit ? 1.0 : 0.0;
 }
 //@endif
 

@@ -11,6 +11,7 @@
 
 #include "engine/core/image.h"
 #include "engine/gpu/context.h"
+#include "engine/render/directional_frame.h"
 #include "engine/render/vpl_renderer.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/render/render_test_util.h"
@@ -30,8 +31,9 @@ constexpr int kWallMesh = 3;
 // single double-sided plane at x = 0 that runs from floor to ceiling and from the back wall to the
 // floor's front edge: junctions without a crack and no free edge whose shadow could fall on the
 // floor, so that every receiver on one side of the wall is dark for a VPL on the other, exactly.
-// The camera stands in front of the wall's end and sees both sides.
-scene::Scene thin_wall_scene() {
+// The camera stands in front of the wall's end and sees both sides. Without `ceiling` its mesh is
+// left empty (for a directional VPL from above) and the wall is taller.
+scene::Scene thin_wall_scene(bool ceiling = true) {
     scene::Scene s;
     s.materials = {test::diffuse_material(Rgb(0.6f, 0.6f, 0.55f)),
                    test::diffuse_material(Rgb(0.3f, 0.5f, 0.7f))};
@@ -39,14 +41,18 @@ scene::Scene thin_wall_scene() {
     s.meshes.push_back(test::make_quad(Vec3(-2, 0, -2), Vec3(0, 0, 4), Vec3(4, 0, 0), 0));
     s.meshes.push_back(test::make_quad(Vec3(-2, 0, -2), Vec3(4, 0, 0), Vec3(0, kHeight, 0), 0));
     s.meshes.push_back(test::make_quad(Vec3(-2, kHeight, -2), Vec3(4, 0, 0), Vec3(0, 0, 4), 0));
-    s.meshes.push_back(test::make_quad(Vec3(0, 0, -2), Vec3(0, kHeight, 0), Vec3(0, 0, 4), 1));
+    if (!ceiling) s.meshes.back() = scene::Mesh{};
+    // Without the ceiling the wall rises to 3 kHeight, so that its top edge shades nothing the
+    // camera sees.
+    const float wall = ceiling ? kHeight : 3.0f * kHeight;
+    s.meshes.push_back(test::make_quad(Vec3(0, 0, -2), Vec3(0, wall, 0), Vec3(0, 0, 4), 1));
     s.camera = test::look_at(Vec3(0.03f, 1.3f, 3.4f), Vec3(-0.05f, 0.45f, -0.9f), 0.75f);
     s.has_camera = true;
     return s;
 }
 
 // A point VPL and a surface VPL on the back wall that lights the floor at grazing angles, both at
-// x < 0, and a point VPL at x > 0.
+// x < 0, a point VPL at x > 0, and a directional VPL from the x < 0 side.
 std::vector<light::Vpl> thin_wall_vpls() {
     light::Vpl point;
     point.type = light::VplType::Point;
@@ -61,7 +67,13 @@ std::vector<light::Vpl> thin_wall_vpls() {
     surface.power = Rgb(2.0f);
     light::Vpl other_side = point;
     other_side.position = Vec3(1.1f, 1.9f, -0.6f);
-    return {point, surface, other_side};
+    // Travelling towards +x, down and back (the ceiling is left out for it: it would shade
+    // everything): the x > 0 side in the wall's shadow.
+    light::Vpl sun;
+    sun.type = light::VplType::Directional;
+    sun.normal = glm::normalize(Vec3(1.0f, -0.7f, -0.4f));
+    sun.power = Rgb(1.5f);
+    return {point, surface, other_side, sun};
 }
 
 RenderOptions thin_wall_options() {
@@ -108,22 +120,38 @@ struct Band {
     bool may_darken = false;
 };
 
-Band junction_band(const Vec3& p, const Vec3& n, const Vec3& vpl, float tau) {
-    const Vec3 to_vpl = vpl - p;
-    const float d = glm::length(to_vpl);
-    const float cos_theta = glm::dot(n, to_vpl) / d;
+// A directional VPL's orthographic map has the same bands with parallel rays, a texel's width
+// (extent / resolution) in place of τ·d.
+struct LightGeometry {
+    Vec3 to_light;    // unit, from the receiver
+    float footprint;  // τ·d, or a texel's width
+};
+
+LightGeometry light_geometry(const light::Vpl& vpl, const Vec3& p, float tau, float texel) {
+    if (vpl.type == light::VplType::Directional) return {-vpl.normal, texel};
+    const Vec3 r = vpl.position - p;
+    return {glm::normalize(r), tau * glm::length(r)};
+}
+
+// A point beyond the light along the receiver's shadow ray (exact visibility's segment end).
+Vec3 light_point(const light::Vpl& vpl, const Vec3& p) {
+    return vpl.type == light::VplType::Directional ? p - 100.0f * vpl.normal : vpl.position;
+}
+
+Band junction_band(const Vec3& p, const Vec3& n, const light::Vpl& vpl, float tau, float texel) {
+    const LightGeometry g = light_geometry(vpl, p, tau, texel);
+    const float cos_theta = glm::dot(n, g.to_light);
     const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
-    const Vec3 lookup = p + n * (tau * d * sin_theta);
-    const Vec3 w = glm::normalize(lookup - vpl);
-    const float d_lookup = glm::length(lookup - vpl);
+    const Vec3 lookup = p + n * (g.footprint * sin_theta);
+    const LightGeometry moved = light_geometry(vpl, lookup, tau, texel);
     Band band;
     for (const auto& [normal, offset] : kPlanes) {
         if (std::abs(glm::dot(normal, n)) > 0.999f) continue;  // the receiver's own plane
-        const float cos_beta = glm::dot(normal, w);
+        const float cos_beta = glm::dot(normal, moved.to_light);
         const float sin_beta = std::sqrt(std::max(0.0f, 1.0f - cos_beta * cos_beta));
-        if (std::abs(glm::dot(normal, lookup) - offset) < 0.75f * tau * d_lookup * sin_beta)
+        if (std::abs(glm::dot(normal, lookup) - offset) < 0.75f * moved.footprint * sin_beta)
             band.may_leak = band.may_darken = true;
-        if (std::abs(glm::dot(normal, p) - offset) < 0.75f * tau * d / cos_theta)
+        if (std::abs(glm::dot(normal, p) - offset) < 0.75f * g.footprint / cos_theta)
             band.may_darken = true;
     }
     return band;
@@ -131,8 +159,8 @@ Band junction_band(const Vec3& p, const Vec3& n, const Vec3& vpl, float tau) {
 
 // Every floor, back-wall and ceiling pixel against exact visibility (a segment test against the
 // wall): a misclassified pixel must lie in the band (junction_band) that allows its error.
-Classified classify(const scene::Scene& scene, const Image& image, const light::Vpl& vpl,
-                    float tau) {
+Classified classify(const scene::Scene& scene, const Image& image, const light::Vpl& vpl, float tau,
+                    float texel) {
     Classified c;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
@@ -143,9 +171,9 @@ Classified classify(const scene::Scene& scene, const Image& image, const light::
                                                            testing::closure_of(scene.materials[0]),
                                                            scene.camera.position(), 0.0f);
             if (max_component(expected) <= 0.0f) continue;
-            const bool in_shadow =
-                testing::segment_hits_mesh(scene.meshes[kWallMesh], hit->p, vpl.position);
-            const Band band = junction_band(hit->p, hit->ng, vpl.position, tau);
+            const bool in_shadow = testing::segment_hits_mesh(scene.meshes[kWallMesh], hit->p,
+                                                              light_point(vpl, hit->p));
+            const Band band = junction_band(hit->p, hit->ng, vpl, tau, texel);
             const bool may_differ = in_shadow ? band.may_leak : band.may_darken;
             c.in_band += may_differ;
             const Rgb got = image.at(x, y);
@@ -174,19 +202,28 @@ class ThinWallScaleTest : public ThinWallTest, public ::testing::WithParamInterf
 
 TEST_P(ThinWallScaleTest, AZeroThicknessWallShadowsUpToItsJunctions) {
     const float scale = GetParam();
-    scene::Scene scene = thin_wall_scene();
-    test::scale_scene(scene, scale);
-    VplRenderer renderer(context(), scene);
     std::vector<light::Vpl> vpls = thin_wall_vpls();
     for (size_t i = 0; i < vpls.size(); ++i) {
         SCOPED_TRACE("VPL " + std::to_string(i));
+        const bool ceiling = vpls[i].type != light::VplType::Directional;
+        scene::Scene scene = thin_wall_scene(ceiling);
+        test::scale_scene(scene, scale);
+        VplRenderer renderer(context(), scene);
         light::Vpl vpl = vpls[i];
         vpl.position *= scale;
-        vpl.power *= scale * scale;
+        // The same irradiance at s times the distance; a directional VPL's does not depend on it.
+        if (vpl.type != light::VplType::Directional) vpl.power *= scale * scale;
         const Image image = renderer.render({{vpl}}, thin_wall_options());
         // Classified in the unit scene: the image must not depend on the scale.
-        const Classified c =
-            classify(thin_wall_scene(), image, vpls[i], 2.0f / float(kShadowResolution));
+        scene::Bounds bounds;
+        for (const scene::Mesh& mesh : thin_wall_scene(ceiling).meshes) {
+            for (const Vec3& p : mesh.positions)
+                bounds.extend(p);
+        }
+        const float texel =
+            directional_frame(vpls[i].normal, bounds).extent / float(kShadowResolution);
+        const Classified c = classify(thin_wall_scene(ceiling), image, vpls[i],
+                                      2.0f / float(kShadowResolution), texel);
         EXPECT_GT(c.shadowed, 200);
         EXPECT_GT(c.junction, 10);
         EXPECT_GT(c.lit, 500);
