@@ -11,6 +11,21 @@
 
 namespace mvpl::gpu {
 
+VkSampler create_nearest_sampler(VkDevice device) {
+    VkSamplerCreateInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
+    info.magFilter = VK_FILTER_NEAREST;
+    info.minFilter = VK_FILTER_NEAREST;
+    info.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
+    info.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
+    info.maxLod = 0.0f;
+    VkSampler sampler = VK_NULL_HANDLE;
+    vk_check(vkCreateSampler(device, &info, nullptr, &sampler), "vkCreateSampler");
+    return sampler;
+}
+
 VkDescriptorType to_vk_descriptor_type(BindingType type) {
     switch (type) {
         case BindingType::uniform_buffer:
@@ -43,16 +58,7 @@ ComputePipeline::ComputePipeline(Context& context, std::span<const uint32_t> spi
                                        BindingType::sampled_image) != m_layout.bindings.end();
         if (samples) {
             // Immutable: baked into the set layout, so dispatches bind only the image.
-            VkSamplerCreateInfo sampler{};
-            sampler.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-            sampler.magFilter = VK_FILTER_NEAREST;
-            sampler.minFilter = VK_FILTER_NEAREST;
-            sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-            sampler.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-            sampler.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-            sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-            sampler.maxLod = 0.0f;
-            vk_check(vkCreateSampler(device, &sampler, nullptr, &m_sampler), "vkCreateSampler");
+            m_sampler = create_nearest_sampler(device);
         }
         std::vector<VkDescriptorSetLayoutBinding> bindings;
         for (uint32_t i = 0; i < m_layout.bindings.size(); ++i) {

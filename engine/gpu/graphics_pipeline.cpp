@@ -59,16 +59,7 @@ GraphicsPipeline::GraphicsPipeline(Context& context, std::span<const uint32_t> v
     try {
         if (!m_layout.bindings.empty()) {
             // Immutable: baked into the set layout, so draws bind only the images.
-            VkSamplerCreateInfo sampler{};
-            sampler.sType = VK_STRUCTURE_TYPE_SAMPLER_CREATE_INFO;
-            sampler.magFilter = VK_FILTER_NEAREST;
-            sampler.minFilter = VK_FILTER_NEAREST;
-            sampler.mipmapMode = VK_SAMPLER_MIPMAP_MODE_NEAREST;
-            sampler.addressModeU = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-            sampler.addressModeV = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-            sampler.addressModeW = VK_SAMPLER_ADDRESS_MODE_CLAMP_TO_EDGE;
-            sampler.maxLod = 0.0f;
-            vk_check(vkCreateSampler(device, &sampler, nullptr, &m_sampler), "vkCreateSampler");
+            m_sampler = create_nearest_sampler(device);
             std::vector<VkDescriptorSetLayoutBinding> bindings;
             for (uint32_t i = 0; i < m_layout.bindings.size(); ++i) {
                 if (m_layout.bindings[i] != BindingType::sampled_image)

@@ -13,39 +13,13 @@
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
 #include "sampler/monte_carlo_stream.h"
+#include "tests/support/sample_statistics.h"
 
 namespace mvpl {
 namespace {
 
-// Mean luminance of the whole image and of its four quadrants (the box's corners sit in them).
-std::vector<double> regions(const Image& image) {
-    std::vector<double> r(5, 0.0);
-    const int w = image.width(), h = image.height();
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const double l = luminance(image.at(x, y));
-            r[0] += l / double(w * h);
-            r[1 + (y >= h / 2 ? 2 : 0) + (x >= w / 2 ? 1 : 0)] += 4.0 * l / double(w * h);
-        }
-    }
-    return r;
-}
-
-struct Spread {
-    double mean = 0.0;
-    double standard_error = 0.0;
-};
-
-Spread spread(const std::vector<double>& v) {
-    Spread s;
-    for (double x : v)
-        s.mean += x / double(v.size());
-    double var = 0.0;
-    for (double x : v)
-        var += (x - s.mean) * (x - s.mean) / double(v.size() - 1);
-    s.standard_error = std::sqrt(var / double(v.size()));
-    return s;
-}
+using test::luminance_regions;
+using test::mean_and_error;
 
 TEST(ClampCompensation, ClampedLightPlusCompensationIsUnbiased) {
     const scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
@@ -76,9 +50,10 @@ TEST(ClampCompensation, ClampedLightPlusCompensationIsUnbiased) {
         const light::VplSet vpls{std::move(v), stream.scale()};
         g.clamp = 0.0f;
         const std::vector<double> unclamped =
-            regions(reference::gather_vpls(scene, accel, vpls, g));
+            luminance_regions(reference::gather_vpls(scene, accel, vpls, g));
         g.clamp = kClamp;
-        const std::vector<double> clamped = regions(reference::gather_vpls(scene, accel, vpls, g));
+        const std::vector<double> clamped =
+            luminance_regions(reference::gather_vpls(scene, accel, vpls, g));
         reference::CompensationOptions c;
         c.width = c.height = kRes;
         c.clamp = kClamp;
@@ -88,15 +63,15 @@ TEST(ClampCompensation, ClampedLightPlusCompensationIsUnbiased) {
         for (int p = 0; p < kPasses; ++p)
             compensation.add_pass();
         ASSERT_EQ(compensation.passes(), uint32_t(kPasses));
-        const std::vector<double> recovered = regions(compensation.image());
+        const std::vector<double> recovered = luminance_regions(compensation.image());
         for (size_t k = 0; k < 5; ++k) {
             removed[k].push_back(unclamped[k] - clamped[k]);
             left[k].push_back(clamped[k] + recovered[k] - unclamped[k]);
         }
     }
     for (size_t k = 0; k < 5; ++k) {
-        const Spread bias = spread(removed[k]);
-        const Spread rest = spread(left[k]);
+        const test::MeanAndError bias = mean_and_error(removed[k]);
+        const test::MeanAndError rest = mean_and_error(left[k]);
         // The clamp is visibly biased (so that a compensation of zero fails below) …
         EXPECT_GT(bias.mean, 4.0 * bias.standard_error) << "region " << k;
         // … and the compensated estimate is not: within 3.5 standard errors (a false alarm about

@@ -11,25 +11,14 @@
 #include "engine/trace/accel.h"
 #include "sampler/metropolis_stream.h"
 #include "sampler/monte_carlo_stream.h"
+#include "tests/support/sample_statistics.h"
 
 namespace mvpl {
 namespace {
 
-// Mean luminance of the whole image and of its four quadrants: five numbers per estimate. The
-// quadrants check that the VPLs the finite point set misses are still weighted right (the
-// defensive term), not just the total.
-std::vector<double> regions(const Image& image) {
-    std::vector<double> r(5, 0.0);
-    const int w = image.width(), h = image.height();
-    for (int y = 0; y < h; ++y) {
-        for (int x = 0; x < w; ++x) {
-            const double l = luminance(image.at(x, y));
-            r[0] += l / double(w * h);
-            r[1 + (y >= h / 2 ? 2 : 0) + (x >= w / 2 ? 1 : 0)] += 4.0 * l / double(w * h);
-        }
-    }
-    return r;
-}
+// The whole image and its four quadrants: the quadrants check that the VPLs the finite point set
+// misses are still weighted right (the defensive term), not just the total.
+using test::luminance_regions;
 
 TEST(MetropolisUnbiased, CornellBoxMatchesMonteCarlo) {
     const scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
@@ -44,7 +33,8 @@ TEST(MetropolisUnbiased, CornellBoxMatchesMonteCarlo) {
     auto estimate = [&](sampler::VplStream& s) {
         std::vector<light::Vpl> v;
         s.next(kWork, v);
-        return regions(reference::gather_vpls(scene, accel, {std::move(v), s.scale()}, g));
+        return luminance_regions(
+            reference::gather_vpls(scene, accel, {std::move(v), s.scale()}, g));
     };
     std::vector<std::vector<double>> mc, metro;
     for (int r = 0; r < kRuns; ++r) {

@@ -29,6 +29,7 @@
 #include "engine/trace/accel.h"
 #include "sampler/metropolis_stream.h"
 #include "sampler/monte_carlo_stream.h"
+#include "tests/support/sample_statistics.h"
 
 namespace mvpl {
 namespace {
@@ -38,21 +39,15 @@ constexpr int kBatches = 8;        // independent VPL sets per sampler and depth
 constexpr uint64_t kWork = 20000;  // light paths (Monte Carlo) or chain steps (Metropolis)
 constexpr double kZ = 4.5;
 
+// A mean and its standard error (the path tracer's stored, the samplers' from their runs).
 struct Estimate {
     double mean = 0.0;
-    double se = 0.0;  // standard error of the mean
+    double se = 0.0;
 };
 
 Estimate estimate(const std::vector<double>& v) {
-    const double n = double(v.size());
-    Estimate e;
-    for (double x : v)
-        e.mean += x / n;
-    double var = 0.0;
-    for (double x : v)
-        var += (x - e.mean) * (x - e.mean) / (n - 1.0);
-    e.se = std::sqrt(var / n);
-    return e;
+    const test::MeanAndError e = test::mean_and_error(v);
+    return {e.mean, e.standard_error};
 }
 
 // The path tracer's mean luminance (Rec.709) of the film and its standard error, from
