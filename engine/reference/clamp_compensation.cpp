@@ -93,7 +93,8 @@ struct ClampCompensation::Impl {
         if (!hit) return out;
         // The path tracer goes on from the receiver: one segment fewer than the whole path.
         const int depth = options.max_depth < 0 ? -1 : options.max_depth - 1;
-        const Rgb L = path_tracer.radiance(ray, rng, depth, std::max(1, options.rr_depth - 1), false);
+        const Rgb L =
+            path_tracer.radiance(ray, rng, depth, std::max(1, options.rr_depth - 1), false);
         return out + bs->weight * L * missing(hit->t);
     }
 

@@ -37,9 +37,8 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
     // depth = number of segments of the path up to the current vertex (Mitsuba's convention).
     for (int depth = 1;; ++depth) {
         // The camera does not see the back faces of one-sided materials (glTF doubleSided).
-        const std::optional<trace::Hit> hit = depth == 1 && from_camera
-                                                  ? m_accel.intersect_camera(ray)
-                                                  : m_accel.intersect(ray);
+        const std::optional<trace::Hit> hit =
+            depth == 1 && from_camera ? m_accel.intersect_camera(ray) : m_accel.intersect(ray);
         if (!hit) {
             // The environment, weighted against the light sample that could have chosen the
             // same direction.
