@@ -51,11 +51,31 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
         const scene::Mesh& mesh = scene.meshes[m];
         if (!m_materials.is_emissive(mesh.material)) continue;
         m_first_emitter[m] = int(m_emitters.size());
-        // Selection by the flux of the emission factor (a weight, not the radiance: a texture
-        // only modulates it, and sample_li/sample_le read the graph's emission).
+        // Selection by flux, a weight only (sample_li and sample_le read the graph's emission
+        // where they land). Untextured: the emission factor's. Textured: the emission read at
+        // seven points of the triangle, plus 1 % of the factor's so that no triangle whose
+        // texture glows only between those points becomes unreachable. Weighing by the factor
+        // alone picked mostly black texels of DamagedHelmet's emissive map: 134 VPLs from 4096
+        // light paths.
         const double radiance = luminance(scene.materials[mesh.material].emission());
+        const bool textured = scene.materials[mesh.material].emissive_texture.texture >= 0;
         for (size_t t = 0; t < mesh.triangle_count(); ++t) {
             const TrianglePoints tri = triangle_points(mesh, int(t));
+            double weight = radiance;
+            if (textured) {
+                constexpr Vec2 kPoints[7] = {{1.0f / 3.0f, 1.0f / 3.0f},
+                                             {0.05f, 0.05f},
+                                             {0.9f, 0.05f},
+                                             {0.05f, 0.9f},
+                                             {0.5f, 0.0f},
+                                             {0.0f, 0.5f},
+                                             {0.5f, 0.5f}};
+                double sum = 0.0;
+                for (const Vec2& b : kPoints)
+                    sum += luminance(
+                        m_materials.emission(mesh.material, surface_point(mesh, int(t), b)));
+                weight = sum / 7.0 + 0.01 * radiance;
+            }
             Emitter e;
             e.type = EmitterType::Triangle;
             e.mesh = int(m);
@@ -66,7 +86,7 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
             const double area =
                 0.5 * glm::length(glm::cross(DVec3(tri.p1) - p0, DVec3(tri.p2) - p0));
             e.area = float(area);
-            e.power = float(std::numbers::pi * area * radiance);
+            e.power = float(std::numbers::pi * area * weight);
             m_emitters.push_back(e);
         }
     }

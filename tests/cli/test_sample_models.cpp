@@ -1,9 +1,8 @@
 // Every Khronos sample model in ../shared/gltf-samples (beside a checkout in this workplace; the
 // test skips without them) loads and renders with exit 0 and a finite image, on the GPU and with
 // the path tracer, lit as the user gets it: its own lights, or the default sky when it has none
-// (issue 12). Writing an image refuses NaNs and infinities (engine/core/finite_check.h), so exit 0
-// with a file is the finiteness check; the mean ratio against the path tracer is recorded per
-// model (docs/results.md), not bounded: glossy and mirror materials are issue 15's.
+// (issue 12); writing an image refuses NaNs and infinities (engine/core/finite_check.h). And the
+// GPU image agrees with the path tracer's within a bound derived from the two methods' own noise.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -36,6 +35,30 @@ std::vector<fs::path> sample_models() {
     return out;
 }
 
+// relMSE of image a against image b (mvpl compare).
+double rel_mse(const std::string& a, const std::string& b) {
+    const auto r = run_mvpl("compare " + shell_quote(a) + " " + shell_quote(b));
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const size_t at = r.out.find("relMSE ");
+    return at == std::string::npos ? -1.0 : std::stod(r.out.substr(at + 7));
+}
+
+// The bound: two independent unbiased estimates A and B of one image differ by
+// E[relMSE(A, B)] ≈ Var A + Var B (per-pixel relative variances), and two runs of one method by
+// E[relMSE(A1, A2)] ≈ 2 Var A; so R = relMSE(A1, B1) / ½(relMSE(A1, A2) + relMSE(B1, B2)) ≈ 1 +
+// bias² / (Var A + Var B). R ≤ 3 lets the noise of these estimates through and fails a bias as
+// large as the noise twice over. Measured but not bounded (issue 12 stays open for them):
+// glossy and mirror-like models, whose VPL terms are issue 15's (a point VPL cannot light a
+// mirror); DamagedHelmet, lit only by its emissive texture: its emitters were picked by the
+// emissive factor, mostly on black texels (134 VPLs from 4096 paths, R 5.6, mean 0.85); picked
+// by the texture now (863 VPLs), R 2.99 and mean 0.92 at 512 paths, still dark for a reason not
+// found; MultiUVTest, whose texture detail is far below a pixel at 48², where the GPU's fixed
+// sub-pixel positions are a quadrature that the seeds do not vary (R 4.4, mean within 0.1 %).
+constexpr double kNoiseRatioBound = 3.0;
+const std::vector<std::string> kNotBounded = {
+    "DamagedHelmet", "EnvironmentTest",         "MetalRoughSpheresNoTextures",
+    "MultiUVTest",   "NormalTangentMirrorTest", "NormalTangentTest"};
+
 TEST(SampleModels, EveryModelRendersFiniteOnTheGpuAndWithThePathTracer) {
     const std::vector<fs::path> models = sample_models();
     if (models.empty()) GTEST_SKIP() << "../shared/gltf-samples is not beside this checkout";
@@ -44,18 +67,32 @@ TEST(SampleModels, EveryModelRendersFiniteOnTheGpuAndWithThePathTracer) {
     for (const fs::path& model : models) {
         const std::string name = model.stem().string();
         SCOPED_TRACE(name);
-        const std::string vpl = (dir / (name + "_vpl.exr")).string();
-        const std::string pt = (dir / (name + "_pt.exr")).string();
         const std::string common = shell_quote(model.string()) + " --res 48x48 --quiet ";
-        const auto r = run_mvpl_gpu("render " + common + "--vpls 32 -o " + shell_quote(vpl));
-        ASSERT_EQ(r.exit_code, 0) << r.err;
-        const auto p = run_mvpl("reference " + common + "--spp 8 -o " + shell_quote(pt));
-        ASSERT_EQ(p.exit_code, 0) << p.err;
-        const Rgb a = read_exr(vpl).mean(), b = read_exr(pt).mean();
-        EXPECT_TRUE(std::isfinite(luminance(a)) && std::isfinite(luminance(b)));
-        RecordProperty(name, std::to_string(luminance(a) / std::max(luminance(b), 1e-30f)));
-        std::printf("%-32s VPL/PT mean luminance %.3f\n", name.c_str(),
-                    luminance(a) / std::max(luminance(b), 1e-30f));
+        std::string vpl[2], pt[2];
+        for (int seed = 0; seed < 2; ++seed) {
+            const std::string s = std::to_string(seed + 1);
+            vpl[seed] = (dir / (name + "_vpl" + s + ".exr")).string();
+            pt[seed] = (dir / (name + "_pt" + s + ".exr")).string();
+            const auto r = run_mvpl_gpu("render " + common + "--vpls 512 --seed " + s + " -o " +
+                                        shell_quote(vpl[seed]));
+            ASSERT_EQ(r.exit_code, 0) << r.err;
+            const auto p = run_mvpl("reference " + common + "--spp 16 --seed " + s + " -o " +
+                                    shell_quote(pt[seed]));
+            ASSERT_EQ(p.exit_code, 0) << p.err;
+        }
+        const Rgb a = read_exr(vpl[0]).mean(), b = read_exr(pt[0]).mean();
+        ASSERT_TRUE(std::isfinite(luminance(a)) && std::isfinite(luminance(b)));
+        const double across = rel_mse(vpl[0], pt[0]);
+        const double noise = 0.5 * (rel_mse(vpl[0], vpl[1]) + rel_mse(pt[0], pt[1]));
+        const double ratio = across / std::max(noise, 1e-12);
+        const bool bounded =
+            std::find(kNotBounded.begin(), kNotBounded.end(), name) == kNotBounded.end();
+        if (bounded)
+            EXPECT_LE(ratio, kNoiseRatioBound) << "relMSE " << across << ", noise " << noise;
+        RecordProperty(name, std::to_string(ratio));
+        std::printf("%-30s VPL/PT mean %.3f, relMSE %.4g, noise %.4g, ratio %.2f%s\n", name.c_str(),
+                    luminance(a) / std::max(luminance(b), 1e-30f), across, noise, ratio,
+                    bounded ? "" : " (not bounded)");
     }
 }
 
