@@ -87,8 +87,9 @@ TEST(SampleModels, EveryModelRendersFiniteOnTheGpuAndWithThePathTracer) {
         const double ratio = across / std::max(noise, 1e-12);
         const bool bounded =
             std::find(kNotBounded.begin(), kNotBounded.end(), name) == kNotBounded.end();
-        if (bounded)
+        if (bounded) {
             EXPECT_LE(ratio, kNoiseRatioBound) << "relMSE " << across << ", noise " << noise;
+        }
         RecordProperty(name, std::to_string(ratio));
         std::printf("%-30s VPL/PT mean %.3f, relMSE %.4g, noise %.4g, ratio %.2f%s\n", name.c_str(),
                     luminance(a) / std::max(luminance(b), 1e-30f), across, noise, ratio,
