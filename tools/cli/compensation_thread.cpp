@@ -4,8 +4,8 @@
 
 namespace mvpl::cli {
 
-uint32_t paced_compensation_passes(uint64_t vpls) {
-    return uint32_t(std::min<uint64_t>(1 + vpls / 32, uint64_t(1) << 20));
+uint32_t paced_compensation_passes(uint64_t vpls, uint32_t most) {
+    return uint32_t(std::min<uint64_t>(1 + vpls / 32, most));
 }
 
 CompensationThread::CompensationThread(std::unique_ptr<reference::ClampCompensation> compensation)

@@ -17,10 +17,14 @@
 namespace mvpl::cli {
 
 // Compensation passes (samples per pixel) to allow after `vpls` VPLs: one per 32, a default
-// shading batch. On the Cornell box at 256² with 2923 VPLs (1024 paths, seed 1), 4, 16 and 64
-// passes left relMSE 1.15·10⁻³, 6.3·10⁻⁴ and 5.1·10⁻⁴ against Mitsuba (docs/results.md); a pass
-// costs about a quarter of a batch's CPU time there.
-uint32_t paced_compensation_passes(uint64_t vpls);
+// shading batch, at most `most`. On the Cornell box at 256² with 2923 VPLs (1024 paths, seed 1),
+// 4, 16, 64 and 92 passes left relMSE 1.15·10⁻³, 6.3·10⁻⁴, 5.1·10⁻⁴ and 5.0·10⁻⁴ against
+// Mitsuba (docs/results.md); a pass costs about a quarter of a 32-VPL batch's CPU time on
+// lavapipe, but on a GPU that shades VPLs a hundred times faster an unbounded count would make
+// the CPU the bottleneck of a fixed render, which waits for its passes: kFixedRenderPasses.
+uint32_t paced_compensation_passes(uint64_t vpls, uint32_t most = uint32_t(1) << 20);
+// The most passes a fixed-size render waits for (a time budget waits for none).
+inline constexpr uint32_t kFixedRenderPasses = 64;
 
 class CompensationThread {
 public:

@@ -77,7 +77,8 @@ void add_compensation_options(ArgParser& parser, CompensationArgs& args) {
     parser.add_flag("--no-compensate", &args.no_compensate,
                     "leave the clamped light out (biased dark in corners, no CPU rays)");
     parser.add_int("--compensation-spp", &args.spp,
-                   "compensation samples per pixel; 0: one per 32 VPLs shaded");
+                   "compensation samples per pixel; 0: one per 32 VPLs shaded (at most 64 in a "
+                   "render of fixed size)");
     parser.add_check([&parser, &args] {
         if (args.compensate && args.no_compensate)
             throw UsageError(parser.command() +

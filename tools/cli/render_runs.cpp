@@ -109,7 +109,8 @@ public:
         m_result.shading_seconds += shading.seconds();
         m_result.vpls += m_chunk.size();
         if (m_compensation && m_job.compensation_passes == 0)
-            m_compensation->allow(paced_compensation_passes(m_result.vpls));
+            m_compensation->allow(paced_compensation_passes(
+                m_result.vpls, m_open_ended ? uint32_t(1) << 20 : kFixedRenderPasses));
     }
 
     // The image: scale · Σ contributions + the emitted radiance seen directly.

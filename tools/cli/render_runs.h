@@ -23,8 +23,9 @@ struct RenderJob {
     reference::GatherOptions gather;          // the CPU oracle's
     render::VplRenderer* renderer = nullptr;  // null: shade with the CPU oracle
     // Clamping compensation (reference/clamp_compensation.h), on a CPU thread beside the
-    // shading: `compensation_passes` samples per pixel, or 0: one per 32 VPLs shaded (under a
-    // time budget, those done when it ends).
+    // shading: `compensation_passes` samples per pixel, or 0: one per 32 VPLs shaded, at most
+    // kFixedRenderPasses in a render of fixed size (under a time budget, those done when it
+    // ends).
     bool compensate = false;
     uint32_t compensation_passes = 0;
     reference::CompensationOptions compensation;
