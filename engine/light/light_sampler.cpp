@@ -6,6 +6,7 @@
 #include <string>
 
 #include "engine/core/sampling.h"
+#include "engine/trace/interaction.h"
 
 namespace mvpl::light {
 
@@ -26,18 +27,6 @@ struct TrianglePoints {
 TrianglePoints triangle_points(const scene::Mesh& mesh, int triangle) {
     const uint32_t* idx = &mesh.indices[3 * size_t(triangle)];
     return {mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]};
-}
-
-// What an emission graph reads at a point of an emissive triangle.
-material::SurfacePoint surface_point(const scene::Mesh& mesh, int triangle, const Vec2& b) {
-    const uint32_t* idx = &mesh.indices[3 * size_t(triangle)];
-    const float b0 = 1.0f - b.x - b.y;
-    material::SurfacePoint uv;
-    if (!mesh.uv0.empty())
-        uv.uv0 = b0 * mesh.uv0[idx[0]] + b.x * mesh.uv0[idx[1]] + b.y * mesh.uv0[idx[2]];
-    if (!mesh.uv1.empty())
-        uv.uv1 = b0 * mesh.uv1[idx[0]] + b.x * mesh.uv1[idx[1]] + b.y * mesh.uv1[idx[2]];
-    return uv;
 }
 
 }  // namespace
@@ -72,8 +61,8 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
                                              {0.5f, 0.5f}};
                 double sum = 0.0;
                 for (const Vec2& b : kPoints)
-                    sum += luminance(
-                        m_materials.emission(mesh.material, surface_point(mesh, int(t), b)));
+                    sum += luminance(m_materials.emission(
+                        mesh.material, trace::surface_attributes(mesh, int(t), b)));
                 weight = sum / 7.0 + 0.01 * radiance;
             }
             Emitter e;
@@ -164,7 +153,7 @@ Rgb LightSampler::emitted_radiance(int mesh, int triangle, const Vec2& barycentr
     const TrianglePoints tri = triangle_points(m, triangle);
     const Vec3 n = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
     if (glm::dot(n, w) <= 0.0f) return Rgb(0.0f);
-    return m_materials.emission(m.material, surface_point(m, triangle, barycentric));
+    return m_materials.emission(m.material, trace::surface_attributes(m, triangle, barycentric));
 }
 
 Rgb LightSampler::environment_radiance(const Vec3& w) const {
@@ -205,7 +194,7 @@ std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick
         const float cos_light = -glm::dot(s.n, s.wi);
         if (cos_light <= 0.0f) return std::nullopt;  // back face: one-sided emitter
         s.pdf = pick * dist2 / (cos_light * e.area);
-        s.li = m_materials.emission(mesh.material, surface_point(mesh, e.triangle, b));
+        s.li = m_materials.emission(mesh.material, trace::surface_attributes(mesh, e.triangle, b));
         if (!std::isfinite(s.pdf)) return std::nullopt;
         return s;
     }
@@ -281,7 +270,7 @@ std::optional<EmissionSample> LightSampler::sample_le(float u_pick, const Vec2& 
         s.pdf_pos = 1.0f / e.area;
         s.pdf_dir = cosine_hemisphere_pdf(local.z);
         const Rgb radiance =
-            m_materials.emission(mesh.material, surface_point(mesh, e.triangle, b));
+            m_materials.emission(mesh.material, trace::surface_attributes(mesh, e.triangle, b));
         s.le = radiance * (e.area / s.pick);
         // Le · cos θ / (pick · pdf_pos · cos θ/π): the cosine cancels exactly.
         s.throughput = radiance * (kPi * e.area / s.pick);
