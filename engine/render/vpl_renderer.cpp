@@ -90,7 +90,8 @@ std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptio
 
 SubpixelSchedule subpixel_schedule(const RenderOptions& options) {
     return {options.jitter,
-            uint64_t(options.batch) * std::max<uint64_t>(options.batches_per_position, 1)};
+            uint64_t(options.batch) * std::max<uint64_t>(options.batches_per_position, 1),
+            options.subpixel_rotation};
 }
 
 struct VplRenderer::Impl {

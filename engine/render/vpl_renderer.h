@@ -46,6 +46,9 @@ struct RenderOptions {
     // one G-buffer at the pixel centres for the whole image (no anti-aliasing).
     bool jitter = true;
     uint32_t batches_per_position = 1;
+    // The lattice rotation of the sequence (subpixel.h): subpixel_rotation(seed) for renders
+    // whose error is compared across seeds; 0 (the plain sequence) by default.
+    Vec2 subpixel_rotation{0.0f};
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
     bool surface_vpls = true;

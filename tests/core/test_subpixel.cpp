@@ -50,6 +50,34 @@ TEST(Subpixel, TheFractionBehindASlantedEdgeConvergesToItsArea) {
     }
 }
 
+// A seed's rotation moves every position but the centre, keeps the pairs antithetic about the
+// centre (odd prefixes centred) and the positions inside the pixel; two seeds differ.
+TEST(Subpixel, ARotationKeepsTheCentreAndThePairs) {
+    const Vec2 u = subpixel_rotation(7);
+    EXPECT_NE(u, subpixel_rotation(8));
+    EXPECT_EQ(subpixel_position(0, u), Vec2(0.5f));
+    EXPECT_EQ(subpixel_position(5, Vec2(0.0f)), subpixel_position(5));
+    double sx = 0.0, sy = 0.0;
+    int moved = 0;
+    for (uint64_t i = 0; i < 1025; ++i) {
+        const Vec2 p = subpixel_position(i, u);
+        ASSERT_GE(p.x, 0.0f);
+        ASSERT_LT(p.x, 1.0f);
+        ASSERT_GE(p.y, 0.0f);
+        ASSERT_LT(p.y, 1.0f);
+        if (p != subpixel_position(i)) ++moved;
+        sx += p.x;
+        sy += p.y;
+        if (i % 2 == 0) {
+            EXPECT_NEAR(sx / double(i + 1), 0.5, 1e-6) << i;
+            EXPECT_NEAR(sy / double(i + 1), 0.5, 1e-6) << i;
+        }
+    }
+    EXPECT_EQ(moved, 1024);
+    const SubpixelSchedule s{true, 32, u};
+    EXPECT_EQ(s.position(3), subpixel_position(3, u));
+}
+
 TEST(Subpixel, TheScheduleGroupsVplsAndCountsPositions) {
     const SubpixelSchedule s{true, 32};
     EXPECT_EQ(s.position_of(0), 0u);

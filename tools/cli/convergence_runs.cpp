@@ -4,6 +4,7 @@
 
 #include "engine/core/image_metrics.h"
 #include "engine/core/progress.h"
+#include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/render/vpl_renderer.h"
@@ -83,6 +84,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     render::RenderOptions o = options;
     o.width = uint32_t(run.reference->width());
     o.height = uint32_t(run.reference->height());
+    o.subpixel_rotation = subpixel_rotation(run.seed);
     renderer.begin(s.camera(), o);
     std::unique_ptr<CompensationThread> compensation;
     if (run.compensate) {

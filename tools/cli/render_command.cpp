@@ -5,6 +5,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/device_info.h"
@@ -113,6 +114,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     ro.dump_shaders = a.dump_shaders;
     ro.shader_cache = !a.no_shader_cache;
     ro.surface_vpls = max_depth < 0 || max_depth >= 3;  // surface VPLs light depth ≥ 3
+    ro.subpixel_rotation = subpixel_rotation(s.seed);   // the seed varies the positions too
     reference::GatherOptions& g = job.gather;
     g.width = a.width;
     g.height = a.height;

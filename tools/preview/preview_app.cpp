@@ -11,6 +11,7 @@
 #include "engine/core/file_extension.h"
 #include "engine/core/image.h"
 #include "engine/core/png.h"
+#include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/swapchain.h"
@@ -231,6 +232,7 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     ro.shadow_resolution = m_options.shadow_resolution;
     ro.batch = m_options.batch;
     ro.jitter = m_options.jitter;
+    ro.subpixel_rotation = subpixel_rotation(m_options.seed);  // as `mvpl render --seed`
     ro.clamp = clamp();
     m_renderer.begin(m_controller.camera(), ro);
     m_replayed = 0;
