@@ -106,6 +106,11 @@ struct Scene {
     // What the loader read past without refusing the file, one line each (e.g. an extension it
     // ignores); the command line prints them as warnings.
     std::vector<std::string> warnings;
+    // What the file asks of the renderer where it says (Mitsuba's integrator and film); the
+    // commands take them as defaults for --max-depth and --res. 0: the file says nothing.
+    int max_depth = 0;  // Mitsuba's max_depth (−1 unlimited)
+    int film_width = 0;
+    int film_height = 0;
 
     Bounds bounds() const;
     size_t triangle_count() const;
