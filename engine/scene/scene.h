@@ -29,6 +29,10 @@ struct Material {
     TextureRef metallic_roughness_texture;  // G = roughness, B = metallic
     TextureRef normal_texture;
     float normal_scale = 1.0f;
+    // A height map (Mitsuba's bumpmap; glTF has none): its R channel, bump_scale height units per
+    // uv unit, bends the shading normal where there is no normal texture.
+    TextureRef bump_texture;
+    float bump_scale = 1.0f;
     // Emitted radiance = emissive · emissive_strength (KHR_materials_emissive_strength) · texture.
     Rgb emissive{0.0f};
     float emissive_strength = 1.0f;

@@ -1,5 +1,6 @@
 #include "engine/scene/mitsuba/bsdfs.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "engine/scene/mitsuba/ior_tables.h"
@@ -22,6 +23,19 @@ Material diffuse(const ColorInput& reflectance) {
     return m;
 }
 
+// A textured α (Mitsuba reads a texture's mean channel) as the metallic-roughness texture mvpl
+// reads: G = √α (roughness, times the factor 1), B = 1 (metallic, times the material's factor).
+void textured_roughness(Context& ctx, pugi::xml_node bsdf, Material& m) {
+    const pugi::xml_node p = ctx.property(bsdf, "alpha");
+    if (!p || std::string(p.name()) != "texture") return;
+    const TextureRef alpha = texture_ref(ctx, p, true);
+    m.metallic_roughness_texture = derived_texture(ctx, p, alpha, [](const Vec4& v) {
+        const float a = std::clamp((v.r + v.g + v.b) / 3.0f, 0.0f, 1.0f);
+        return Vec4(1.0f, std::sqrt(a), 1.0f, 1.0f);
+    });
+    m.roughness = 1.0f;
+}
+
 // A microfacet α as mvpl's perceptual roughness (α = roughness²).
 float roughness_of(Context& ctx, pugi::xml_node bsdf, float fallback_alpha) {
     const std::string distribution = ctx.get_string(bsdf, "distribution", "beckmann");
@@ -36,6 +50,9 @@ float roughness_of(Context& ctx, pugi::xml_node bsdf, float fallback_alpha) {
         if (u != v)
             ctx.warn(bsdf, "anisotropic roughness (alpha_u " + std::to_string(u) + ", alpha_v " +
                                std::to_string(v) + ") is rendered isotropic with their mean");
+    } else if (const pugi::xml_node p = ctx.property(bsdf, "alpha");
+               p && std::string(p.name()) == "texture") {
+        return 1.0f;  // textured_roughness supplies it
     } else {
         alpha = scalar_input(ctx, bsdf, "alpha", fallback_alpha);
     }
@@ -78,6 +95,7 @@ Material conductor(Context& ctx, pugi::xml_node bsdf, bool rough) {
     m.base_color_texture = specular.texture;
     m.metallic = 1.0f;
     m.roughness = rough ? roughness_of(ctx, bsdf, 0.1f) : 0.0f;
+    if (rough) textured_roughness(ctx, bsdf, m);
     return m;
 }
 
@@ -91,6 +109,7 @@ Material plastic(Context& ctx, pugi::xml_node bsdf, bool rough) {
     m.specular_color = specular.value;
     m.ior = ior_input(ctx, bsdf, "int_ior", 1.49f) / ior_input(ctx, bsdf, "ext_ior", 1.000277f);
     m.roughness = rough ? roughness_of(ctx, bsdf, 0.1f) : 0.0f;
+    if (rough) textured_roughness(ctx, bsdf, m);
     return m;
 }
 
@@ -106,6 +125,7 @@ Material dielectric(Context& ctx, pugi::xml_node bsdf, const std::string& type) 
     m.specular_color = specular.value;
     m.ior = ior_input(ctx, bsdf, "int_ior", 1.5046f) / ior_input(ctx, bsdf, "ext_ior", 1.000277f);
     m.roughness = type == "roughdielectric" ? roughness_of(ctx, bsdf, 0.1f) : 0.0f;
+    if (type == "roughdielectric") textured_roughness(ctx, bsdf, m);
     return m;
 }
 
@@ -189,12 +209,29 @@ Material read(Context& ctx, pugi::xml_node bsdf, int depth) {
         if (!map || std::string(map.name()) != "texture")
             ctx.fail(bsdf, "normalmap needs a 'normalmap' texture");
         m.normal_texture = texture_ref(ctx, map, true);
+    } else if (type == "bumpmap") {
+        m = inner(ctx, bsdf, depth);
+        pugi::xml_node height;
+        for (pugi::xml_node t : ctx.objects(bsdf, "texture"))
+            height = height ? height : t;
+        if (!height) ctx.fail(bsdf, "bumpmap needs a height texture");
+        m.bump_texture = texture_ref(ctx, height, true);
+        m.bump_scale = ctx.get_float(bsdf, "scale", 1.0f);
     } else if (type == "mask") {
         m = inner(ctx, bsdf, depth);
         const pugi::xml_node opacity = ctx.property(bsdf, "opacity");
-        if (opacity && std::string(opacity.name()) == "texture")
-            ctx.fail(opacity, "a textured mask opacity is not supported (a constant is)");
-        m.base_alpha = scalar_input(ctx, bsdf, "opacity", 0.5f);
+        if (opacity && std::string(opacity.name()) == "texture") {
+            // The opacity as the base colour texture's alpha (white RGB: the factor keeps the
+            // colour); a BSDF with its own base texture would need both in one.
+            if (m.base_color_texture.valid())
+                ctx.fail(opacity, "a textured mask over a textured BSDF is not supported");
+            const TextureRef o = texture_ref(ctx, opacity, true);
+            m.base_color_texture = derived_texture(ctx, opacity, o, [](const Vec4& v) {
+                return Vec4(1.0f, 1.0f, 1.0f, std::clamp((v.r + v.g + v.b) / 3.0f, 0.0f, 1.0f));
+            });
+        } else {
+            m.base_alpha = scalar_input(ctx, bsdf, "opacity", 0.5f);
+        }
         m.alpha_mode = AlphaMode::Blend;
     } else if (type == "blendbsdf") {
         m = blend(ctx, bsdf, depth);

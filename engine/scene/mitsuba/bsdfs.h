@@ -8,7 +8,9 @@
 //   plastic, roughplastic → GGX dielectric layer (ior = int_ior / ext_ior) over a Lambertian base;
 //   dielectric, roughdielectric, thindielectric → the interface's reflection lobe (warned: mvpl
 //     does not refract, the transmitted light is lost);
-//   twosided → double-sided; normalmap → normal texture; mask → hashed transparency;
+//   a textured α → the metallic-roughness texture's G as √α;
+//   twosided → double-sided; normalmap → normal texture; bumpmap → a height map (the bump_map
+//   node, Blinn 1978); mask → hashed transparency (a textured opacity as the base alpha);
 //   blendbsdf → the heavier of the two (warned) unless both are diffuse with constant colours;
 //   principled → metal-rough where its parameters map (warned for the rest).
 // A BSDF that is not twosided is one-sided as in Mitsuba: the camera does not see its back faces

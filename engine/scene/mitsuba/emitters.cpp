@@ -7,6 +7,7 @@
 #include "engine/scene/mitsuba/bitmap.h"
 #include "engine/scene/mitsuba/properties.h"
 #include "engine/scene/mitsuba/transform.h"
+#include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::mitsuba {
 
@@ -143,6 +144,12 @@ void add_emitter(Context& ctx, pugi::xml_node emitter) {
         return;
     } else {
         ctx.fail(emitter, "emitter type '" + type + "' is not supported");
+    }
+    for (int c = 0; c < 3; ++c) {
+        if (!(std::abs(light.position[c]) <= kMaxCoordinate))
+            ctx.fail(emitter, "the emitter lies at " + number_text(light.position[c]) +
+                                  ", beyond the supported magnitude " +
+                                  number_text(kMaxCoordinate));
     }
     ctx.scene().lights.push_back(light);
 }

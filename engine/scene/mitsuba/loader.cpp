@@ -56,7 +56,11 @@ void read_scene(Context& ctx) {
             mitsuba::add_shape(ctx, child, DMat4(1.0),
                                [&ctx](pugi::xml_node shape) { return shape_material(ctx, shape); });
         } else if (tag == "emitter") {
-            mitsuba::add_emitter(ctx, child);
+            // An area emitter at the top level exists to be referenced from shapes.
+            if (std::string(child.attribute("type").as_string()) != "area")
+                mitsuba::add_emitter(ctx, child);
+        } else if (tag == "sampler" || tag == "film" || tag == "rfilter") {
+            ctx.warn(child, "a top-level " + tag + " is dropped (mvpl's command line sets it)");
         } else if (tag == "sensor") {
             mitsuba::add_sensor(ctx, child);
         } else if (tag == "integrator") {

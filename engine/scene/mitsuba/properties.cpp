@@ -82,6 +82,10 @@ std::vector<double> Context::numbers(pugi::xml_node at, const char* attribute) c
         double value = 0.0;
         const char* first = text.data() + i;
         const char* last = text.data() + end;
+        if (*first == '$')
+            fail(at, "undefined parameter '" + std::string(first, last) + "' (give it with -D " +
+                         std::string(first + 1, last) + "=VALUE or a <default>)");
+        if (*first == '+' && last - first > 1) ++first;  // from_chars takes no plus sign
         const auto [ptr, ec] = std::from_chars(first, last, value);
         if (ec != std::errc() || ptr != last || !std::isfinite(value))
             fail(at, std::string(attribute) + " '" + std::string(first, last) +

@@ -113,6 +113,16 @@ TextureRef texture_ref(Context& ctx, pugi::xml_node texture, bool raw) {
     return ref;
 }
 
+TextureRef derived_texture(Context& ctx, pugi::xml_node at, const TextureRef& ref,
+                           const std::function<Vec4(const Vec4&)>& texel) {
+    Texture t = ctx.scene().textures[size_t(ref.texture)];
+    for (Vec4& v : t.texels)
+        v = texel(v);
+    TextureRef out = ref;
+    out.texture = add_texture(ctx, at, std::move(t));
+    return out;
+}
+
 ColorInput color_input(Context& ctx, pugi::xml_node bsdf, const std::string& name,
                        const Rgb& fallback, bool raw) {
     ColorInput in;

@@ -4,6 +4,7 @@
 // Scene::textures, referenced with to_uv's scale and offset as KHR_texture_transform.
 #include <pugixml.hpp>
 
+#include <functional>
 #include <string>
 
 #include "engine/core/color.h"
@@ -29,5 +30,11 @@ float scalar_input(Context& ctx, pugi::xml_node bsdf, const std::string& name, f
 
 // The Scene::textures reference of a texture element.
 TextureRef texture_ref(Context& ctx, pugi::xml_node texture, bool raw);
+
+// A copy of `ref`'s texture with every texel mapped by `texel` (same size, wrap, filter and uv
+// transform): how a Mitsuba parameter becomes the channel mvpl reads it from (a roughness α in
+// the metallic-roughness texture's G as √α, a mask's opacity in the base colour's alpha).
+TextureRef derived_texture(Context& ctx, pugi::xml_node at, const TextureRef& ref,
+                           const std::function<Vec4(const Vec4&)>& texel);
 
 }  // namespace mvpl::scene::mitsuba

@@ -122,9 +122,7 @@ void XmlFiles::fail(pugi::xml_node node, const std::string& what) const {
     throw InputError(where(node), what);
 }
 
-std::string XmlFiles::substitute(size_t source, pugi::xml_node node,
-                                 const std::string& text) const {
-    (void)source;
+std::string XmlFiles::substitute(const std::string& text) const {
     std::string out;
     for (size_t i = 0; i < text.size(); ++i) {
         if (text[i] != '$') {
@@ -136,10 +134,9 @@ std::string XmlFiles::substitute(size_t source, pugi::xml_node node,
             ++end;
         const std::string name = text.substr(i + 1, end - i - 1);
         const auto found = m_parameters.find(name);
-        if (name.empty() || found == m_parameters.end())
-            fail(node, "undefined parameter '$" + name + "' (give it with -D " + name +
-                           "=VALUE or a <default>)");
-        out += found->second;
+        // As in Mitsuba, an undefined parameter fails only where its value is read
+        // (Context::numbers says which), so a dropped plugin's $spp does no harm.
+        out += found == m_parameters.end() ? "$" + name : found->second;
         i = end - 1;
     }
     return out;
@@ -150,8 +147,7 @@ void XmlFiles::preprocess(size_t source, pugi::xml_node node, bool upgrade, int 
         if (child.type() != pugi::node_element) continue;
         for (pugi::xml_attribute a = child.first_attribute(); a; a = a.next_attribute()) {
             const std::string value = a.value();
-            if (value.find('$') != std::string::npos)
-                a.set_value(substitute(source, child, value).c_str());
+            if (value.find('$') != std::string::npos) a.set_value(substitute(value).c_str());
         }
         const std::string tag = child.name();
         if (upgrade) {

@@ -20,7 +20,8 @@ namespace mvpl::scene::mitsuba {
 class XmlFiles {
 public:
     // Reads `path` and its includes; throws InputError (FILE:LINE: what) on malformed XML, a
-    // root that is not <scene>, an undefined $parameter, a missing include or an include cycle.
+    // root that is not <scene>, a missing include or an include cycle. A $parameter without a
+    // value stays in the text (Context::numbers names it when it is read).
     XmlFiles(const std::string& path, const LoadOptions& options);
     ~XmlFiles();
     XmlFiles(const XmlFiles&) = delete;
@@ -44,7 +45,7 @@ private:
     struct Source;
     size_t load(const std::string& path, pugi::xml_node from, int depth);
     void preprocess(size_t source, pugi::xml_node node, bool upgrade, int depth);
-    std::string substitute(size_t source, pugi::xml_node node, const std::string& text) const;
+    std::string substitute(const std::string& text) const;
     const Source& source_of(pugi::xml_node node) const;
 
     std::vector<std::unique_ptr<Source>> m_sources;
