@@ -63,8 +63,9 @@ TEST_F(MitsubaBsdfTest, GpuAgreesWithTheOracleOnEveryLoadableBsdfScene) {
         std::printf("%-45s relMSE %.3g\n", file.filename().string().c_str(), error);
         const std::string name = file.filename().string();
         if (std::find(std::begin(kNotBounded), std::end(kNotBounded), name) ==
-            std::end(kNotBounded))
+            std::end(kNotBounded)) {
             EXPECT_LT(error, kBound);
+        }
         EXPECT_TRUE(std::isfinite(error));
         ++checked;
     }
