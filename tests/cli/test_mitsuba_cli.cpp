@@ -58,7 +58,7 @@ TEST(MitsubaCli, SearchPathsFindMeshesThatTheScenesFolderLacks) {
     const std::string common =
         shell_quote(scene.string()) + " --spp 1 --res 8x8 -o " + shell_quote(out);
     expect_one_line_error(run_mvpl("reference " + common),
-                          scene.string() + ":2: file 'meshes/quad.obj' not found");
+                          scene.string() + ":3: file 'meshes/quad.obj' not found");
     const auto r =
         run_mvpl("reference " + common + " -a " + shell_quote((meshes.parent_path()).string()));
     EXPECT_EQ(r.exit_code, 0) << r.err;

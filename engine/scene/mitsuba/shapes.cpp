@@ -69,22 +69,25 @@ void flat_normals(Mesh& m) {
 // The shape's geometry in object space, and whether it asks for face normals.
 Mesh object_mesh(Context& ctx, pugi::xml_node shape, DMat4& local) {
     const std::string type = shape.attribute("type").as_string();
-    const auto file = [&] {
+    const bool from_file = type == "obj" || type == "ply" || type == "serialized";
+    std::string path;
+    if (from_file) {
+        // Resolved outside the try below: a missing file is the XML's error, at its line.
         const pugi::xml_node name = ctx.property(shape, "filename");
         if (!name) ctx.fail(shape, "shape type '" + type + "' needs a filename");
-        return ctx.xml().resolve(name, name.attribute("value").as_string());
-    };
+        path = ctx.xml().resolve(name, name.attribute("value").as_string());
+    }
     try {
-        if (type == "obj")
-            return read_obj_mesh(file(), ctx.get_bool(shape, "flip_tex_coords", true));
-        if (type == "ply") return read_ply_mesh(file());
+        if (type == "obj") return read_obj_mesh(path, ctx.get_bool(shape, "flip_tex_coords", true));
+        if (type == "ply") return read_ply_mesh(path);
         if (type == "serialized") {
             bool face = false;
-            Mesh m = read_serialized_mesh(file(), ctx.get_int(shape, "shape_index", 0), &face);
+            Mesh m = read_serialized_mesh(path, ctx.get_int(shape, "shape_index", 0), &face);
             if (face) m.normals.clear();
             return m;
         }
     } catch (const InputError& e) {
+        // The mesh file's own message (it names the file) after the shape's line.
         ctx.fail(shape, e.what());
     }
     if (type == "rectangle") return rectangle_mesh();
