@@ -199,6 +199,67 @@ TEST(MitsubaEnvmap, TheBrightTexelIsSeenWhereMitsubaLooksItUp) {
     EXPECT_NEAR(s.environment.lookup(-world).r, 0.0f, 1e-6f);
 }
 
+// Mitsuba's checkerboard: colour0 where (u mod 1 > ½) equals (v mod 1 > ½), colour1 elsewhere,
+// through to_uv's scale and offset; the baked 2 × 2 nearest texture must say the same anywhere.
+TEST(MitsubaTextures, CheckerboardMatchesMitsubasRuleThroughToUv) {
+    const fs::path p = write("checker.xml", scene_xml(R"(<bsdf type="diffuse" id="c">
+    <texture type="checkerboard" name="reflectance">
+        <rgb name="color0" value="0.9"/>
+        <rgb name="color1" value="0.1"/>
+        <transform name="to_uv"><scale x="3" y="5"/><translate x="0.25"/></transform>
+    </texture>
+</bsdf>
+<shape type="rectangle"><ref id="c"/></shape>)"));
+    const Scene s = load_scene(p.string());
+    const Material& m = s.materials[size_t(s.meshes[0].material)];
+    ASSERT_TRUE(m.base_color_texture.valid());
+    const Texture& t = s.textures[size_t(m.base_color_texture.texture)];
+    for (float u = 0.013f; u < 1.0f; u += 0.0517f) {
+        for (float v = 0.011f; v < 1.0f; v += 0.0423f) {
+            const float tu = 3.0f * u + 0.25f, tv = 5.0f * v;
+            const bool x = tu - std::floor(tu) > 0.5f, y = tv - std::floor(tv) > 0.5f;
+            const float expected = x == y ? 0.9f : 0.1f;
+            const Vec2 uv = m.base_color_texture.transform(Vec2(u, v));
+            EXPECT_FLOAT_EQ(t.sample(uv).r, expected) << u << ", " << v;
+        }
+    }
+}
+
+TEST(MitsubaColours, SpectraSrgbAndNamedConductors) {
+    const fs::path p = write("colours.xml", scene_xml(R"(<bsdf type="diffuse" id="flat">
+    <spectrum name="reflectance" value="360:0.5, 830:0.5"/>
+</bsdf>
+<bsdf type="diffuse" id="red">
+    <spectrum name="reflectance" value="400:0.05, 580:0.05, 600:0.9, 700:0.9"/>
+</bsdf>
+<bsdf type="diffuse" id="srgb"><srgb name="reflectance" value="#808080"/></bsdf>
+<bsdf type="conductor" id="gold"><string name="material" value="Au"/></bsdf>
+<bsdf type="conductor" id="mirror"/>
+<shape type="rectangle"><ref id="flat"/></shape>
+<shape type="rectangle"><ref id="red"/></shape>
+<shape type="rectangle"><ref id="srgb"/></shape>
+<shape type="rectangle"><ref id="gold"/></shape>
+<shape type="rectangle"><ref id="mirror"/></shape>)"));
+    const Scene s = load_scene(p.string());
+    const auto colour = [&](size_t mesh) {
+        return s.materials[size_t(s.meshes[mesh].material)].base_color;
+    };
+    // A flat spectrum keeps its value in every channel (the white normalisation).
+    for (int c = 0; c < 3; ++c)
+        EXPECT_NEAR(colour(0)[c], 0.5f, 1e-4f);
+    // Reflecting only above 590 nm: red, with little green and blue.
+    EXPECT_GT(colour(1).r, 0.6f);
+    EXPECT_LT(colour(1).b, 0.15f);
+    // sRGB 128/255 decoded: 0.2158.
+    EXPECT_NEAR(colour(2).g, 0.2158f, 1e-3f);
+    // Gold's F0 from η = 0.143, k = 3.983 (red): ((η−1)² + k²) / ((η+1)² + k²) = 0.9667.
+    EXPECT_NEAR(colour(3).r, 0.9667f, 1e-3f);
+    EXPECT_EQ(s.materials[size_t(s.meshes[3].material)].metallic, 1.0f);
+    // Mitsuba's default conductor ("none") is a perfect mirror.
+    EXPECT_NEAR(colour(4).g, 1.0f, 1e-6f);
+    EXPECT_EQ(s.materials[size_t(s.meshes[4].material)].roughness, 0.0f);
+}
+
 TEST(MitsubaSerialized, TheMatpreviewShapesLoad) {
     const fs::path common =
         fs::path(MVPL_SOURCE_DIR) / ".." / "shared" / "mitsuba-scenes" / "common";
