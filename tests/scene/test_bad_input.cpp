@@ -143,7 +143,8 @@ const std::map<std::string, std::string> kExpected = {
      "required extension KHR_draco_mesh_compression is not supported"},
     {"no-file-extension", "unsupported scene format"},
     // Mitsuba XML (issue 16): FILE:LINE of the element at fault.
-    {"mitsuba-unclosed-tag.xml", "mitsuba-unclosed-tag.xml:4: malformed XML: Start-end tags mismatch"},
+    {"mitsuba-unclosed-tag.xml",
+     "mitsuba-unclosed-tag.xml:4: malformed XML: Start-end tags mismatch"},
     {"mitsuba-unknown-reference.xml", "mitsuba-unknown-reference.xml:3: unknown reference 'nope'"},
     {"mitsuba-missing-file.xml", "mitsuba-missing-file.xml:3: file 'not-there.obj' not found"},
     {"mitsuba-negative-radius.xml",
@@ -156,6 +157,7 @@ const std::map<std::string, std::string> kExpected = {
     {"mitsuba-include-cycle.xml", "mitsuba-include-cycle.xml:2: includes nest deeper than 16"},
     {"mitsuba-root-not-scene.xml", "the root element is <film>, not <scene>"},
     {"mitsuba-bad-serialized.xml", "not a Mitsuba serialized mesh"},
+    {"mitsuba-proc-file.xml", "mitsuba-proc-file.xml:3: '/proc/self/status' is not a regular file"},
     {"mitsuba-lookat-origin-is-target.xml",
      "mitsuba-lookat-origin-is-target.xml:4: lookat: the origin is the target"},
 };

@@ -207,7 +207,12 @@ std::string XmlFiles::resolve(pugi::xml_node node, const std::string& filename) 
     }
     for (const fs::path& c : candidates) {
         std::error_code error;
-        if (fs::is_regular_file(c, error)) return c.lexically_normal().string();
+        if (!fs::is_regular_file(c, error)) continue;
+        // Kernel pseudo-files pass as regular files but may never end (/proc/kcore).
+        const std::string real = fs::weakly_canonical(c, error).string();
+        if (real.starts_with("/proc/") || real.starts_with("/sys/"))
+            fail(node, "'" + filename + "' is not a regular file");
+        return c.lexically_normal().string();
     }
     fail(node, "file '" + filename + "' not found (searched the scene's folder" +
                    (m_search_paths.empty() ? std::string() : " and the -a/<path> folders") + ")");
