@@ -15,6 +15,8 @@ packages=(
   libvulkan-dev mesa-vulkan-drivers glslang-dev glslang-tools vulkan-validationlayers
   # mesh formats: OBJ (PLY is read by our own loader)
   libtinyobjloader-dev
+  # Mitsuba XML scenes (engine/scene/mitsuba/): pugixml, and zlib for `serialized` meshes
+  libpugixml-dev zlib1g-dev
   # the shadow pass's simplified shadow proxy (engine/render/shadow_clusters.cpp)
   libmeshoptimizer-dev
   # interactive preview, and its tests under a virtual X server

@@ -127,6 +127,12 @@ MaterialGraph graph_from_gltf(const scene::Material& m, const GltfGraphOptions& 
         n.value = Vec4(m.normal_scale);
         n.inputs[0] = b.value(m.normal_texture, Vec4(1.0f), kAllChannels);
         g.normal = g.add(n);
+    } else if (m.bump_texture.valid()) {
+        Node n;
+        n.kind = &node_kind("bump_map");
+        n.value = Vec4(m.bump_scale);
+        n.inputs[0] = b.value(m.bump_texture, Vec4(1.0f), 0);
+        g.normal = g.add(n);
     }
     return g;
 }

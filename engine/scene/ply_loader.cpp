@@ -238,7 +238,7 @@ int property_index(const Element& e, const char* name) {
 
 }  // namespace
 
-Scene load_ply(const std::string& path) {
+Mesh read_ply_mesh(const std::string& path) {
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path, "cannot open the file");
     const std::string data((std::istreambuf_iterator<char>(file)),
@@ -264,7 +264,7 @@ Scene load_ply(const std::string& path) {
         }
         const bool is_vertex = e.name == "vertex" && !have_vertices;
         const bool is_face = e.name == "face" && !have_faces;
-        int xyz[3] = {-1, -1, -1}, nxyz[3] = {-1, -1, -1}, list = -1;
+        int xyz[3] = {-1, -1, -1}, nxyz[3] = {-1, -1, -1}, uv[2] = {-1, -1}, list = -1;
         if (is_vertex) {
             const char* names[6] = {"x", "y", "z", "nx", "ny", "nz"};
             for (int i = 0; i < 3; ++i) {
@@ -274,8 +274,18 @@ Scene load_ply(const std::string& path) {
             if (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0)
                 throw InputError(path, "the vertex element has no x, y and z properties");
             have_normals = nxyz[0] >= 0 && nxyz[1] >= 0 && nxyz[2] >= 0;
+            // Texture coordinates under the names Mitsuba's PLY reader accepts.
+            const char* uv_names[4][2] = {
+                {"u", "v"}, {"s", "t"}, {"texture_u", "texture_v"}, {"texture_s", "texture_t"}};
+            for (const auto& pair : uv_names) {
+                if (uv[0] >= 0) break;
+                uv[0] = property_index(e, pair[0]);
+                uv[1] = property_index(e, pair[1]);
+                if (uv[1] < 0) uv[0] = -1;
+            }
             mesh.positions.resize(e.count);
             if (have_normals) mesh.normals.resize(e.count);
+            if (uv[0] >= 0) mesh.uv0.resize(e.count);
         }
         if (is_face) {
             for (size_t i = 0; i < e.properties.size(); ++i) {
@@ -332,6 +342,12 @@ Scene load_ply(const std::string& path) {
                     }
                 }
                 mesh.positions[n] = p;
+                if (uv[0] >= 0) {
+                    mesh.uv0[n] = Vec2(float(values[size_t(uv[0])]), float(values[size_t(uv[1])]));
+                    if (!std::isfinite(mesh.uv0[n].x) || !std::isfinite(mesh.uv0[n].y))
+                        throw InputError(path, "vertex " + std::to_string(n) +
+                                                   " has non-finite texture coordinates");
+                }
                 if (have_normals) {
                     mesh.normals[n] =
                         Vec3(float(values[size_t(nxyz[0])]), float(values[size_t(nxyz[1])]),
@@ -358,6 +374,12 @@ Scene load_ply(const std::string& path) {
     }
     if (!have_vertices) throw InputError(path, "no vertex element");
     if (mesh.indices.empty()) throw InputError(path, "no faces: a point cloud has no triangles");
+    return mesh;
+}
+
+Scene load_ply(const std::string& path) {
+    Mesh mesh = read_ply_mesh(path);
+    mesh.uv0.clear();  // a bare mesh gets an untextured material
     std::vector<Mesh> meshes;
     meshes.push_back(std::move(mesh));
     return mesh_scene(path, std::move(meshes), {default_mesh_material()});

@@ -14,4 +14,9 @@ namespace mvpl::scene {
 // range, a non-finite vertex, ...); allocates no more than the file's size can justify.
 Scene load_ply(const std::string& path);
 
+// The mesh alone, in the file's coordinates: positions, the normals when the file has nx, ny and
+// nz, the texture coordinates when it has u, v (or s, t, texture_u, texture_v, texture_s,
+// texture_t), and fan-triangulated indices. Same checks and errors as load_ply.
+Mesh read_ply_mesh(const std::string& path);
+
 }  // namespace mvpl::scene

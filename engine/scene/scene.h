@@ -29,6 +29,10 @@ struct Material {
     TextureRef metallic_roughness_texture;  // G = roughness, B = metallic
     TextureRef normal_texture;
     float normal_scale = 1.0f;
+    // A height map (Mitsuba's bumpmap; glTF has none): its R channel, bump_scale height units per
+    // uv unit, bends the shading normal where there is no normal texture.
+    TextureRef bump_texture;
+    float bump_scale = 1.0f;
     // Emitted radiance = emissive · emissive_strength (KHR_materials_emissive_strength) · texture.
     Rgb emissive{0.0f};
     float emissive_strength = 1.0f;
@@ -106,6 +110,11 @@ struct Scene {
     // What the loader read past without refusing the file, one line each (e.g. an extension it
     // ignores); the command line prints them as warnings.
     std::vector<std::string> warnings;
+    // What the file asks of the renderer where it says (Mitsuba's integrator and film); the
+    // commands take them as defaults for --max-depth and --res. 0: the file says nothing.
+    int max_depth = 0;  // Mitsuba's max_depth (−1 unlimited)
+    int film_width = 0;
+    int film_height = 0;
 
     Bounds bounds() const;
     size_t triangle_count() const;

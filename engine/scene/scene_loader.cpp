@@ -53,15 +53,16 @@ void make_flat(Mesh& mesh) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path, const LoadOptions& options) {
     const std::string extension = lower_extension(path);
+    if (extension == ".xml") return load_mitsuba(path, options);
     if (extension == ".gltf" || extension == ".glb") return load_gltf(path);
     if (extension == ".ply") return load_ply(path);
     if (extension == ".obj") return load_obj(path);
     throw InputError(path, "unsupported scene format" +
                                (extension.empty() ? std::string(" (no file extension)")
                                                   : " '" + extension + "'") +
-                               "; expected .gltf, .glb, .ply or .obj");
+                               "; expected .gltf, .glb, .ply, .obj or .xml");
 }
 
 Material default_mesh_material() {

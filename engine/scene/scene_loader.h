@@ -6,9 +6,18 @@
 
 namespace mvpl::scene {
 
-// Loads a scene by its file extension (.gltf, .glb, .ply, .obj). Throws InputError naming the
-// file and what is wrong; never crashes or allocates without bound on malformed input.
-Scene load_scene(const std::string& path);
+// What the command line adds to a scene file (Mitsuba's `-D name=value` and `-a PATH`).
+struct LoadOptions {
+    std::vector<std::pair<std::string, std::string>> defines;  // override `<default>`s
+    std::vector<std::string> search_paths;                     // folders for relative files
+};
+
+// Loads a scene by its file extension (.gltf, .glb, .ply, .obj, .xml). Throws InputError naming
+// the file and what is wrong; never crashes or allocates without bound on malformed input.
+Scene load_scene(const std::string& path, const LoadOptions& options = {});
+
+// Mitsuba 3 and Mitsuba 0.6 XML scenes (engine/scene/mitsuba/).
+Scene load_mitsuba(const std::string& path, const LoadOptions& options = {});
 
 // glTF 2.0 (.gltf with external or embedded buffers, .glb) via tinygltf.
 Scene load_gltf(const std::string& path);

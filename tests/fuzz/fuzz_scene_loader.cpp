@@ -3,7 +3,8 @@
 // kMaxCoordinate, every light and material factor within kMaxFactor and every index in range,
 // or throws InputError. Anything else — a crash, a sanitizer report, another exception, a hang — is
 // a finding. The format is chosen from the bytes as a user's file extension would choose it: the
-// GLB magic, "ply", a '{' (JSON) or else OBJ. tests/fuzz/README.md says how to run it.
+// GLB magic, "ply", a '{' (JSON), a '<' (Mitsuba XML) or else OBJ. tests/fuzz/README.md says how to
+// run it.
 #include <unistd.h>
 
 #include <cmath>
@@ -29,6 +30,7 @@ std::string extension_of(const uint8_t* data, size_t size) {
     for (size_t i = 0; i < size; ++i) {
         const char c = char(data[i]);
         if (c == ' ' || c == '\t' || c == '\n' || c == '\r') continue;
+        if (c == '<') return ".xml";
         return c == '{' ? ".gltf" : ".obj";
     }
     return ".obj";

@@ -10,7 +10,7 @@ build=${2:-build-fuzz}
 work=$(mktemp -d "${TMPDIR:-/tmp}/mvpl-fuzz.XXXXXX")
 mkdir -p "$work/corpus" "$work/findings"
 cp tests/data/gltf/*.gltf tests/data/gltf/*.glb tests/data/mesh/*.ply tests/data/mesh/*.obj \
-  tests/data/bad/* "$work/corpus/"
+  tests/data/mitsuba/*.xml tests/data/bad/* "$work/corpus/"
 # A fixed seed: the same run on every machine of the same speed. 10 s per input is a hang.
 if "$build/bin/fuzz_scene_loader" -seed=1 -max_total_time="$seconds" -timeout=10 \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/findings/" \

@@ -1,10 +1,11 @@
-// Deterministic mutation testing of the glTF loader: good fixtures with numbers swapped for
-// hostile values, bytes flipped, slices cut out. Every result must either load into a scene
-// that keeps the mesh invariants or throw mvpl::InputError, never anything else, and (under
+// Deterministic mutation testing of the glTF and Mitsuba XML loaders: good fixtures with numbers
+// swapped for hostile values, bytes flipped, slices cut out. Every result must either load into a
+// scene that keeps the mesh invariants or throw mvpl::InputError, never anything else, and (under
 // ASan/UBSan) never crash. MVPL_MUTATIONS=n raises the count per fixture for a longer campaign.
 #include <gtest/gtest.h>
 
 #include <unistd.h>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -148,7 +149,20 @@ TEST_P(MutatedInput, LoadsOrThrowsInputErrorOnly) {
             }
         } catch (const InputError& e) {
             const std::string message = e.what();
-            if (message.rfind(target.string() + ": ", 0) != 0 ||
+            // "PATH: what", or "PATH:LINE: what" for Mitsuba XML.
+            const std::string path = target.string();
+            size_t after = path.size();
+            if (message.rfind(path + ":", 0) == 0) {
+                after = path.size() + 1;
+                while (after < message.size() &&
+                       std::isdigit(static_cast<unsigned char>(message[after])))
+                    ++after;
+                if (after > path.size() + 1)
+                    after = message[after] == ':' ? after : path.size();
+                else
+                    after = path.size();
+            }
+            if (message.rfind(path, 0) != 0 || message.compare(after, 2, ": ") != 0 ||
                 message.find_first_of("\r\n") != std::string::npos) {
                 ADD_FAILURE() << "mutation " << i << ": malformed message: " << message;
             }
@@ -171,7 +185,8 @@ INSTANTIATE_TEST_SUITE_P(
                       std::string(MVPL_TEST_DATA_DIR) + "/gltf/lights_camera.gltf",
                       std::string(MVPL_TEST_DATA_DIR) + "/gltf/defaults.gltf",
                       std::string(MVPL_TEST_DATA_DIR) + "/gltf/box.glb",
-                      std::string(MVPL_ASSETS_DIR) + "/cornell-box/cbox.gltf"),
+                      std::string(MVPL_ASSETS_DIR) + "/cornell-box/cbox.gltf",
+                      std::string(MVPL_TEST_DATA_DIR) + "/mitsuba/cbox.xml"),
     [](const ::testing::TestParamInfo<std::string>& info) {
         std::string name = fs::path(info.param).filename().string();
         for (char& c : name) {

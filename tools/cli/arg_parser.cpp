@@ -100,7 +100,12 @@ const ArgParser::Option* ArgParser::find(const std::string& name) const {
     return nullptr;
 }
 
+bool ArgParser::given(const std::string& name) const {
+    return std::find(m_given.begin(), m_given.end(), name) != m_given.end();
+}
+
 bool ArgParser::parse(const std::vector<std::string>& args) {
+    m_given.clear();
     size_t positional = 0;
     std::vector<const Option*> given;
     for (size_t i = 0; i < args.size(); ++i) {
@@ -117,6 +122,11 @@ bool ArgParser::parse(const std::vector<std::string>& args) {
             if (const size_t eq = a.find('='); eq != std::string::npos && a.rfind("--", 0) == 0) {
                 name = a.substr(0, eq);
                 value = a.substr(eq + 1);
+                has_inline = true;
+            } else if (a.size() > 2 && a[1] != '-' && find(a.substr(0, 2))) {
+                // A short option with its value attached, as Mitsuba's -Dname=value.
+                name = a.substr(0, 2);
+                value = a.substr(2);
                 has_inline = true;
             }
             const Option* option = find(name);
@@ -136,6 +146,7 @@ bool ArgParser::parse(const std::vector<std::string>& args) {
             if (!option->repeatable && std::find(given.begin(), given.end(), option) != given.end())
                 throw UsageError(m_command + ": " + name + " given twice");
             given.push_back(option);
+            m_given.push_back(option->name);
             option->apply(value);
             continue;
         }

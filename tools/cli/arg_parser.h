@@ -31,6 +31,9 @@ public:
     // The command name, the prefix of every error message ("render: --batch must be …").
     const std::string& command() const { return m_command; }
 
+    // Whether the last parse() saw the option on the command line.
+    bool given(const std::string& name) const;
+
     // Returns false when --help was given (usage already printed to stdout).
     bool parse(const std::vector<std::string>& args);
     std::string usage() const;
@@ -51,6 +54,7 @@ private:
     std::vector<std::pair<std::string, std::string*>> m_positionals;
     std::vector<std::string> m_positional_help;
     std::vector<std::function<void()>> m_checks;
+    std::vector<std::string> m_given;
 };
 
 }  // namespace mvpl::cli

@@ -103,6 +103,8 @@ int run_bench(const Args& args) {
     add_camera_options(parser, camera);
     EnvironmentArgs environment;
     add_environment_options(parser, environment);
+    SceneFileArgs scene_file;
+    add_scene_file_options(parser, scene_file);
     parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported");
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
@@ -157,7 +159,8 @@ int run_bench(const Args& args) {
     Progress progress("bench", int64_t(repeat) * int64_t(1 + sweep_configs.size()), quiet);
     for (int k = 0; k < repeat; ++k) {
         // Everything from scratch each repeat, so that start-up is measured K times too.
-        const session::SceneSession session(scene_path, camera.choice, environment.choice);
+        const session::SceneSession session(scene_path, camera.choice, environment.choice,
+                                            scene_file.options);
         const scene::Scene& scene = session.scene();
         load_s.push_back(session.load_seconds());
         bvh_s.push_back(session.bvh_seconds());

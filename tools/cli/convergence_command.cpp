@@ -111,6 +111,8 @@ int run_convergence(const Args& args) {
     add_camera_options(parser, camera);
     EnvironmentArgs environment;
     add_environment_options(parser, environment);
+    SceneFileArgs scene_file;
+    add_scene_file_options(parser, scene_file);
     parser.add_flag("--no-plot", &no_plot, "write the CSV only");
     parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
     if (!parser.parse(args)) return 0;
@@ -132,7 +134,9 @@ int run_convergence(const Args& args) {
                          std::to_string(reference.width()) + "x" +
                          std::to_string(reference.height()));
     }
-    const session::SceneSession session(scene_path, camera.choice, environment.choice);
+    const session::SceneSession session(scene_path, camera.choice, environment.choice,
+                                        scene_file.options);
+    apply_scene_defaults(parser, session.scene(), &settings.tracer.max_depth, nullptr, nullptr);
     std::filesystem::create_directories(out_dir);
 
     ConvergenceRun run;

@@ -209,4 +209,33 @@ void add_environment_options(ArgParser& parser, EnvironmentArgs& args) {
     });
 }
 
+void add_scene_file_options(ArgParser& parser, SceneFileArgs& args) {
+    parser.add_strings("-D", &args.defines,
+                       "NAME=VALUE: a Mitsuba XML parameter ($NAME), overriding its <default>");
+    parser.add_strings(
+        "-a", &args.paths,
+        "PATH: a folder where a Mitsuba XML scene's relative file names are searched");
+    parser.add_check([&parser, &args] {
+        args.options = {};
+        for (const std::string& d : args.defines) {
+            const size_t eq = d.find('=');
+            if (eq == std::string::npos || eq == 0)
+                throw UsageError(parser.command() + ": -D '" + d + "' is not NAME=VALUE");
+            args.options.defines.emplace_back(d.substr(0, eq), d.substr(eq + 1));
+        }
+        args.options.search_paths = args.paths;
+    });
+}
+
+void apply_scene_defaults(const ArgParser& parser, const scene::Scene& scene, int* max_depth,
+                          int* width, int* height) {
+    if (max_depth && scene.max_depth != 0 && !parser.given("--max-depth"))
+        *max_depth = scene.max_depth;
+    if (width && height && scene.film_width > 0 && scene.film_height > 0 &&
+        !parser.given("--res")) {
+        *width = scene.film_width;
+        *height = scene.film_height;
+    }
+}
+
 }  // namespace mvpl::cli

@@ -8,6 +8,7 @@
 
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/camera_choice.h"
+#include "engine/scene/scene_loader.h"
 #include "sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/session/scene_session.h"
@@ -73,5 +74,19 @@ struct EnvironmentArgs {
     session::EnvironmentChoice choice;  // filled by the parser's check
 };
 void add_environment_options(ArgParser& parser, EnvironmentArgs& args);
+
+// -D NAME=VALUE and -a PATH (both repeatable): a Mitsuba XML scene's parameters and the folders
+// its relative file names are searched in, as Mitsuba's command line takes them.
+struct SceneFileArgs {
+    std::vector<std::string> defines;
+    std::vector<std::string> paths;
+    scene::LoadOptions options;  // filled by the parser's check
+};
+void add_scene_file_options(ArgParser& parser, SceneFileArgs& args);
+
+// What the scene file asks for where the command line did not: its integrator's max_depth for
+// --max-depth and its film size for --res (either pointer may be null).
+void apply_scene_defaults(const ArgParser& parser, const scene::Scene& scene, int* max_depth,
+                          int* width, int* height);
 
 }  // namespace mvpl::cli

@@ -54,6 +54,8 @@ int run_preview(const Args& args) {
     add_camera_options(parser, camera);
     EnvironmentArgs environment;
     add_environment_options(parser, environment);
+    SceneFileArgs scene_file;
+    add_scene_file_options(parser, scene_file);
     add_renderer_options(parser, renderer);  // C toggles clamping in the window
     parser.add_flag("--no-hud", &no_hud, "no text overlay");
     parser.add_flag("--no-motion-scaling", &no_motion_scaling,
@@ -80,6 +82,7 @@ int run_preview(const Args& args) {
     o.motion_scaling = !no_motion_scaling;
     o.camera = camera.choice;
     o.environment = environment.choice;
+    o.load = scene_file.options;
     return preview::run_preview(o);
 }
 

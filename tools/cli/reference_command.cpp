@@ -25,7 +25,7 @@ int run_reference(const Args& args) {
         "reference",
         "Renders SCENE with the CPU reference path tracer (next-event estimation, MIS,\n"
         "Russian roulette). Writes EXR (linear float) or PNG (sRGB) by the extension of -o.");
-    parser.add_positional("SCENE", &scene_path, "glTF 2.0 scene (.gltf or .glb)");
+    parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .xml, .ply, .obj)");
     parser.add_int("--spp", &options.spp, "samples per pixel");
     add_max_depth_option(parser, options.max_depth);
     parser.add_resolution("--res", &options.width, &options.height, "image size WxH");
@@ -34,6 +34,8 @@ int run_reference(const Args& args) {
     add_camera_options(parser, camera);
     EnvironmentArgs environment;
     add_environment_options(parser, environment);
+    SceneFileArgs scene_file;
+    add_scene_file_options(parser, scene_file);
     parser.add_strings("-o", &outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &exposure, "PNG exposure in stops");
     parser.add_int("--threads", &threads, "worker threads (0 = all cores)");
@@ -50,7 +52,10 @@ int run_reference(const Args& args) {
                                                       threads);
     }
 
-    const session::SceneSession session(scene_path, camera.choice, environment.choice);
+    const session::SceneSession session(scene_path, camera.choice, environment.choice,
+                                        scene_file.options);
+    apply_scene_defaults(parser, session.scene(), &options.max_depth, &options.width,
+                         &options.height);
     session.warn_if_no_light("the image is black");
 
     reference::RenderStats stats;

@@ -24,6 +24,7 @@ struct RenderArgs {
     std::string scene_path;
     CameraArgs camera;
     EnvironmentArgs environment;
+    SceneFileArgs scene_file;
     std::string sampler_name = "mc";
     std::string per_path;  // empty: each sampler's default
     uint64_t paths = 1024;
@@ -41,7 +42,7 @@ struct RenderArgs {
 };
 
 void add_options(ArgParser& parser, RenderArgs& a) {
-    parser.add_positional("SCENE", &a.scene_path, "glTF 2.0 scene (.gltf or .glb)");
+    parser.add_positional("SCENE", &a.scene_path, "scene (.gltf, .glb, .xml, .ply, .obj)");
     parser.add_uint64("--vpls", &a.paths,
                       "mc: light paths to trace, each leaves one VPL per bounce (--vpl-per-path "
                       "all) or one; metropolis: chain steps");
@@ -60,6 +61,7 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     add_seed_option(parser, a.settings.seed);
     add_camera_options(parser, a.camera);
     add_environment_options(parser, a.environment);
+    add_scene_file_options(parser, a.scene_file);
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
     add_device_option(parser, a.device, "Vulkan device index (see mvpl info); -1 = default");
@@ -149,7 +151,10 @@ int run_render(const Args& args) {
     check_outputs(a.outputs);
 
     Timer total;
-    const session::SceneSession session(a.scene_path, a.camera.choice, a.environment.choice);
+    const session::SceneSession session(a.scene_path, a.camera.choice, a.environment.choice,
+                                        a.scene_file.options);
+    apply_scene_defaults(parser, session.scene(), &a.settings.tracer.max_depth, &a.width,
+                         &a.height);
     session.warn_if_no_light("the image shows emitters only");
     RenderJob job = make_job(a, session);
     std::unique_ptr<gpu::Context> context;

@@ -122,6 +122,8 @@ int run_vpls(const Args& args) {
     add_camera_options(parser, camera);
     EnvironmentArgs environment;
     add_environment_options(parser, environment);
+    SceneFileArgs scene_file;
+    add_scene_file_options(parser, scene_file);
     parser.add_strings("-o", &outputs, "output image, .png or .exr");
     parser.add_flag("--quiet", &quiet, "no summary line");
     if (!parser.parse(args)) return 0;
@@ -133,7 +135,9 @@ int run_vpls(const Args& args) {
     outputs = outputs_or(outputs, "vpls.png", defaulted);
     check_outputs(outputs);
 
-    const session::SceneSession session(scene_path, camera.choice, environment.choice);
+    const session::SceneSession session(scene_path, camera.choice, environment.choice,
+                                        scene_file.options);
+    apply_scene_defaults(parser, session.scene(), &settings.tracer.max_depth, &width, &height);
     const scene::Scene& scene = session.scene();
     const trace::Accel& accel = session.accel();
     // The Metropolis target is the scene camera's view, whatever this picture shows.

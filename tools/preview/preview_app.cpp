@@ -57,7 +57,7 @@ class PreviewApp {
 public:
     explicit PreviewApp(const PreviewOptions& options)
         : m_options(options),
-          m_session(options.scene_path, options.camera, options.environment),
+          m_session(options.scene_path, options.camera, options.environment, options.load),
           m_sampler(options.sampler),
           m_script(options.script.empty() ? std::vector<ScriptEvent>{}
                                           : load_script(options.script)),

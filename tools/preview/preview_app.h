@@ -10,12 +10,14 @@
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/environment_choice.h"
+#include "engine/scene/scene_loader.h"
 
 namespace mvpl::preview {
 
 struct PreviewOptions {
     std::string scene_path;
     scene::CameraChoice camera;            // --camera, --look-at, --fov
+    scene::LoadOptions load;               // -D, -a
     scene::EnvironmentChoice environment;  // --env-color, --env-scale, --no-default-light
     std::string sampler = "mc";
     int width = 512;  // initial window size

@@ -11,9 +11,10 @@ namespace {
 
 // The scene with the environment the command asked for; a scene without emitters gets the
 // default sky unless the command said no.
-scene::Scene load_with_environment(const std::string& path, const EnvironmentChoice& choice) {
-    scene::Scene scene = scene::load_scene(path);
-    scene.environment.rotation = choice.rotation_degrees * (kPi / 180.0f);
+scene::Scene load_with_environment(const std::string& path, const EnvironmentChoice& choice,
+                                   const scene::LoadOptions& load) {
+    scene::Scene scene = scene::load_scene(path, load);
+    scene.environment.rotation += choice.rotation_degrees * (kPi / 180.0f);
     if (!choice.map.empty()) {
         scene.environment.map = scene::load_environment_map(choice.map);
         scene.environment.radiance = choice.color * choice.scale;
@@ -34,9 +35,9 @@ scene::Scene load_with_environment(const std::string& path, const EnvironmentCho
 }  // namespace
 
 SceneSession::SceneSession(const std::string& path, const scene::CameraChoice& camera,
-                           const EnvironmentChoice& environment)
+                           const EnvironmentChoice& environment, const scene::LoadOptions& load)
     : m_path(path),
-      m_scene(load_with_environment(path, environment)),
+      m_scene(load_with_environment(path, environment, load)),
       m_load_seconds(m_clock.seconds()),
       m_accel(m_scene),
       m_bvh_seconds(m_clock.seconds() - m_load_seconds),

@@ -11,6 +11,7 @@
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/environment_choice.h"
 #include "engine/scene/scene.h"
+#include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
 
 namespace mvpl::session {
@@ -22,7 +23,8 @@ public:
     // Throws InputError (exit code 2) when the scene cannot be read, UsageError when `camera`
     // names no camera of it. Prints the loader's warnings (Scene::warnings).
     explicit SceneSession(const std::string& path, const scene::CameraChoice& camera = {},
-                          const EnvironmentChoice& environment = {});
+                          const EnvironmentChoice& environment = {},
+                          const scene::LoadOptions& load = {});
     SceneSession(const SceneSession&) = delete;
     SceneSession& operator=(const SceneSession&) = delete;
 

@@ -4,8 +4,8 @@
 // Approximation: dp/du and dp/dv are taken as unit length (exact for a uv mapping of one metre
 // per unit); the scale absorbs the rest.
 //
-// No loader creates it yet: glTF has no height maps; the Mitsuba loader (issue 16) will, for
-// Mitsuba's `bumpmap` BSDF, whose `scale` has this meaning.
+// glTF has no height maps; the Mitsuba loader creates it for Mitsuba's `bumpmap` BSDF, whose
+// `scale` has this meaning (scene::Material::bump_texture).
 #include "engine/material/node_graph.h"
 
 namespace mvpl::material::nodes {
