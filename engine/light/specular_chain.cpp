@@ -1,6 +1,7 @@
 #include "engine/light/specular_chain.h"
 
 #include <algorithm>
+#include <vector>
 
 #include "engine/trace/interaction.h"
 #include "engine/trace/shading_point.h"
@@ -20,10 +21,27 @@ Rgb emitted_at(const trace::Accel& accel, const trace::SurfaceInteraction& si) {
 
 }  // namespace
 
-bool continues_chain(const material::ClosureParams& closure, const ChainOptions& options) {
+bool continues_chain(const material::Bsdf& bsdf, const Vec3& wo, const ChainOptions& options) {
     if (!(options.max_roughness >= 0.0f)) return false;
+    const material::ClosureParams& closure = bsdf.params();
     if (material::closure_type(closure) == material::ClosureType::Lambertian) return false;
-    return closure.roughness <= options.max_roughness;
+    return closure.roughness <= options.max_roughness && bsdf.specular_probability(wo) >= 0.5f;
+}
+
+bool scene_may_chain(const scene::Scene& scene, const ChainOptions& options) {
+    if (!options.enabled()) return false;
+    std::vector<bool> drawn(scene.materials.size(), false);
+    for (const scene::Mesh& mesh : scene.meshes) {
+        if (!mesh.indices.empty() && mesh.material >= 0 && size_t(mesh.material) < drawn.size())
+            drawn[size_t(mesh.material)] = true;
+    }
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        const scene::Material& m = scene.materials[i];
+        if (!drawn[i] || (m.metallic <= 0.0f && m.specular <= 0.0f)) continue;
+        if (m.roughness <= options.max_roughness || m.metallic_roughness_texture.valid())
+            return true;
+    }
+    return false;
 }
 
 ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Accel& accel,
@@ -51,7 +69,7 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
         const trace::ShadingPoint sp = trace::make_shading_point(accel.materials(), si);
         const Vec3 wo = sp.frame.to_local(-glm::normalize(ray.direction));
         if (!(wo.z > 0.0f)) return out;  // seen from below the shading surface: black
-        if (!continues_chain(sp.bsdf.params(), options)) {
+        if (!continues_chain(sp.bsdf, wo, options)) {
             // A VPL of path_length ℓ lights this vertex through depth + 1 + ℓ segments.
             if (!unlimited && options.max_depth - depth - 1 < 0) return out;
             out.receiver = Receiver{sp, wo};
@@ -60,6 +78,7 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
             return out;
         }
         // A glossy vertex: the next one is worth finding only if it may still add light.
+        out.continued = true;
         if (bounce >= options.max_bounces || (!unlimited && depth + 1 > options.max_depth))
             return out;
         const Vec2 u(rng.next_float(), rng.next_float());

@@ -6,8 +6,8 @@
 
 #include <cmath>
 #include <cstdio>
-#include <string>
 #include <optional>
+#include <string>
 
 #include "engine/core/image.h"
 #include "engine/light/light_sampler.h"
@@ -18,6 +18,7 @@
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
 #include "sampler/monte_carlo_sampler.h"
+#include "tests/support/mirror_box.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl::reference {
@@ -115,23 +116,7 @@ TEST(SpecularChain, AMirrorSphereInAColouredBoxMatchesThePathTracer) {
     constexpr int kSize = 20;
     constexpr int kRuns = 4;
     constexpr int kMaxDepth = 3;
-    scene::Scene s;
-    s.materials = {test::diffuse_material(Rgb(0.75f)),
-                   test::diffuse_material(Rgb(0.7f, 0.1f, 0.1f)),
-                   test::diffuse_material(Rgb(0.1f, 0.6f, 0.15f)), mirror(kGold),
-                   test::diffuse_material(Rgb(0.0f))};
-    s.materials[4].emissive = Rgb(8.0f);
-    // The box [-1, 1]³ seen from its open front (+Z), walls facing in.
-    s.meshes.push_back(test::make_quad(Vec3(-1, -1, -1), Vec3(0, 0, 2), Vec3(2, 0, 0), 0));
-    s.meshes.push_back(test::make_quad(Vec3(-1, 1, -1), Vec3(2, 0, 0), Vec3(0, 0, 2), 0));
-    s.meshes.push_back(test::make_quad(Vec3(-1, -1, -1), Vec3(2, 0, 0), Vec3(0, 2, 0), 0));
-    s.meshes.push_back(test::make_quad(Vec3(-1, -1, -1), Vec3(0, 2, 0), Vec3(0, 0, 2), 1));
-    s.meshes.push_back(test::make_quad(Vec3(1, -1, -1), Vec3(0, 0, 2), Vec3(0, 2, 0), 2));
-    s.meshes.push_back(
-        test::make_quad(Vec3(-0.3f, 0.99f, -0.3f), Vec3(0.6f, 0, 0), Vec3(0, 0, 0.6f), 4));
-    s.meshes.push_back(test::make_icosphere(Vec3(0.0f), kSphereRadius, 4, false, 3));
-    s.camera = test::look_at(Vec3(0.0f, 0.0f, 3.0f), Vec3(0.0f), 0.3f);
-    s.has_camera = true;
+    const scene::Scene s = test::make_mirror_box();
     const trace::Accel accel(s);
     const light::LightSampler lights(s);
 
