@@ -50,11 +50,20 @@ Rgb shade_pixel(const Gather& g, int x, int y) {
         const Vec2 film(float(x) + offset.x, float(y) + offset.y);
         const scene::CameraRay cr =
             scene::generate_camera_ray(g.scene.camera, g.options.width, g.options.height, film);
-        const std::optional<light::Receiver> receiver = light::make_receiver(
-            g.scene, g.accel, trace::Ray{cr.origin, cr.direction}, emission ? &emitted : nullptr);
-        if (receiver) {
-            for (size_t k = i; k < end; ++k)
-                sum += DVec3(light::vpl_contribution(g.accel, *receiver, g.vpls[k], g.d_min2));
+        const trace::Ray ray{cr.origin, cr.direction};
+        Rng rng = light::chain_rng(g.options.chain_seed,
+                                   uint64_t(y) * uint64_t(g.options.width) + uint64_t(x), p);
+        const light::ChainedReceiver chained = light::make_chained_receiver(
+            g.scene, g.accel, ray, rng, g.options.chains, emission ? &emitted : nullptr);
+        if (emission) emitted += chained.chain_emitted;
+        if (chained.receiver) {
+            DVec3 part(0.0);
+            for (size_t k = i; k < end; ++k) {
+                if (g.vpls[k].vpl->path_length > chained.max_vpl_length) continue;
+                part +=
+                    DVec3(light::vpl_contribution(g.accel, *chained.receiver, g.vpls[k], g.d_min2));
+            }
+            sum += part * DVec3(chained.throughput);
         }
         i = end;
     }

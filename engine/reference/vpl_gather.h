@@ -15,6 +15,7 @@
 #include "engine/core/subpixel.h"
 
 #include "engine/core/image.h"
+#include "engine/light/specular_chain.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
@@ -36,6 +37,12 @@ struct GatherOptions {
     // then. The default schedule is RenderOptions' (batch 32, jitter on).
     SubpixelSchedule subpixel;
     uint64_t first_vpl = 0;
+    // Camera paths continued through glossy surfaces (light/specular_chain.h), one chain per
+    // pixel and sub-pixel position drawn from light::chain_rng(chain_seed, pixel, position);
+    // max_roughness < 0 (the default): none. The emitted radiance a chain meets counts as seen
+    // directly (averaged over the same positions).
+    light::ChainOptions chains;
+    uint64_t chain_seed = 0;
 };
 
 struct GatherStats {

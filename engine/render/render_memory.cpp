@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "engine/render/g_buffer_pass.h"
+#include "shaders/shared/chain_record.h"
 
 namespace mvpl::render {
 
@@ -39,6 +40,14 @@ MemoryEstimate estimate_memory(const RenderOptions& o) {
     e.largest_image = std::max({g_buffer, cubes, ortho});
     // The accumulation and the emission sum read back as RGBA32F, then the linear RGB image.
     e.host_bytes = pixels * (2 * kRgba32f + 12);
+    if (o.chains.enabled()) {
+        // Specular chains (chain_layer.h), counted whenever asked for (the scene decides whether
+        // they are built): a host-visible ChainRecord per pixel and the host's emission sum.
+        const uint64_t records = pixels * sizeof(shared::ChainRecord);
+        e.device_bytes += records;
+        e.largest_image = std::max(e.largest_image, records);
+        e.host_bytes += pixels * 12;
+    }
     return e;
 }
 

@@ -39,6 +39,7 @@ std::vector<std::string> enabled_names(const ShaderFeatures& f) {
     for (int i = 0; i < kVplTypeCount; ++i)
         if (f.vpl_types[size_t(i)]) out.emplace_back(kVplTypeNames[i]);
     if (f.thin_walls) out.emplace_back("thin_walls");
+    if (f.specular_chains) out.emplace_back("specular_chains");
     return out;
 }
 

@@ -21,6 +21,9 @@ struct ShaderFeatures {
     // A drawn material is double-sided, so the scene may hold zero-thickness walls: the shadow
     // test adds its junction lookup (shaders/render/shading_template.glsl, visibility()).
     bool thin_walls = false;
+    // Glossy pixels are shaded at the end of their specular chains (engine/render/chain_layer.h):
+    // the shading pass reads the chain records (binding 5). Not in all(): it needs the layer.
+    bool specular_chains = false;
 
     bool has(light::VplType t) const { return vpl_types[size_t(t)]; }
     bool has_directional() const { return has(light::VplType::Directional); }

@@ -21,12 +21,14 @@ constexpr uint32_t kGroupSize = 8;
 
 // Binding 3, the shadow cubes, is a storage image: the shader picks face and texel itself
 // (shading_template.glsl, cube_texel). Binding 4 (the directional maps) exists only in programs
-// with directional VPLs.
+// with directional VPLs or specular chains, binding 5 (the chain records) only in the latter.
 gpu::ComputeLayout shading_layout(const ShaderFeatures& features) {
     gpu::ComputeLayout layout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
                                gpu::BindingType::uniform_buffer, gpu::BindingType::storage_image},
                               sizeof(ShadingPush)};
-    if (features.has_directional()) layout.bindings.push_back(gpu::BindingType::sampled_image);
+    if (features.has_directional() || features.specular_chains)
+        layout.bindings.push_back(gpu::BindingType::sampled_image);
+    if (features.specular_chains) layout.bindings.push_back(gpu::BindingType::storage_buffer);
     return layout;
 }
 
@@ -130,7 +132,11 @@ void ShadingPass::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
     push.size[0] = width;
     push.size[1] = height;
     std::vector<gpu::Resource> resources{&g_buffer, &m_accumulation, &m_vpls, shadows};
-    if (m_features.has_directional()) resources.push_back(ortho);
+    if (m_features.has_directional() || m_features.specular_chains) resources.push_back(ortho);
+    if (m_features.specular_chains) {
+        if (!batch.chains) throw gpu::GpuError("shading pass: a chain program without records");
+        resources.push_back(batch.chains);
+    }
     cmd.dispatch(*m_pipeline, resources, gpu::push_bytes(push),
                  (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
 }

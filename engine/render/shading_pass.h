@@ -29,6 +29,8 @@ struct ShadingBatch {
     // From ShadowPass: the cube array and the directional maps; nullptr: unshadowed.
     const gpu::Image* shadows = nullptr;
     const gpu::Image* ortho_shadows = nullptr;
+    // ChainLayer::records(): required by a program with ShaderFeatures::specular_chains.
+    const gpu::Buffer* chains = nullptr;
 };
 
 class ShadingPass {

@@ -10,6 +10,8 @@
 #include "engine/gpu/context.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
+#include "engine/light/specular_chain.h"
+#include "engine/render/chain_layer.h"
 #include "engine/render/emission_sum.h"
 #include "engine/render/g_buffer_pass.h"
 #include "engine/render/render_memory.h"
@@ -95,10 +97,18 @@ SubpixelSchedule subpixel_schedule(const RenderOptions& options) {
 }
 
 struct VplRenderer::Impl {
-    Impl(gpu::Context& c, const scene::Scene& s)
-        : context(&c), camera(s.camera), geometry(c, s), clusters(s), proxy(make_proxy(s)) {}
+    Impl(gpu::Context& c, const scene::Scene& s, const trace::Accel* a)
+        : context(&c),
+          scene(&s),
+          accel(a),
+          camera(s.camera),
+          geometry(c, s),
+          clusters(s),
+          proxy(make_proxy(s)) {}
 
     gpu::Context* context;
+    const scene::Scene* scene;
+    const trace::Accel* accel;  // null: no specular chains
     scene::Camera camera;
     SceneGeometry geometry;
     ShadowClusters clusters;
@@ -108,6 +118,7 @@ struct VplRenderer::Impl {
     std::unique_ptr<EmissionSum> emission;
     std::unique_ptr<ShadowPass> shadow;
     std::unique_ptr<ShadingPass> shading;
+    std::unique_ptr<ChainLayer> chains;  // null unless the options and the scene ask for chains
     RenderOptions built_for = unbuilt();
     // The progressive state: what begin() set up.
     RenderOptions options;
@@ -120,7 +131,16 @@ struct VplRenderer::Impl {
     // Draws the G-buffer at sub-pixel `index` and adds its emission to the sum.
     void record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index) {
         const uint32_t scope = timer.begin(cmd, "g-buffer");
-        g_buffer->record(cmd, view_camera, subpixel_schedule(options).position(index));
+        const Vec2 offset = subpixel_schedule(options).position(index);
+        g_buffer->record(cmd, view_camera, offset);
+        if (chains) {
+            // The GPU is idle: each batch is submitted and waited for (accumulate()).
+            const auto start = std::chrono::steady_clock::now();
+            const uint64_t rays = chains->rays();
+            chains->trace(view_camera, offset, index, options.chains, options.chain_seed);
+            timings.chain_ms += milliseconds_since(start);
+            timings.chain_rays += chains->rays() - rays;
+        }
         cmd.barrier();
         emission->record_add(cmd, g_buffer->image());
         timer.end(cmd, scope);
@@ -164,18 +184,27 @@ struct VplRenderer::Impl {
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();
+        const bool chained = accel && light::scene_may_chain(*scene, o.chains);
+        if (!chained) {
+            chains.reset();
+        } else if (!chains || chains->width() != o.width || chains->height() != o.height) {
+            chains = std::make_unique<ChainLayer>(*context, *scene, *accel, o.width, o.height);
+        }
+        if (shading && shading->features().specular_chains != chained) shading.reset();
         if (!shading) {
-            shading =
-                std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch,
-                                              geometry.features(o.surface_vpls), nullptr, cache);
+            ShaderFeatures features = geometry.features(o.surface_vpls);
+            features.specular_chains = chained;
+            shading = std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch, features,
+                                                    nullptr, cache);
         }
         if (!o.dump_shaders.empty()) dump_scene_shaders(o.dump_shaders, geometry, o.surface_vpls);
         built_for = o;
     }
 };
 
-VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene)
-    : m_impl(std::make_unique<Impl>(context, scene)) {}
+VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
+                         const trace::Accel* accel)
+    : m_impl(std::make_unique<Impl>(context, scene, accel)) {}
 
 VplRenderer::~VplRenderer() = default;
 
@@ -213,6 +242,7 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     gpu::GpuTimer timer(*m.context, 1);
     m.context->submit_and_wait([&](gpu::CommandList& cmd) {
         m.shading->record_clear(cmd);
+        if (m.chains) m.chains->clear_emission();
         m.emission->record_clear(cmd);
         m.record_g_buffer(cmd, timer, 0);
     });
@@ -238,6 +268,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
     // Emitted radiance is summed per G-buffer (EmissionSum) and added by resolve(), unscaled, so
     // the accumulation holds VPLs only.
     batch.add_emission = false;
+    batch.chains = m.chains ? &m.chains->records() : nullptr;
     const uint64_t drawn_before = m.shadow->triangles_drawn();
     for (const Slice& s : slices) {
         const std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
@@ -269,6 +300,7 @@ Image VplRenderer::resolve(double scale) {
     const auto start = std::chrono::steady_clock::now();
     const std::vector<float> rgba = m.shading->accumulation().download_as<float>();
     const std::vector<float> emission = m.emission->image().download_as<float>();
+    const Image* chained = m.chains ? &m.chains->emission_sum() : nullptr;
     Image image(int(m.options.width), int(m.options.height));
     for (size_t i = 0; i < image.pixels().size(); ++i) {
         const float* a = &rgba[4 * i];
@@ -276,9 +308,11 @@ Image VplRenderer::resolve(double scale) {
         // e[3] counts the G-buffers summed (one at least after begin()).
         const double count = std::max(double(e[3]), 1.0);
         // In double, so that a huge 1/N or a tiny one does not round the sum twice.
-        image.pixels()[i] =
-            Rgb(float(scale * a[0] + e[0] / count), float(scale * a[1] + e[1] / count),
-                float(scale * a[2] + e[2] / count));
+        // The emitted radiance met by specular chains, summed per G-buffer as e is.
+        const Rgb c = chained ? chained->pixels()[i] : Rgb(0.0f);
+        image.pixels()[i] = Rgb(float(scale * a[0] + (e[0] + c.r) / count),
+                                float(scale * a[1] + (e[1] + c.g) / count),
+                                float(scale * a[2] + (e[2] + c.b) / count));
     }
     m.add_timing(start, 0.0, 0.0);
     require_finite(image, "VplRenderer::resolve");

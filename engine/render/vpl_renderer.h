@@ -16,6 +16,7 @@
 
 #include "engine/core/image.h"
 #include "engine/core/subpixel.h"
+#include "engine/light/chain_options.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 
@@ -23,6 +24,9 @@ namespace mvpl::gpu {
 class Context;
 class Image;
 }  // namespace mvpl::gpu
+namespace mvpl::trace {
+class Accel;
+}
 
 namespace mvpl::render {
 
@@ -49,6 +53,12 @@ struct RenderOptions {
     // The lattice rotation of the sequence (subpixel.h): subpixel_rotation(seed) for renders
     // whose error is compared across seeds; 0 (the plain sequence) by default.
     Vec2 subpixel_rotation{0.0f};
+    // Specular chains (light/specular_chain.h): glossy pixels shaded at the rough end of their
+    // camera paths, traced on the CPU per sub-pixel position with chain_seed's random numbers,
+    // as the oracle traces them (reference::GatherOptions::chains). Only for a renderer given
+    // the scene's BVH, and a scene with a material they may continue; off by default.
+    light::ChainOptions chains;
+    uint64_t chain_seed = 0;
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
     bool surface_vpls = true;
@@ -72,12 +82,16 @@ struct RenderTimings {
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // triangles drawn into cube faces
     uint32_t g_buffers = 0;         // G-buffers drawn: one per sub-pixel position
+    double chain_ms = 0.0;          // host time tracing specular chains (in wall_ms)
+    uint64_t chain_rays = 0;
 };
 
 class VplRenderer {
 public:
-    // Uploads the scene's geometry once. The context must outlive the renderer.
-    VplRenderer(gpu::Context& context, const scene::Scene& scene);
+    // Uploads the scene's geometry once. The context must outlive the renderer; with `accel`
+    // (the scene's BVH: specular chains), so must the scene and the BVH.
+    VplRenderer(gpu::Context& context, const scene::Scene& scene,
+                const trace::Accel* accel = nullptr);
     ~VplRenderer();
     VplRenderer(const VplRenderer&) = delete;
     VplRenderer& operator=(const VplRenderer&) = delete;

@@ -9,6 +9,9 @@
 // types and light types that occur.
 #include "shared/gpu_vpl.h"
 #include "shared/push_constants.h"
+//@if specular_chains
+#include "shared/chain_record.h"
+//@endif
 //@insert closures
 
 layout(local_size_x = 8, local_size_y = 8) in;
@@ -21,8 +24,12 @@ layout(std140, set = 0, binding = 2) uniform Vpls { GpuVpl vpls[kMaxShadingBatch
 // The shadow cubes, six layers each (shadow_pass.h), read texel by texel (cube_texel()) as a
 // storage image: no sampler is bound where the scene has no textures.
 layout(set = 0, binding = 3, r32f) uniform readonly image2DArray shadow_cubes;
-//@if directional
+//@if directional|specular_chains
 layout(set = 0, binding = 4) uniform sampler2DArray ortho_shadows;
+//@endif
+//@if specular_chains
+// The receivers at the end of glossy pixels' specular chains (engine/render/chain_layer.h).
+layout(std430, set = 0, binding = 5) readonly buffer ChainRecords { ChainRecord chains[]; };
 //@endif
 
 layout(push_constant) uniform ShadingPushBlock { ShadingPush pc; };
@@ -193,22 +200,44 @@ void main() {
     const vec4 specular = imageLoad(g_buffer, ivec3(px, 4));
     const vec4 emission_ior = imageLoad(g_buffer, ivec3(px, 5));
 
-    const vec3 p = position.xyz;
+    vec3 p = position.xyz;
     const uint flags = uint(ns_flags.w);
     // reference::make_shading_point: a back face of a double-sided material shades with the
     // flipped normals; of a one-sided one with the unflipped ones (black from behind).
     const float side = (flags & 1u) == 0u && (flags & 2u) != 0u ? -1.0 : 1.0;
-    const vec3 n = side * ns_flags.xyz;
-    const vec3 ng = side * ng_metallic.xyz;
-    const vec3 wo = normalize(pc.camera_position.xyz - p);
-    const Closure receiver = Closure(flags >> 2u, base_roughness.rgb, ng_metallic.w, specular.rgb,
-                                     specular.w, base_roughness.w, emission_ior.w);
+    vec3 n = side * ns_flags.xyz;
+    vec3 ng = side * ng_metallic.xyz;
+    vec3 wo = normalize(pc.camera_position.xyz - p);
+    Closure receiver = Closure(flags >> 2u, base_roughness.rgb, ng_metallic.w, specular.rgb,
+                               specular.w, base_roughness.w, emission_ior.w);
+    vec3 weight = vec3(1.0);
+    uint max_vpl_length = 0xffffffffu;
+    uint vpl_count = pc.vpl_count;
+//@if specular_chains
+    // A glossy pixel: its chain's rough end receives the VPLs instead (light/specular_chain.h).
+    const ChainRecord chain = chains[uint(px.y) * pc.size.x + uint(px.x)];
+    if (chain.state == kChainBlack) vpl_count = 0u;
+    if (chain.state == kChainReceiver) {
+        p = chain.position;
+        n = chain.shading_normal;
+        ng = chain.geometric_normal;
+        wo = chain.wo;
+        receiver = Closure(chain.closure_type, chain.base_color, chain.metallic,
+                           chain.specular_color, chain.specular, chain.roughness, chain.ior);
+        weight = chain.throughput;
+        max_vpl_length = chain.max_vpl_length;
+    }
+//@endif
 
     const float shadow_res = float(imageSize(shadow_cubes).x);
 
-    vec3 sum = (pc.flags & kAddEmission) != 0u ? emission_ior.rgb : vec3(0.0);
-    for (uint i = 0u; i < pc.vpl_count; ++i) {
+    const vec3 emitted = (pc.flags & kAddEmission) != 0u ? emission_ior.rgb : vec3(0.0);
+    vec3 sum = vec3(0.0);
+    for (uint i = 0u; i < vpl_count; ++i) {
         const GpuVpl v = vpls[i];
+//@if specular_chains
+        if (v.path_length > max_vpl_length) continue;
+//@endif
 //@if directional
         if (v.type == kVplDirectional) {
             const vec3 to_light = -v.normal;
@@ -254,5 +283,5 @@ void main() {
 //@endif
     }
     const vec4 accumulated = imageLoad(accumulation, px);
-    imageStore(accumulation, px, vec4(accumulated.rgb + sum, 1.0));
+    imageStore(accumulation, px, vec4(accumulated.rgb + emitted + weight * sum, 1.0));
 }

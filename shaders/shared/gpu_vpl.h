@@ -38,7 +38,7 @@ struct GpuVpl {
     float roughness;
     float ior;
     uint closure_type;  // engine/material/closure.h, ClosureType
-    float pad3;
+    uint path_length;   // segments from the light (engine/light/vpl.h)
 };
 
 #ifdef __cplusplus

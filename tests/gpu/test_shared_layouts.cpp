@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/gpu/shader_compiler.h"
+#include "shaders/shared/chain_record.h"
 #include "shaders/shared/closure.h"
 #include "shaders/shared/gpu_vpl.h"
 #include "shaders/shared/present_push.h"
@@ -24,6 +25,7 @@ namespace {
 // pass binds it (std140 uniform buffer), the push constants std430 as push constants are.
 const char* const kSource = R"(#version 460
 #extension GL_GOOGLE_include_directive : require
+#include "shared/chain_record.h"
 #include "shared/gpu_vpl.h"
 #include "shared/present_push.h"
 #include "shared/push_constants.h"
@@ -36,9 +38,10 @@ layout(std430, binding = 4) buffer B4 { OrthoPush ortho; };
 layout(std430, binding = 5) buffer B5 { ShadingPush shading; };
 layout(std430, binding = 6) buffer B6 { PresentPush present; };
 layout(std430, binding = 7) buffer B7 { EmissionPush emission; };
+layout(std430, binding = 8) buffer B8 { ChainRecord chain; };
 void main() {
     shading.vpl_count = vpl.type + g_buffer.material + material.size.x + shadow.face.x +
-                        uint(ortho.extents.x) + present.width + emission.layer;
+                        uint(ortho.extents.x) + present.width + emission.layer + chain.state;
 }
 )";
 
@@ -71,7 +74,21 @@ const Member kMembers[] = {
     MVPL_MEMBER(GpuVpl, roughness),
     MVPL_MEMBER(GpuVpl, ior),
     MVPL_MEMBER(GpuVpl, closure_type),
-    MVPL_MEMBER(GpuVpl, pad3),
+    MVPL_MEMBER(GpuVpl, path_length),
+    MVPL_MEMBER(ChainRecord, position),
+    MVPL_MEMBER(ChainRecord, state),
+    MVPL_MEMBER(ChainRecord, shading_normal),
+    MVPL_MEMBER(ChainRecord, max_vpl_length),
+    MVPL_MEMBER(ChainRecord, geometric_normal),
+    MVPL_MEMBER(ChainRecord, metallic),
+    MVPL_MEMBER(ChainRecord, base_color),
+    MVPL_MEMBER(ChainRecord, roughness),
+    MVPL_MEMBER(ChainRecord, specular_color),
+    MVPL_MEMBER(ChainRecord, specular),
+    MVPL_MEMBER(ChainRecord, wo),
+    MVPL_MEMBER(ChainRecord, ior),
+    MVPL_MEMBER(ChainRecord, throughput),
+    MVPL_MEMBER(ChainRecord, closure_type),
     MVPL_MEMBER(GBufferPush, view_proj),
     MVPL_MEMBER(GBufferPush, material_flags),
     MVPL_MEMBER(GBufferPush, material),

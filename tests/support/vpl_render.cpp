@@ -21,7 +21,8 @@ light::VplSet monte_carlo_vpls(const scene::Scene& scene, uint64_t paths, int ma
 
 Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::VplSet& vpls,
                  const VplRenderSettings& settings) {
-    render::VplRenderer renderer(context, scene);
+    const trace::Accel accel(scene);
+    render::VplRenderer renderer(context, scene, &accel);
     render::RenderOptions o;
     o.width = o.height = uint32_t(settings.res);
     o.shadow_resolution = uint32_t(settings.shadow_res);
@@ -29,6 +30,9 @@ Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::
     o.clamp = settings.clamp;
     o.shadows = settings.shadows;
     o.jitter = settings.jitter;
+    o.chains.max_roughness = settings.chain_roughness;
+    o.chains.max_depth = settings.chain_max_depth;
+    o.chain_seed = settings.chain_seed;
     return renderer.render(vpls, o);
 }
 
@@ -39,6 +43,9 @@ Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
     o.width = o.height = settings.res;
     o.clamp = settings.clamp;
     o.subpixel = {settings.jitter, uint64_t(settings.batch)};
+    o.chains.max_roughness = settings.chain_roughness;
+    o.chains.max_depth = settings.chain_max_depth;
+    o.chain_seed = settings.chain_seed;
     return reference::gather_vpls(scene, accel, vpls, o);
 }
 

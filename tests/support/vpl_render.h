@@ -25,6 +25,10 @@ struct VplRenderSettings {
     bool shadows = true;
     int batch = 32;
     bool jitter = true;  // a sub-pixel position per batch, the same in both renderers
+    // Specular chains (light/specular_chain.h), the same in both renderers; roughness < 0: off.
+    float chain_roughness = -1.0f;
+    int chain_max_depth = -1;
+    uint64_t chain_seed = 0;
 };
 
 // The GPU renderer's image of `vpls` seen by the scene camera.

@@ -150,6 +150,7 @@ int run_convergence(const Args& args) {
     settings.clamp = renderer_args.clamp;
     render::RenderOptions render_options;
     renderer_args.apply(render_options);
+    render_options.chains.max_depth = run.max_depth;
     run.quiet = quiet;
     run.compensate = compensation_args.enabled();
     run.compensation_passes = uint32_t(compensation_args.spp);
@@ -164,7 +165,8 @@ int run_convergence(const Args& args) {
         } else {
             if (!renderer) {
                 context = std::make_unique<gpu::Context>(gpu::ContextOptions{});
-                renderer = std::make_unique<render::VplRenderer>(*context, session.scene());
+                renderer = std::make_unique<render::VplRenderer>(*context, session.scene(),
+                                                                 &session.accel());
             }
             points = run_vpl_sampler(run, method, settings, *renderer, render_options);
         }

@@ -85,6 +85,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     o.width = uint32_t(run.reference->width());
     o.height = uint32_t(run.reference->height());
     o.subpixel_rotation = subpixel_rotation(run.seed);
+    o.chain_seed = run.seed;
     renderer.begin(s.camera(), o);
     std::unique_ptr<CompensationThread> compensation;
     if (run.compensate) {

@@ -45,6 +45,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_culling = !no_shadow_culling;
     o.shadow_proxy = !no_shadow_proxy;
     o.jitter = !no_jitter;
+    o.chains.max_roughness = no_chains ? -1.0f : chain_roughness;
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -60,12 +61,19 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                     "simplified proxy of meshes of 4096+ triangles)");
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
+    parser.add_float("--chain-roughness", &args.chain_roughness,
+                     "continue camera paths through surfaces this glossy or glossier (perceptual "
+                     "roughness) to the first rougher one, which the VPLs light");
+    parser.add_flag("--no-chains", &args.no_chains,
+                    "light glossy surfaces with the VPLs directly (no specular chains)");
     // The renderer's limits: 4096² faces × 6 × a batch must still fit in memory.
     parser.add_check([&parser, &args] {
         if (args.shadow_res < 4 || args.shadow_res > 4096)
             out_of_range(parser, "--shadow-res", "4..4096");
         if (args.batch < 1 || args.batch > 256) out_of_range(parser, "--batch", "1..256");
         if (!(args.clamp >= 0.0f && args.clamp <= 1.0f)) out_of_range(parser, "--clamp", "[0, 1]");
+        if (!(args.chain_roughness >= 0.0f && args.chain_roughness <= 1.0f))
+            out_of_range(parser, "--chain-roughness", "[0, 1]");
     });
 }
 

@@ -24,8 +24,10 @@ struct RendererArgs {
     bool no_jitter = !render::RenderOptions{}.jitter;
     bool no_shadow_culling = false;
     bool no_shadow_proxy = false;
+    float chain_roughness = light::kDefaultChainRoughness;
+    bool no_chains = false;
 
-    // Copies them into `o`.
+    // Copies them into `o` (the chains' max depth is the command's to set).
     void apply(render::RenderOptions& o) const;
 };
 void add_renderer_options(ArgParser& parser, RendererArgs& args);

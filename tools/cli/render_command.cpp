@@ -117,6 +117,8 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     ro.shader_cache = !a.no_shader_cache;
     ro.surface_vpls = max_depth < 0 || max_depth >= 3;  // surface VPLs light depth ≥ 3
     ro.subpixel_rotation = subpixel_rotation(s.seed);   // the seed varies the positions too
+    ro.chains.max_depth = max_depth;
+    ro.chain_seed = s.seed;
     reference::GatherOptions& g = job.gather;
     g.width = a.width;
     g.height = a.height;
@@ -124,6 +126,8 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     g.max_depth = max_depth;
     g.quiet = a.quiet;
     g.subpixel = render::subpixel_schedule(ro);  // the GPU's sub-pixel positions
+    g.chains = ro.chains;                        // and its specular chains
+    g.chain_seed = ro.chain_seed;
     job.compensate = a.compensation.enabled();
     job.compensation_passes = uint32_t(a.compensation.spp);
     reference::CompensationOptions& c = job.compensation;
@@ -163,7 +167,8 @@ int run_render(const Args& args) {
         gpu::ContextOptions co;
         co.device_index = a.device;
         context = std::make_unique<gpu::Context>(co);
-        renderer = std::make_unique<render::VplRenderer>(*context, session.scene());
+        renderer =
+            std::make_unique<render::VplRenderer>(*context, session.scene(), &session.accel());
         job.renderer = renderer.get();
     }
 
