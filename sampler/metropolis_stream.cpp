@@ -247,8 +247,7 @@ void MetropolisStream::next(uint64_t work, std::vector<light::Vpl>& out) {
                 if (!m_chains[size_t(c)]) continue;  // another rank's
                 const uint64_t steps =
                     count_below(end, uint64_t(c)) - count_below(begin, uint64_t(c));
-                run_chain(*m_chains[size_t(c)], steps, per_chain[size_t(c)],
-                          per_stats[size_t(c)]);
+                run_chain(*m_chains[size_t(c)], steps, per_chain[size_t(c)], per_stats[size_t(c)]);
             }
         });
     };

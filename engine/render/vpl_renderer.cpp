@@ -127,8 +127,8 @@ struct VplRenderer::Impl {
     scene::Camera view_camera;
     RenderTimings timings;
     bool begun = false;
-    uint64_t shaded = 0;    // VPLs accumulated since begin()
-    uint64_t position = 0;  // the sub-pixel position of the G-buffer drawn last
+    uint64_t shaded = 0;      // VPLs accumulated since begin()
+    uint64_t position = 0;    // the sub-pixel position of the G-buffer drawn last
     std::vector<bool> drawn;  // the positions whose G-buffer (and emission) was drawn
 
     // Draws the G-buffer at sub-pixel `index` and adds its emission to the sum.

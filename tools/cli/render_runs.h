@@ -38,9 +38,9 @@ struct RenderJob {
 
 // What a render produced, for the summary line.
 struct RenderOutcome {
-    Image image;  // empty on ranks other than 0
+    Image image;         // empty on ranks other than 0
     uint64_t units = 0;  // light paths (mc) or chain steps (metropolis)
-    size_t vpls = 0;  // by every rank
+    size_t vpls = 0;     // by every rank
     double sampling_seconds = 0.0;
     double shading_seconds = 0.0;
     std::string statistics;         // the sampler's, may be empty
