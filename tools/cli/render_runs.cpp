@@ -182,11 +182,18 @@ private:
                     c *= float(passes[0]);
             }
         });
+        // Met first, so that the time is the reduction's, not the wait for the slowest rank.
+        std::vector<double> met(1, 0.0);
+        m_ranks.sum_all(met);
+        Timer reduce;
         m_ranks.sum_to_root(floats(sum));
+        m_result.reduce_bytes = floats(sum).size_bytes();
         if (m_compensation) {
             m_ranks.sum_to_root(floats(compensation));
             m_ranks.sum_all(passes);
+            m_result.reduce_bytes += floats(compensation).size_bytes();
         }
+        m_result.reduce_seconds = reduce.seconds();
         cluster::together(m_ranks, [&] {
             if (!m_ranks.root()) return;
             m_result.image = m_job.renderer->resolve(m_stream->scale(), sum, m_result.vpls);
@@ -276,6 +283,12 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
     }
     if (r.compensation_passes > 0)
         pass_times += "; compensation " + std::to_string(r.compensation_passes) + " spp";
+    if (job.cluster) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "; %d ranks, images summed in %.1f ms (%.1f MB a rank)",
+                      job.cluster->size(), 1e3 * r.reduce_seconds, double(r.reduce_bytes) / 1e6);
+        pass_times += buf;
+    }
     char line[512];
     std::snprintf(line, sizeof line,
                   "render: %zu VPLs from %llu %s, %dx%d: sampling %.2f s, shading %.2f s (%s), "

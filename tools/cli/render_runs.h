@@ -46,6 +46,9 @@ struct RenderOutcome {
     std::string statistics;         // the sampler's, may be empty
     render::RenderTimings timings;  // GPU only
     uint32_t compensation_passes = 0;
+    // Over ranks: the seconds of summing the images to rank 0 and the bytes each rank sent.
+    double reduce_seconds = 0.0;
+    uint64_t reduce_bytes = 0;
 };
 
 // `units` light paths or chain steps, sampled at once, then shaded.
