@@ -86,6 +86,15 @@ int main(int argc, char** argv) {
     // MPI_Init when started by mpirun (and MPI_Finalize on return); nothing otherwise.
     const cluster::World world(&argc, &argv);
     cluster::Cluster& ranks = cluster::world();
+    const char* launched = std::getenv("OMPI_COMM_WORLD_SIZE");
+    if (!cluster::mpi_built() && launched && std::atoi(launched) > 1) {
+        // Each rank would render the whole image alone and write the same files.
+        std::fputs(
+            "mvpl: error: this mvpl was built without MPI (-DMVPL_MPI=OFF): run it without "
+            "mpirun, or build it with libopenmpi-dev installed\n",
+            stderr);
+        return 2;
+    }
     silence_other_ranks(ranks);
     const std::string command = argv[1];
     const cli::Args args(argv + 2, argv + argc);

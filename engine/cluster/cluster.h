@@ -8,7 +8,11 @@
 // So every collective call is preceded by an agreement point (agree(), or together() below) at
 // which each rank says whether it failed; if any did, every rank throws the same RankFailure
 // (the message and exit code of the lowest failing rank), so all exit alike and rank 0 alone
-// prints the line. On one process agree() simply rethrows the error.
+// prints the line. On one process agree() simply rethrows the error. The agreement points are
+// all the same collective call, so a rank that fails skips to the next one it meets and the others
+// meet it there, whatever the code between; what may not throw is the code between an agreement
+// point and the collective call it guards. A RankFailure (agreed already) passes every later
+// agreement point without a collective call, as it passes on every rank.
 #include <cstdint>
 #include <exception>
 #include <memory>

@@ -59,6 +59,16 @@ public:
         return all;
     }
     void agree(std::exception_ptr error) override {
+        // A failure agreed on already (an inner agreement point) passes through: every rank
+        // throws it, at whichever point it was, and none waits here for the others.
+        if (error) {
+            try {
+                std::rethrow_exception(error);
+            } catch (const RankFailure&) {
+                throw;
+            } catch (...) {
+            }
+        }
         // The lowest failing rank speaks for all: its exit code and message go to every rank.
         int failed = error ? m_rank : m_size;
         MPI_Allreduce(MPI_IN_PLACE, &failed, 1, MPI_INT, MPI_MIN, MPI_COMM_WORLD);
