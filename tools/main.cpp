@@ -45,13 +45,13 @@ void silence_other_ranks(const mvpl::cluster::Cluster& ranks) {
 
 int run(const std::string& command, const mvpl::cli::Args& args) {
     using namespace mvpl;
-    if (cluster::world().size() > 1 && command != "render") {
+    if (cluster::world().size() > 1 && command != "render" && command != "bench") {
         // Every rank refuses alike, so no rank waits for another: no MPI_Abort needed.
-        throw cluster::RankFailure(
-            "under mpirun only `mvpl render` shares its work over ranks; "
-            "run '" +
-                command + "' as one process",
-            2, 0);
+        const std::string what =
+            "under mpirun only `mvpl render` and `mvpl bench` share their "
+            "work over ranks; run '" +
+            command + "' as one process";
+        throw cluster::RankFailure(what, 2, 0);
     }
     if (command == "reference") return cli::run_reference(args);
     if (command == "render") return cli::run_render(args);

@@ -1,6 +1,7 @@
-// `mvpl render` under `mpirun -np 2` (issue 17, engine/cluster): the ranks' image equals the
-// one-process image with the same seed, a time budget ends every rank, and a rank that fails makes
-// every rank exit with the same code and one error line.
+// `mvpl render` and `mvpl bench` under `mpirun -np 2` (issue 17, engine/cluster): the ranks' image
+// equals the one-process image with the same seed, a time budget ends every rank, the bench counts
+// the job's VPLs, and a rank that fails makes every rank exit with the same code and one error
+// line.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -129,6 +130,38 @@ TEST_F(MpiRender, TimeBudgetEndsEveryRank) {
     const size_t summary = r.out.find("VPL/s");
     EXPECT_NE(summary, std::string::npos) << r.out;
     EXPECT_EQ(summary, r.out.rfind("VPL/s")) << r.out;
+}
+
+// The JSON's value of `key` (a number), or "" when it is missing.
+std::string json_number(const std::string& json, const std::string& key) {
+    const size_t at = json.find("\"" + key + "\": ");
+    if (at == std::string::npos) return "";
+    const size_t from = at + key.size() + 4;
+    return json.substr(from, json.find_first_of(",\n}", from) - from);
+}
+
+TEST_F(MpiRender, BenchSharesTheLightPaths) {
+    // The job's VPLs are the one-process bench's (the same paths, traced half by each rank), and
+    // rank 0 alone prints the table.
+    const std::string args = " bench '" + kScene + "' --res 32x32 --vpls 128 --repeat 1 --json ";
+    const Outcome one = run(kMvpl + args + "one.json");
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    const Outcome two = run(kTwoRanks + args + "two.json");
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    const std::string a = slurp(path("one.json")), b = slurp(path("two.json"));
+    EXPECT_EQ(json_number(a, "ranks"), "1") << a;
+    EXPECT_EQ(json_number(b, "ranks"), "2") << b;
+    EXPECT_NE(json_number(a, "vpls"), "");
+    EXPECT_EQ(json_number(b, "vpls"), json_number(a, "vpls"));
+    EXPECT_EQ(two.out.find("bench: "), two.out.rfind("bench: ")) << two.out;
+    EXPECT_NE(two.out.find("2 MPI ranks"), std::string::npos) << two.out;
+}
+
+TEST_F(MpiRender, OtherCommandsAreRefusedAlike) {
+    const Outcome r = run(kTwoRanks + " vpls '" + kScene + "' -o v.png");
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    EXPECT_NE(r.err.find("mvpl: error: under mpirun only"), std::string::npos) << r.err;
+    EXPECT_EQ(r.err.find("mvpl: "), r.err.rfind("mvpl: ")) << r.err;
 }
 
 // `mpirun -np 1 A : -np 1 B` starts rank 0 with A and rank 1 with B: one of them names a scene

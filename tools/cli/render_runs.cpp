@@ -186,12 +186,12 @@ private:
         std::vector<double> met(1, 0.0);
         m_ranks.sum_all(met);
         Timer reduce;
-        m_ranks.sum_to_root(floats(sum));
-        m_result.reduce_bytes = floats(sum).size_bytes();
+        m_ranks.sum_to_root(sum.channels());
+        m_result.reduce_bytes = sum.channels().size_bytes();
         if (m_compensation) {
-            m_ranks.sum_to_root(floats(compensation));
+            m_ranks.sum_to_root(compensation.channels());
             m_ranks.sum_all(passes);
-            m_result.reduce_bytes += floats(compensation).size_bytes();
+            m_result.reduce_bytes += compensation.channels().size_bytes();
         }
         m_result.reduce_seconds = reduce.seconds();
         cluster::together(m_ranks, [&] {
@@ -203,10 +203,6 @@ private:
         });
         m_result.compensation_passes = uint32_t(passes[0]);
         m_result.shading_seconds += shading.seconds();
-    }
-
-    static std::span<float> floats(Image& image) {
-        return {reinterpret_cast<float*>(image.pixels().data()), 3 * image.pixels().size()};
     }
 
     const RenderJob& m_job;
