@@ -67,31 +67,52 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     // reads at iteration 0, so a chain can restart from it exactly.
     // The luminance each path adds to each point is kept, so that the relative target's point
     // weights (from the bootstrap's radiance per point) apply without tracing twice.
+    // Over ranks, this rank's share [first, first + m) of the paths (all of them on one process).
+    cluster::Cluster& ranks = m_options.cluster ? *m_options.cluster : cluster::single_process();
+    const cluster::Share share = cluster::share_of(n, ranks.rank(), ranks.size());
+    const uint64_t first = share.first, m = share.last - share.first;
     const size_t k = m_importance.point_count();
-    std::vector<float> per_point(size_t(n) * k, 0.0f);
-    std::vector<uint8_t> has_vpl(n, 0);
-    if (!lights.empty() && k > 0) {
-        parallel_for(int64_t(n), 16, [&](int64_t i0, int64_t i1) {
-            std::vector<light::Vpl> path;
-            for (int64_t i = i0; i < i1; ++i) {
-                PrimarySampleVector u(bootstrap_seed(m_options.seed), uint64_t(i), m_options.sigma);
-                trace_state(u, path);
-                has_vpl[size_t(i)] = !path.empty();
-                m_importance.evaluate_points(path,
-                                             std::span<float>(per_point.data() + size_t(i) * k, k));
-            }
-        });
-    }
+    std::vector<float> per_point;
     std::vector<double> radiance(k, 0.0);
-    for (uint64_t i = 0; i < n; ++i) {
-        for (size_t p = 0; p < k; ++p)
-            radiance[p] += double(per_point[size_t(i) * k + p]) / double(n);
-    }
-    m_importance.set_point_radiance(radiance);
-    std::vector<double> importance(n, 0.0);
-    for (uint64_t i = 0; i < n; ++i) {
-        importance[i] =
-            m_importance.evaluate(std::span<const float>(per_point.data() + size_t(i) * k, k));
+    std::vector<double> mine(2 * m, 0.0);  // I and [has a VPL] of this rank's paths
+    cluster::together(ranks, [&] {
+        per_point.assign(size_t(m) * k, 0.0f);
+        if (!lights.empty() && k > 0) {
+            parallel_for(int64_t(m), 16, [&](int64_t i0, int64_t i1) {
+                std::vector<light::Vpl> path;
+                for (int64_t i = i0; i < i1; ++i) {
+                    PrimarySampleVector u(bootstrap_seed(m_options.seed), first + uint64_t(i),
+                                          m_options.sigma);
+                    trace_state(u, path);
+                    mine[size_t(m + uint64_t(i))] = path.empty() ? 0.0 : 1.0;
+                    m_importance.evaluate_points(
+                        path, std::span<float>(per_point.data() + size_t(i) * k, k));
+                }
+            });
+        }
+        for (uint64_t i = 0; i < m; ++i) {
+            for (size_t p = 0; p < k; ++p)
+                radiance[p] += double(per_point[size_t(i) * k + p]) / double(n);
+        }
+    });
+    ranks.sum_all(radiance);
+    cluster::together(ranks, [&] {
+        m_importance.set_point_radiance(radiance);
+        for (uint64_t i = 0; i < m; ++i) {
+            mine[i] =
+                m_importance.evaluate(std::span<const float>(per_point.data() + size_t(i) * k, k));
+        }
+        per_point = {};
+    });
+    // Every rank's I, then every rank's [has a VPL]: the whole bootstrap on every rank.
+    std::vector<double> importance, has_vpl;
+    {
+        const std::vector<double> all =
+            ranks.gather_all(std::span<const double>(mine.data(), size_t(m)));
+        importance.assign(all.begin(), all.end());
+        const std::vector<double> flags =
+            ranks.gather_all(std::span<const double>(mine.data() + m, size_t(m)));
+        has_vpl.assign(flags.begin(), flags.end());
     }
     double sum = 0.0;
     uint64_t lit = 0;
@@ -110,14 +131,16 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     std::vector<double> cdf(n + 1, 0.0);
     for (uint64_t i = 0; i < n; ++i) {
         const double t = defensive_target(importance[i], m_stats.mean_importance,
-                                          m_options.defensive, has_vpl[i] != 0);
+                                          m_options.defensive, has_vpl[i] != 0.0);
         cdf[i + 1] = cdf[i] + t;
     }
     m_stats.target_sum = cdf[n];
     m_stats.target_count = n;
     m_stats.b = cdf[n] / double(n);
 
+    m_chains.resize(size_t(m_options.chains));
     for (int c = 0; c < m_options.chains; ++c) {
+        if (c % ranks.size() != ranks.rank()) continue;  // another rank's chain
         Rng pick(chain_start_seed(m_options.seed), uint64_t(c));
         const double x = double(pick.next_float()) * cdf[n];
         // The first path whose interval [cdf[i], cdf[i+1]) holds x (empty intervals never do).
@@ -131,7 +154,7 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
         chain->current_target = target(chain->current);
         chain->u.reseed(chain_value_seed(m_options.seed), uint64_t(c));
         chain->rng.seed(chain_step_seed(m_options.seed), uint64_t(c));
-        m_chains.push_back(std::move(chain));
+        m_chains[size_t(c)] = std::move(chain);
     }
     m_stats.bootstrap_seconds = timer.seconds();
 }
@@ -201,6 +224,7 @@ void MetropolisStream::run_chain(Chain& chain, uint64_t steps, std::vector<light
 }
 
 void MetropolisStream::next(uint64_t work, std::vector<light::Vpl>& out) {
+    m_index.clear();
     if (work == 0) return;
     const uint64_t begin = m_stats.steps;
     const uint64_t end = begin + work;
@@ -208,6 +232,8 @@ void MetropolisStream::next(uint64_t work, std::vector<light::Vpl>& out) {
         m_stats.steps = end;
         return;
     }
+    cluster::Cluster* ranks = m_options.cluster;
+    const bool shared = ranks && ranks->size() > 1;
     const uint64_t chains = m_chains.size();
     // Step t of the run belongs to chain t mod C: chain c's steps in [begin, end).
     auto count_below = [chains](uint64_t t, uint64_t c) {
@@ -215,22 +241,56 @@ void MetropolisStream::next(uint64_t work, std::vector<light::Vpl>& out) {
     };
     std::vector<std::vector<light::Vpl>> per_chain(chains);
     std::vector<MetropolisStats> per_stats(chains);
-    parallel_for(int64_t(chains), 1, [&](int64_t c0, int64_t c1) {
-        for (int64_t c = c0; c < c1; ++c) {
-            const uint64_t steps = count_below(end, uint64_t(c)) - count_below(begin, uint64_t(c));
-            run_chain(*m_chains[size_t(c)], steps, per_chain[size_t(c)], per_stats[size_t(c)]);
-        }
-    });
-    for (uint64_t c = 0; c < chains; ++c) {
-        out.insert(out.end(), per_chain[c].begin(), per_chain[c].end());
-        m_stats.steps += per_stats[c].steps;
-        m_stats.accepted += per_stats[c].accepted;
-        m_stats.large_steps += per_stats[c].large_steps;
-        m_stats.recorded += per_stats[c].recorded;
-        m_stats.emitted += per_stats[c].emitted;
-        m_stats.target_sum += per_stats[c].target_sum;
-        m_stats.target_count += per_stats[c].target_count;
+    auto run = [&] {
+        parallel_for(int64_t(chains), 1, [&](int64_t c0, int64_t c1) {
+            for (int64_t c = c0; c < c1; ++c) {
+                if (!m_chains[size_t(c)]) continue;  // another rank's
+                const uint64_t steps =
+                    count_below(end, uint64_t(c)) - count_below(begin, uint64_t(c));
+                run_chain(*m_chains[size_t(c)], steps, per_chain[size_t(c)], per_stats[size_t(c)]);
+            }
+        });
+    };
+    std::vector<uint64_t> counts(chains + 5, 0);  // VPLs per chain, then the statistics
+    if (!shared) {
+        run();
+    } else {
+        cluster::together(*ranks, run);
     }
+    double target_sum = 0.0;  // the large steps' I', summed in chain order as on one process
+    for (uint64_t c = 0; c < chains; ++c) {
+        counts[c] = per_chain[c].size();
+        counts[chains + 0] += per_stats[c].accepted;
+        counts[chains + 1] += per_stats[c].large_steps;
+        counts[chains + 2] += per_stats[c].recorded;
+        counts[chains + 3] += per_stats[c].emitted;
+        counts[chains + 4] += per_stats[c].target_count;
+        if (shared) {
+            target_sum += per_stats[c].target_sum;
+        } else {
+            m_stats.target_sum += per_stats[c].target_sum;
+        }
+    }
+    if (shared) {
+        ranks->sum_all(counts);
+        ranks->sum_all(std::span<double>(&target_sum, 1));
+    }
+    for (uint64_t c = 0, index = m_vpls; c < chains; ++c) {
+        if (shared && m_chains[c]) {
+            for (size_t i = 0; i < per_chain[c].size(); ++i)
+                m_index.push_back(index + i);
+        }
+        index += counts[c];
+        out.insert(out.end(), per_chain[c].begin(), per_chain[c].end());
+        m_vpls += counts[c];
+    }
+    m_stats.steps = end;
+    m_stats.accepted += counts[chains + 0];
+    m_stats.large_steps += counts[chains + 1];
+    m_stats.recorded += counts[chains + 2];
+    m_stats.emitted += counts[chains + 3];
+    m_stats.target_count += counts[chains + 4];
+    m_stats.target_sum += target_sum;
     m_stats.b = m_stats.target_sum / double(std::max<uint64_t>(m_stats.target_count, 1));
 }
 

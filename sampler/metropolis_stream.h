@@ -20,6 +20,12 @@
 // The output depends on the seed, the options and the sequence of next() sizes, never on the
 // thread count: step t of the run belongs to chain t mod C, and chains append in chain order.
 //
+// Over a cluster's ranks (options.cluster): rank r of R traces its contiguous share of the
+// bootstrap, the per-point radiance is summed over the ranks and the paths' targets gathered, so
+// that every rank holds the one-process b and start distribution; the rank runs chains c with
+// c mod R = r from them, and the large steps' sums behind b are combined after each next(). The
+// ranks' VPLs together are then one process's (same seed, same next() sizes).
+//
 // If the bootstrap finds I = 0 for every path (no light reaches what the camera sees),
 // no_visible_light() is true and next() counts work but appends nothing: a black image.
 #include <cstdint>
@@ -27,6 +33,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/cluster/cluster.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
@@ -65,6 +72,8 @@ struct MetropolisOptions {
     VplsPerPath per_path = VplsPerPath::One;
     LightTracerOptions tracer;
     ImportanceOptions importance;
+    // The ranks that share the chains (null: this process alone).
+    cluster::Cluster* cluster = nullptr;
 };
 
 struct MetropolisStats {
@@ -94,6 +103,9 @@ public:
     uint64_t work_done() const override { return m_stats.steps; }
     std::string statistics() const override;
 
+    std::span<const uint64_t> last_index() const override { return m_index; }
+    uint64_t vpls_total() const override { return m_vpls; }
+
     bool no_visible_light() const { return m_no_visible_light; }
     const MetropolisStats& stats() const { return m_stats; }
     double acceptance() const;
@@ -109,9 +121,12 @@ private:
     MetropolisOptions m_options;
     LightTracer m_tracer;
     Importance m_importance;
+    // Chain c, or null where another rank runs it.
     std::vector<std::unique_ptr<Chain>> m_chains;
     MetropolisStats m_stats;
     bool m_no_visible_light = false;
+    uint64_t m_vpls = 0;  // appended by every rank
+    std::vector<uint64_t> m_index;
 };
 
 }  // namespace mvpl::sampler

@@ -13,6 +13,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/cluster/cluster.h"
 #include "engine/core/progress.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/vpl.h"
@@ -32,6 +33,8 @@ struct MonteCarloOptions {
     VplsPerPath per_path = VplsPerPath::All;
     LightTracerOptions tracer;
     bool quiet = true;
+    // MonteCarloStream only: the ranks that share the paths (null: this process alone).
+    cluster::Cluster* cluster = nullptr;
 };
 
 struct SamplerStats {

@@ -20,12 +20,16 @@ public:
     double scale() const override { return m_paths > 0 ? 1.0 / double(m_paths) : 0.0; }
     uint64_t work_done() const override { return m_paths; }
     std::string statistics() const override { return {}; }
+    std::span<const uint64_t> last_index() const override { return m_index; }
+    uint64_t vpls_total() const override { return m_vpls; }
 
 private:
     MonteCarloOptions m_options;
     LightTracer m_tracer;
     bool m_no_lights;
     uint64_t m_paths = 0;
+    uint64_t m_vpls = 0;
+    std::vector<uint64_t> m_index;
 };
 
 }  // namespace mvpl::sampler

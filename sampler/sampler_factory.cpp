@@ -25,6 +25,7 @@ MetropolisOptions metropolis_options(const SamplerSettings& s) {
     o.importance.height = s.height;
     o.importance.clamp = s.clamp;
     o.importance.seed = s.seed;
+    o.cluster = s.cluster;
     return o;
 }
 
@@ -39,6 +40,7 @@ std::unique_ptr<VplStream> make_vpl_stream(const std::string& name, const scene:
         o.qmc = settings.qmc;
         o.per_path = settings.per_path;
         o.tracer = settings.tracer;
+        o.cluster = settings.cluster;
         return std::make_unique<MonteCarloStream>(scene, accel, lights, o);
     }
     if (name == "metropolis") {

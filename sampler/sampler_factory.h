@@ -32,6 +32,8 @@ struct SamplerSettings {
     uint64_t bootstrap = MetropolisOptions{}.bootstrap;
     double defensive = MetropolisOptions{}.defensive;
     VplsPerPath metropolis_per_path = MetropolisOptions{}.per_path;
+    // The ranks that share the stream (null: this process alone).
+    cluster::Cluster* cluster = nullptr;
 };
 
 const std::vector<std::string>& sampler_names();

@@ -21,6 +21,8 @@ packages=(
   libmeshoptimizer-dev
   # interactive preview, and its tests under a virtual X server
   libglfw3-dev libimgui-dev xvfb xauth
+  # rendering across ranks under mpirun (engine/cluster; optional: -DMVPL_MPI=OFF builds without)
+  libopenmpi-dev openmpi-bin
   # convergence plots (tools/plot_convergence.py)
   python3-matplotlib
   # the loaders' fuzz target (tests/fuzz): clang with libFuzzer and its sanitizer runtimes

@@ -1,10 +1,12 @@
 // mvpl: the command line. The only place that wires the whole program together.
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 #include <string>
 
+#include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
 #include "tools/cli/commands.h"
 
@@ -33,6 +35,43 @@ std::string one_line(std::string text) {
     return text;
 }
 
+// Under mpirun, ranks other than 0 print nothing: rank 0 prints progress, results and the one
+// error line for all (engine/cluster). MVPL_RANK_OUTPUT=1 keeps every rank's output (debugging).
+void silence_other_ranks(const mvpl::cluster::Cluster& ranks) {
+    if (ranks.root() || std::getenv("MVPL_RANK_OUTPUT")) return;
+    if (!std::freopen("/dev/null", "w", stdout) || !std::freopen("/dev/null", "w", stderr))
+        return;  // then they print, which is untidy but harmless
+}
+
+int run(const std::string& command, const mvpl::cli::Args& args) {
+    using namespace mvpl;
+    if (cluster::world().size() > 1 && command != "render" && command != "bench") {
+        // Every rank refuses alike, so no rank waits for another: no MPI_Abort needed.
+        const std::string what =
+            "under mpirun only `mvpl render` and `mvpl bench` share their "
+            "work over ranks; run '" +
+            command + "' as one process";
+        throw cluster::RankFailure(what, 2, 0);
+    }
+    if (command == "reference") return cli::run_reference(args);
+    if (command == "render") return cli::run_render(args);
+    if (command == "compare") return cli::run_compare(args);
+    if (command == "info") return cli::run_info(args);
+    if (command == "preview") return cli::run_preview(args);
+    if (command == "vpls") return cli::run_vpls(args);
+    if (command == "bench") return cli::run_bench(args);
+    if (command == "convergence") return cli::run_convergence(args);
+    if (command == "--help" || command == "-h" || command == "help") {
+        std::fputs(kUsage, stdout);
+        return 0;
+    }
+    if (command == "--version") {
+        std::puts("mvpl 0.1.0");
+        return 0;
+    }
+    throw UsageError("unknown command '" + command + "' (see mvpl --help)");
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -44,34 +83,40 @@ int main(int argc, char** argv) {
     // Past a file-size limit (ulimit -f) a write should fail and be reported, and the image's
     // temporary removed (atomic_files.h), rather than the process be killed with a partial file.
     std::signal(SIGXFSZ, SIG_IGN);
+    // MPI_Init when started by mpirun (and MPI_Finalize on return); nothing otherwise.
+    const cluster::World world(&argc, &argv);
+    cluster::Cluster& ranks = cluster::world();
+    const char* launched = std::getenv("OMPI_COMM_WORLD_SIZE");
+    if (!cluster::mpi_built() && launched && std::atoi(launched) > 1) {
+        // Each rank would render the whole image alone and write the same files.
+        std::fputs(
+            "mvpl: error: this mvpl was built without MPI (-DMVPL_MPI=OFF): run it without "
+            "mpirun, or build it with libopenmpi-dev installed\n",
+            stderr);
+        return 2;
+    }
+    silence_other_ranks(ranks);
     const std::string command = argv[1];
     const cli::Args args(argv + 2, argv + argc);
     try {
-        if (command == "reference") return cli::run_reference(args);
-        if (command == "render") return cli::run_render(args);
-        if (command == "compare") return cli::run_compare(args);
-        if (command == "info") return cli::run_info(args);
-        if (command == "preview") return cli::run_preview(args);
-        if (command == "vpls") return cli::run_vpls(args);
-        if (command == "bench") return cli::run_bench(args);
-        if (command == "convergence") return cli::run_convergence(args);
-        if (command == "--help" || command == "-h" || command == "help") {
-            std::fputs(kUsage, stdout);
-            return 0;
+        return run(command, args);
+    } catch (const cluster::RankFailure& e) {
+        // Every rank has it (an agreement point); the lowest failing rank's message.
+        std::fprintf(stderr, "mvpl: %s: %s\n", e.code() == 2 ? "error" : "internal error",
+                     one_line(e.what()).c_str());
+        return e.code();
+    } catch (...) {
+        // Past the agreement points (a usage error every rank throws alike, or one rank's
+        // failure the others do not know of): on one process the line and its code; across
+        // ranks the last resort, MPI_Abort with that code, so that no rank waits forever.
+        const std::exception_ptr error = std::current_exception();
+        const int code = cluster::exit_code_of(error);
+        std::fprintf(stderr, "mvpl: %s: %s\n", code == 2 ? "error" : "internal error",
+                     one_line(cluster::message_of(error)).c_str());
+        if (ranks.size() > 1) {
+            std::fflush(stderr);
+            ranks.abort(code);
         }
-        if (command == "--version") {
-            std::puts("mvpl 0.1.0");
-            return 0;
-        }
-        throw UsageError("unknown command '" + command + "' (see mvpl --help)");
-    } catch (const InputError& e) {
-        std::fprintf(stderr, "mvpl: error: %s\n", one_line(e.what()).c_str());
-        return 2;
-    } catch (const UsageError& e) {
-        std::fprintf(stderr, "mvpl: error: %s\n", one_line(e.what()).c_str());
-        return 2;
-    } catch (const std::exception& e) {
-        std::fprintf(stderr, "mvpl: internal error: %s\n", one_line(e.what()).c_str());
-        return 1;
+        return code;
     }
 }

@@ -1,5 +1,6 @@
 #pragma once
 // A linear RGB float image and its files: EXR (float, linear) and PNG (sRGB, tonemapped).
+#include <span>
 #include <string>
 #include <vector>
 
@@ -21,6 +22,11 @@ public:
     const std::vector<Rgb>& pixels() const { return m_pixels; }
 
     Rgb mean() const;  // accumulated in double
+    // The pixels as 3 · width · height floats (R, G, B per pixel), for MPI sums over ranks.
+    std::span<float> channels() {
+        static_assert(sizeof(Rgb) == 3 * sizeof(float));
+        return {reinterpret_cast<float*>(m_pixels.data()), 3 * m_pixels.size()};
+    }
 
 private:
     int m_width = 0;

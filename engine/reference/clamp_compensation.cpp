@@ -106,7 +106,9 @@ struct ClampCompensation::Impl {
         }
         std::fill(pass_image.begin(), pass_image.end(), Rgb(0.0f));
         if (active()) {
-            const uint64_t seed = mix_bits(options.seed ^ (uint64_t(pass) << 32));
+            const uint64_t global =
+                uint64_t(options.first_pass) + uint64_t(pass) * uint64_t(options.pass_stride);
+            const uint64_t seed = mix_bits(options.seed ^ (global << 32));
             parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {
                 for (int64_t y = y0; y < y1; ++y) {
                     for (int x = 0; x < options.width; ++x) {

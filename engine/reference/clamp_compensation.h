@@ -33,6 +33,11 @@ struct CompensationOptions {
     int max_depth = 6;                   // of the whole path, camera included; < 0: unlimited
     int rr_depth = 5;
     uint64_t seed = 0;
+    // Pass i of this object is pass first_pass + i · pass_stride of the sequence the seed defines:
+    // ranks of a cluster run every R-th pass from their rank, so that together they run one
+    // process's passes.
+    uint32_t first_pass = 0;
+    uint32_t pass_stride = 1;
 };
 
 class ClampCompensation {

@@ -71,10 +71,24 @@ struct Slice {
 
 // The batches of `count` VPLs that follow `shaded` others since begin(): at most options.batch
 // each and, with jitter, cut where the sub-pixel position changes, so that every VPL is shaded
-// at the position of its index since begin(), however the calls split the VPLs.
-std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptions& options) {
+// at the position of its index since begin(), however the calls split the VPLs. With `index`
+// (a rank's share), VPL i's index is index[i] instead of shaded + i.
+std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptions& options,
+                                std::span<const uint64_t> index = {}) {
     const SubpixelSchedule schedule = subpixel_schedule(options);
     std::vector<Slice> slices;
+    if (!index.empty()) {
+        for (size_t first = 0; first < count;) {
+            const uint64_t position = schedule.position_of(index[first]);
+            size_t end = first + 1;
+            while (end < count && end - first < options.batch &&
+                   schedule.position_of(index[end]) == position)
+                ++end;
+            slices.push_back({first, end - first, position});
+            first = end;
+        }
+        return slices;
+    }
     for (size_t first = 0; first < count;) {
         const uint64_t position = schedule.position_of(shaded + first);
         size_t end = std::min(count, first + options.batch);
@@ -125,8 +139,9 @@ struct VplRenderer::Impl {
     scene::Camera view_camera;
     RenderTimings timings;
     bool begun = false;
-    uint64_t shaded = 0;    // VPLs accumulated since begin()
-    uint64_t position = 0;  // the sub-pixel position of the G-buffer drawn last
+    uint64_t shaded = 0;      // VPLs accumulated since begin()
+    uint64_t position = 0;    // the sub-pixel position of the G-buffer drawn last
+    std::vector<bool> drawn;  // the positions whose G-buffer (and emission) was drawn
 
     // Draws the G-buffer at sub-pixel `index` and adds its emission to the sum.
     void record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index) {
@@ -146,6 +161,8 @@ struct VplRenderer::Impl {
         timer.end(cmd, scope);
         cmd.barrier();
         position = index;
+        if (drawn.size() <= index) drawn.resize(size_t(index) + 1, false);
+        drawn[size_t(index)] = true;
         ++timings.g_buffers;
     }
 
@@ -239,6 +256,7 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     }
     m.timings = RenderTimings{};
     m.shaded = 0;
+    m.drawn.clear();
     gpu::GpuTimer timer(*m.context, 1);
     m.context->submit_and_wait([&](gpu::CommandList& cmd) {
         m.shading->record_clear(cmd);
@@ -252,12 +270,18 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
 }
 
 void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
+    accumulate(vpls, {});
+}
+
+void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const uint64_t> index) {
     Impl& m = *m_impl;
     if (!m.begun) throw gpu::GpuError("VplRenderer::accumulate before begin");
+    if (!index.empty() && index.size() != vpls.size())
+        throw gpu::GpuError("VplRenderer::accumulate: one index per VPL");
     if (vpls.empty()) return;
     const auto start = std::chrono::steady_clock::now();
     const RenderOptions& options = m.options;
-    const std::vector<Slice> slices = plan_batches(vpls.size(), m.shaded, options);
+    const std::vector<Slice> slices = plan_batches(vpls.size(), m.shaded, options, index);
     gpu::GpuTimer timer(*m.context, 3 * uint32_t(slices.size()));
 
     ShadingBatch batch;
@@ -285,7 +309,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
             m.shading->record(cmd, m.g_buffer->image(), batch);
             timer.end(cmd, scope);
         });
-        m.shaded += s.count;
+        m.shaded = index.empty() ? m.shaded + s.count : index[s.first + s.count - 1] + 1;
         if (options.on_batch) options.on_batch(slice.size());
     }
     m.timings.batches += uint32_t(slices.size());
@@ -295,24 +319,55 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
 }
 
 Image VplRenderer::resolve(double scale) {
+    return resolve(scale, contributions(), m_impl->shaded);
+}
+
+Image VplRenderer::contributions() const {
+    const Impl& m = *m_impl;
+    if (!m.begun) throw gpu::GpuError("VplRenderer::contributions before begin");
+    const std::vector<float> rgba = m.shading->accumulation().download_as<float>();
+    Image image(int(m.options.width), int(m.options.height));
+    for (size_t i = 0; i < image.pixels().size(); ++i)
+        image.pixels()[i] = Rgb(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]);
+    return image;
+}
+
+Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
     Impl& m = *m_impl;
     if (!m.begun) throw gpu::GpuError("VplRenderer::resolve before begin");
+    if (sum.width() != int(m.options.width) || sum.height() != int(m.options.height))
+        throw gpu::GpuError("VplRenderer::resolve: the sum is not the image's size");
     const auto start = std::chrono::steady_clock::now();
-    const std::vector<float> rgba = m.shading->accumulation().download_as<float>();
+    // A rank draws the G-buffers of the positions its own VPLs fall on; the emission averages
+    // over every position of the whole set, as one process would have drawn them.
+    const SubpixelSchedule schedule = subpixel_schedule(m.options);
+    const uint64_t positions = schedule.jitter ? schedule.positions_after(vpls) : 1;
+    std::vector<uint64_t> missing;
+    for (uint64_t p = 0; p < positions; ++p) {
+        if (p >= m.drawn.size() || !m.drawn[size_t(p)]) missing.push_back(p);
+    }
+    if (!missing.empty()) {
+        gpu::GpuTimer timer(*m.context, uint32_t(missing.size()));
+        m.context->submit_and_wait([&](gpu::CommandList& cmd) {
+            for (const uint64_t p : missing)
+                m.record_g_buffer(cmd, timer, p);
+        });
+        m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
+    }
     const std::vector<float> emission = m.emission->image().download_as<float>();
     const Image* chained = m.chains ? &m.chains->emission_sum() : nullptr;
     Image image(int(m.options.width), int(m.options.height));
     for (size_t i = 0; i < image.pixels().size(); ++i) {
-        const float* a = &rgba[4 * i];
+        const Rgb a = sum.pixels()[i];
         const float* e = &emission[4 * i];
         // e[3] counts the G-buffers summed (one at least after begin()).
         const double count = std::max(double(e[3]), 1.0);
         // In double, so that a huge 1/N or a tiny one does not round the sum twice.
         // The emitted radiance met by specular chains, summed per G-buffer as e is.
         const Rgb c = chained ? chained->pixels()[i] : Rgb(0.0f);
-        image.pixels()[i] = Rgb(float(scale * a[0] + (e[0] + c.r) / count),
-                                float(scale * a[1] + (e[1] + c.g) / count),
-                                float(scale * a[2] + (e[2] + c.b) / count));
+        image.pixels()[i] = Rgb(float(scale * a.r + (e[0] + c.r) / count),
+                                float(scale * a.g + (e[1] + c.g) / count),
+                                float(scale * a.b + (e[2] + c.b) / count));
     }
     m.add_timing(start, 0.0, 0.0);
     require_finite(image, "VplRenderer::resolve");

@@ -113,6 +113,17 @@ public:
     void begin(const scene::Camera& camera, const RenderOptions& options);
     void accumulate(std::span<const light::Vpl> vpls);
     Image resolve(double scale);
+
+    // A share of a render split over ranks (engine/cluster): `index[i]` is VPL i's index since
+    // begin() in the order one process would have shaded the whole set (increasing), which
+    // decides its sub-pixel position, so that the ranks' images sum to the one-process image.
+    void accumulate(std::span<const light::Vpl> vpls, std::span<const uint64_t> index);
+    // Σ contributions so far (unscaled, no emission): what ranks sum.
+    Image contributions() const;
+    // scale · `sum` + the mean emitted radiance over the sub-pixel positions of `vpls` VPLs
+    // (positions_after), drawing the G-buffers of the positions this renderer has not drawn.
+    // resolve(scale) is resolve(scale, contributions(), VPLs accumulated).
+    Image resolve(double scale, const Image& sum, uint64_t vpls);
     // Since the last begin(); batches counts shading dispatches.
     const RenderTimings& timings() const;
 

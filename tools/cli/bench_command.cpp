@@ -1,6 +1,9 @@
 // `mvpl bench`: VPL throughput. Light-path generation on the CPU, the shadow and shading passes
 // on the GPU (timestamp queries), end to end, start-up and peak memory; every number is the
-// median of --repeat runs, because a shared machine is noisy.
+// median of --repeat runs, because a shared machine is noisy. Under mpirun (engine/cluster) the
+// ranks share the light paths as `mvpl render` does and the numbers are the job's: VPLs of all
+// ranks, wall times from a meeting of all ranks to rank 0's resolved image, GPU pass times summed
+// over the ranks (start-up and memory are rank 0's).
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -10,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
 #include "engine/core/progress.h"
 #include "engine/core/timer.h"
@@ -17,6 +21,7 @@
 #include "engine/gpu/memory.h"
 #include "engine/render/vpl_renderer.h"
 #include "sampler/monte_carlo_sampler.h"
+#include "sampler/monte_carlo_stream.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/bench_report.h"
 #include "tools/cli/commands.h"
@@ -45,14 +50,53 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     return ro;
 }
 
-// One progressive render of all VPLs.
+// This rank's VPLs (all of them on one process), each one's index in the one-process order
+// (empty on one process), and the job's VPL count.
+struct Share {
+    light::VplSet vpls;
+    std::vector<uint64_t> index;
+    uint64_t total = 0;
+};
+
+Share sample(const session::SceneSession& session, const sampler::MonteCarloOptions& mc,
+             cluster::Cluster& ranks) {
+    Share share;
+    if (ranks.size() == 1) {
+        share.vpls = sampler::MonteCarloSampler(session.scene(), session.accel(), session.lights())
+                         .generate(mc);
+    } else {
+        sampler::MonteCarloOptions o = mc;
+        o.cluster = &ranks;
+        sampler::MonteCarloStream stream(session.scene(), session.accel(), session.lights(), o);
+        stream.next(mc.paths, share.vpls.vpls);
+        share.vpls.scale = stream.scale();
+        share.index.assign(stream.last_index().begin(), stream.last_index().end());
+    }
+    std::vector<uint64_t> total(1, share.vpls.vpls.size());
+    if (ranks.size() > 1) ranks.sum_all(total);
+    share.total = total[0];
+    return share;
+}
+
+// One progressive render of all VPLs; over ranks, from a meeting of all to rank 0's image.
 RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& camera,
-                         const light::VplSet& vpls, const BenchConfig& config, float clamp,
-                         bool shadows) {
+                         const Share& share, const BenchConfig& config, float clamp, bool shadows,
+                         cluster::Cluster& ranks) {
+    cluster::together(ranks, [] {});
     Timer wall;
-    renderer.begin(camera, render_options(config, clamp, shadows));
-    renderer.accumulate(vpls.vpls);
-    [[maybe_unused]] const Image image = renderer.resolve(vpls.scale);  // read-back costs too
+    Image image;
+    cluster::together(ranks, [&] {
+        renderer.begin(camera, render_options(config, clamp, shadows));
+        renderer.accumulate(share.vpls.vpls, share.index);
+        // The read-back costs too.
+        image = ranks.size() == 1 ? renderer.resolve(share.vpls.scale) : renderer.contributions();
+    });
+    if (ranks.size() > 1) {
+        ranks.sum_to_root(image.channels());
+        cluster::together(ranks, [&] {
+            if (ranks.root()) image = renderer.resolve(share.vpls.scale, image, share.total);
+        });
+    }
     RenderSample s;
     s.wall_s = wall.seconds();
     const render::RenderTimings& t = renderer.timings();
@@ -62,6 +106,22 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.batches = t.batches;
     s.shadow_triangles = t.shadow_triangles;
     s.g_buffers = t.g_buffers;
+    if (ranks.size() > 1) {
+        // GPU time and work summed over the ranks, so that per VPL they are the job's cost.
+        std::vector<double> sums{s.g_buffer_ms,
+                                 s.shadow_ms,
+                                 s.shading_ms,
+                                 double(s.batches),
+                                 double(s.shadow_triangles),
+                                 double(s.g_buffers)};
+        ranks.sum_all(sums);
+        s.g_buffer_ms = sums[0];
+        s.shadow_ms = sums[1];
+        s.shading_ms = sums[2];
+        s.batches = uint32_t(sums[3]);
+        s.shadow_triangles = uint64_t(sums[4]);
+        s.g_buffers = uint32_t(sums[5]);
+    }
     return s;
 }
 
@@ -114,7 +174,11 @@ int run_bench(const Args& args) {
                     "measure what visibility costs)");
     parser.add_string("--json", &json_path, "write the results as JSON to this file");
     parser.add_flag("--quiet", &quiet, "no progress bar and no table");
-    if (!parser.parse(args)) return 0;
+    cluster::Cluster& ranks = cluster::world();
+    bool parsed = false;
+    cluster::together(ranks, [&] { parsed = parser.parse(args); });
+    if (!parsed) return 0;
+    if (!ranks.root()) quiet = true;
     config.shadow_resolution = renderer_args.shadow_res;
     config.batch = renderer_args.batch;
     config.shadow_culling = !renderer_args.no_shadow_culling;
@@ -122,12 +186,13 @@ int run_bench(const Args& args) {
     config.jitter = !renderer_args.no_jitter;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
-    if (paths < 1 || paths > (uint64_t(1) << 24))
-        throw UsageError("bench: --vpls must be in 1..2^24");
-    if (repeat < 1 || repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
-
     std::ofstream json_out;
-    if (!json_path.empty()) json_out = open_output(json_path);
+    cluster::together(ranks, [&] {
+        if (paths < 1 || paths > (uint64_t(1) << 24))
+            throw UsageError("bench: --vpls must be in 1..2^24");
+        if (repeat < 1 || repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
+        if (!json_path.empty() && ranks.root()) json_out = open_output(json_path);
+    });
 
     std::vector<BenchConfig> sweep_configs;
     if (sweep) {
@@ -159,40 +224,46 @@ int run_bench(const Args& args) {
     Progress progress("bench", int64_t(repeat) * int64_t(1 + sweep_configs.size()), quiet);
     for (int k = 0; k < repeat; ++k) {
         // Everything from scratch each repeat, so that start-up is measured K times too.
-        const session::SceneSession session(scene_path, camera.choice, environment.choice,
-                                            scene_file.options);
-        const scene::Scene& scene = session.scene();
-        load_s.push_back(session.load_seconds());
-        bvh_s.push_back(session.bvh_seconds());
-        if (k == 0) session.warn_if_no_light("nothing to bench");
-        Timer t;
-        gpu::Context context;
-        context_s.push_back(t.seconds());
-        t.reset();
-        render::VplRenderer renderer(context, scene);
-        // The first begin() builds the passes: pipelines and shader compilation belong to
-        // start-up, not to the throughput of later renders.
-        renderer.begin(scene.camera, render_options(config, clamp, !no_shadows));
-        renderer_s.push_back(t.seconds());
+        std::unique_ptr<session::SceneSession> session;
+        std::unique_ptr<gpu::Context> context;
+        std::unique_ptr<render::VplRenderer> renderer;
+        cluster::together(ranks, [&] {
+            session = std::make_unique<session::SceneSession>(scene_path, camera.choice,
+                                                              environment.choice,
+                                                              scene_file.options);
+            load_s.push_back(session->load_seconds());
+            bvh_s.push_back(session->bvh_seconds());
+            if (k == 0 && ranks.root()) session->warn_if_no_light("nothing to bench");
+            Timer t;
+            context = std::make_unique<gpu::Context>();
+            context_s.push_back(t.seconds());
+            t.reset();
+            renderer = std::make_unique<render::VplRenderer>(*context, session->scene());
+            // The first begin() builds the passes: pipelines and shader compilation belong to
+            // start-up, not to the throughput of later renders.
+            renderer->begin(session->scene().camera, render_options(config, clamp, !no_shadows));
+            renderer_s.push_back(t.seconds());
+        });
+        const scene::Scene& scene = session->scene();
 
-        t.reset();
-        const light::VplSet vpls =
-            sampler::MonteCarloSampler(scene, session.accel(), session.lights()).generate(mc);
+        cluster::together(ranks, [] {});
+        Timer t;
+        const Share vpls = sample(*session, mc, ranks);
         sampling_s.push_back(t.seconds());
-        report.vpls = vpls.vpls.size();
+        report.vpls = vpls.total;
         report.triangles = scene.triangle_count();
-        report.device = context.device_info().name;
+        report.device = context->device_info().name;
 
         main_samples.push_back(
-            render_once(renderer, scene.camera, vpls, config, clamp, !no_shadows));
+            render_once(*renderer, scene.camera, vpls, config, clamp, !no_shadows, ranks));
         progress.advance();
         for (size_t i = 0; i < sweep_configs.size(); ++i) {
-            sweep_samples[i].push_back(
-                render_once(renderer, scene.camera, vpls, sweep_configs[i], clamp, !no_shadows));
+            sweep_samples[i].push_back(render_once(*renderer, scene.camera, vpls, sweep_configs[i],
+                                                   clamp, !no_shadows, ranks));
             progress.advance();
         }
         report.peak_device_bytes =
-            std::max(report.peak_device_bytes, context.allocator().peak_bytes());
+            std::max(report.peak_device_bytes, context->allocator().peak_bytes());
     }
     progress.finish();
 
@@ -208,12 +279,15 @@ int run_bench(const Args& args) {
     }
     report.peak_host_bytes = peak_host_bytes();
 
-    if (json_out.is_open()) {
-        json_out << bench_json(report);
-        json_out.close();
-        if (!json_out) throw InputError(json_path, "cannot write the benchmark JSON");
-    }
-    if (!quiet) std::fputs(bench_table(report).c_str(), stdout);
+    report.ranks = ranks.size();
+    cluster::together(ranks, [&] {
+        if (json_out.is_open()) {
+            json_out << bench_json(report);
+            json_out.close();
+            if (!json_out) throw InputError(json_path, "cannot write the benchmark JSON");
+        }
+        if (!quiet) std::fputs(bench_table(report).c_str(), stdout);
+    });
     return 0;
 }
 

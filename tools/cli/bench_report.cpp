@@ -116,6 +116,7 @@ std::string bench_json(const BenchReport& b) {
     s += "  \"device\": " + quoted(b.device) + ",\n";
     s += "  \"repeat\": " + std::to_string(b.repeat) + ",\n";
     s += std::string("  \"shadows\": ") + (b.shadows ? "true" : "false") + ",\n";
+    s += "  \"ranks\": " + std::to_string(b.ranks) + ",\n";
     s += "  \"startup\": {\n";
     s += "    \"scene_load_s\": " + number(b.scene_load_s) + ",\n";
     s += "    \"bvh_build_s\": " + number(b.bvh_build_s) + ",\n";
@@ -148,12 +149,13 @@ std::string bench_table(const BenchReport& b) {
     char buf[512];
     std::string s;
     std::snprintf(buf, sizeof buf,
-                  "bench: %s, %llu triangles, %s; medians of %d%s\n"
+                  "bench: %s, %llu triangles, %s; medians of %d%s%s\n"
                   "  start-up         %8.3f s  (scene %.3f s, BVH %.3f s, Vulkan %.3f s, "
                   "renderer + shaders %.3f s)\n",
                   b.scene.c_str(), static_cast<unsigned long long>(b.triangles), b.device.c_str(),
-                  b.repeat, b.shadows ? "" : "; no shadows", b.startup_s(), b.scene_load_s,
-                  b.bvh_build_s, b.context_s, b.renderer_s);
+                  b.repeat, b.shadows ? "" : "; no shadows",
+                  b.ranks > 1 ? ("; " + std::to_string(b.ranks) + " MPI ranks").c_str() : "",
+                  b.startup_s(), b.scene_load_s, b.bvh_build_s, b.context_s, b.renderer_s);
     s += buf;
     std::snprintf(buf, sizeof buf,
                   "  light paths      %8.3f s  %llu paths → %llu VPLs: %.0f paths/s, %.0f VPLs/s\n",

@@ -48,6 +48,7 @@ struct BenchReport {
     std::string device;
     int repeat = 1;
     bool shadows = true;  // false with --no-shadows: no shadow pass, every VPL unshadowed
+    int ranks = 1;        // under mpirun: the job's ranks (engine/cluster)
     // Start-up, medians: scene file → Scene, Embree BVH, Vulkan context, renderer (geometry
     // upload) and its first begin() (pipeline creation and shader compilation).
     double scene_load_s = 0.0;

@@ -47,7 +47,7 @@ void CompensationThread::run() {
     }
 }
 
-Image CompensationThread::finish(bool wait) {
+Image CompensationThread::finish(bool wait, bool at_least_one) {
     {
         const std::lock_guard lock(m_mutex);
         if (wait) {
@@ -59,7 +59,7 @@ Image CompensationThread::finish(bool wait) {
     m_wake.notify_all();
     if (m_thread.joinable()) m_thread.join();
     if (m_error) std::rethrow_exception(m_error);
-    if (m_compensation->passes() == 0) m_compensation->add_pass();
+    if (m_compensation->passes() == 0 && at_least_one) m_compensation->add_pass();
     return m_compensation->image();
 }
 

@@ -37,8 +37,9 @@ public:
     void allow(uint32_t passes);
     // The compensation image, the mean over its passes (at least one); rethrows what a pass
     // threw. wait: first finish every allowed pass (a fixed render, deterministic for its seed);
-    // otherwise stop after the pass under way (a time budget).
-    Image finish(bool wait);
+    // otherwise stop after the pass under way (a time budget). at_least_one false (a rank's
+    // share, which may be none): black when no pass was run.
+    Image finish(bool wait, bool at_least_one = true);
     uint32_t passes() const { return m_compensation->passes(); }
     // The mean over the passes completed so far, while the thread goes on.
     Image snapshot() const { return m_compensation->image(); }

@@ -1,7 +1,11 @@
 // `mvpl render`: VPLs from a sampler, shaded on the GPU (or by the CPU oracle with --oracle).
 // This file declares the command's options and wires them; render_runs.h forms the image.
+#include <algorithm>
 #include <cstdio>
+#include <cstdlib>
 #include <memory>
+
+#include "engine/cluster/cluster.h"
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
@@ -83,6 +87,19 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     });
 }
 
+// `--device local-rank`: the device of index OMPI_COMM_WORLD_LOCAL_RANK (this rank's place among
+// the ranks on its machine; 0 without mpirun), modulo the devices there, so that ranks on one
+// machine spread over its GPUs and share them round-robin when there are fewer.
+Args with_local_rank_device(Args args) {
+    for (size_t i = 0; i + 1 < args.size(); ++i) {
+        if (args[i] != "--device" || args[i + 1] != "local-rank") continue;
+        const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_RANK");
+        const size_t count = std::max<size_t>(gpu::enumerate_devices().size(), 1);
+        args[i + 1] = std::to_string(size_t(local ? std::atoi(local) : 0) % count);
+    }
+    return args;
+}
+
 // --device N must name a device, checked before the scene is loaded.
 void check_device(const RenderArgs& a) {
     if (a.oracle || a.device < 0) return;
@@ -142,47 +159,65 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
 }  // namespace
 
 int run_render(const Args& args) {
+    // Under mpirun every rank runs this with the same arguments (engine/cluster): each loads the
+    // scene and its device and renders its share; rank 0 alone writes and prints. Whatever fails
+    // on one rank is met by the others at the next agreement point (cluster::together).
+    cluster::Cluster& ranks = cluster::world();
     RenderArgs a;
     ArgParser parser(
         "render",
         "Renders SCENE with virtual point lights: a sampler traces light paths on the CPU\n"
-        "and leaves VPLs; the GPU shades them in batches with cube-map shadows.");
+        "and leaves VPLs; the GPU shades them in batches with cube-map shadows.\n"
+        "Under mpirun, the ranks share the work and rank 0 writes the image.");
     add_options(parser, a);
-    if (!parser.parse(args)) return 0;
-    check_device(a);
-    bool defaulted = false;
-    a.outputs = outputs_or(a.outputs, "render.exr", defaulted);
-    check_outputs(a.outputs);
-
+    bool parsed = false, defaulted = false;
     Timer total;
-    const session::SceneSession session(a.scene_path, a.camera.choice, a.environment.choice,
-                                        a.scene_file.options);
-    apply_scene_defaults(parser, session.scene(), &a.settings.tracer.max_depth, &a.width,
-                         &a.height);
-    session.warn_if_no_light("the image shows emitters only");
-    RenderJob job = make_job(a, session);
+    std::unique_ptr<session::SceneSession> session;
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<render::VplRenderer> renderer;
-    if (!a.oracle) {
-        gpu::ContextOptions co;
-        co.device_index = a.device;
-        context = std::make_unique<gpu::Context>(co);
-        renderer =
-            std::make_unique<render::VplRenderer>(*context, session.scene(), &session.accel());
-        job.renderer = renderer.get();
-    }
+    cluster::together(ranks, [&] {
+        parsed = parser.parse(with_local_rank_device(args));
+        if (!parsed) return;
+        check_device(a);
+        if (ranks.size() > 1 && a.oracle)
+            throw UsageError("render: --oracle runs on one process, not under mpirun");
+        a.outputs = outputs_or(a.outputs, "render.exr", defaulted);
+        if (ranks.root()) check_outputs(a.outputs);
+        if (!ranks.root()) a.quiet = true;
+        total.reset();
+        session = std::make_unique<session::SceneSession>(a.scene_path, a.camera.choice,
+                                                          a.environment.choice,
+                                                          a.scene_file.options);
+        apply_scene_defaults(parser, session->scene(), &a.settings.tracer.max_depth, &a.width,
+                             &a.height);
+        session->warn_if_no_light("the image shows emitters only");
+        if (!a.oracle) {
+            gpu::ContextOptions co;
+            co.device_index = a.device;
+            context = std::make_unique<gpu::Context>(co);
+            renderer = std::make_unique<render::VplRenderer>(*context, session->scene(),
+                                                             &session->accel());
+        }
+    });
+    if (!parsed) return 0;
+    RenderJob job = make_job(a, *session);
+    job.renderer = renderer.get();
 
     const RenderOutcome result =
         a.time_budget > 0.0f ? render_for(job, double(a.time_budget)) : render_once(job, a.paths);
-    if (context) {
-        // MVPL_VALIDATION=1: whatever the layer reported is shown, one line a message.
-        for (const std::string& message : context->validation_messages())
-            std::fprintf(stderr, "mvpl: validation: %s\n", message.c_str());
-    }
-    session.warn_if_black(result.image);
-    write_images(result.image, a.outputs, a.exposure);
-    say_written("render", a.outputs, defaulted, a.quiet);
-    if (!a.quiet) std::fputs(summary_line(job, result, total.seconds()).c_str(), stdout);
+    // Rank 0 writes; the others wait for it, so that all exit with its status.
+    cluster::together(ranks, [&] {
+        if (context) {
+            // MVPL_VALIDATION=1: whatever the layer reported is shown, one line a message.
+            for (const std::string& message : context->validation_messages())
+                std::fprintf(stderr, "mvpl: validation: %s\n", message.c_str());
+        }
+        if (!ranks.root()) return;
+        session->warn_if_black(result.image);
+        write_images(result.image, a.outputs, a.exposure);
+        say_written("render", a.outputs, defaulted, a.quiet);
+        if (!a.quiet) std::fputs(summary_line(job, result, total.seconds()).c_str(), stdout);
+    });
     return 0;
 }
 

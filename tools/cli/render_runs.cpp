@@ -5,7 +5,10 @@
 #include <cstdint>
 #include <cstdio>
 #include <memory>
+#include <span>
+#include <vector>
 
+#include "engine/core/error.h"
 #include "engine/core/progress.h"
 #include "engine/core/timer.h"
 #include "sampler/metropolis_stream.h"
@@ -46,12 +49,6 @@ uint64_t next_chunk(uint64_t done, double elapsed, double remaining, uint64_t fi
     return std::clamp<uint64_t>(uint64_t(std::min(seconds / per_unit, 1e9)), 1, uint64_t(1) << 20);
 }
 
-std::unique_ptr<sampler::VplStream> make_stream(const RenderJob& job) {
-    const session::SceneSession& s = *job.session;
-    return sampler::make_vpl_stream(job.sampler, s.scene(), s.accel(), s.lights(), s.camera(),
-                                    job.settings);
-}
-
 // Adds `part` into `sum`, pixel by pixel.
 void add_image(Image& sum, const Image& part, float scale = 1.0f) {
     for (size_t i = 0; i < sum.pixels().size(); ++i)
@@ -68,18 +65,36 @@ public:
     // open_ended: a time budget, whose compensation stops with it rather than finishing the
     // passes it was allowed.
     ChunkedRender(const RenderJob& job, RenderOutcome& result, bool open_ended)
-        : m_job(job), m_session(*job.session), m_result(result), m_open_ended(open_ended) {
-        if (job.renderer) job.renderer->begin(m_session.camera(), job.render);
-        if (job.compensate) {
-            auto compensation = std::make_unique<reference::ClampCompensation>(
-                m_session.scene(), m_session.accel(), m_session.lights(), job.compensation);
-            if (compensation->active())
-                m_compensation = std::make_unique<CompensationThread>(std::move(compensation));
-            if (m_compensation && job.compensation_passes > 0)
-                m_compensation->allow(job.compensation_passes);
-        }
+        : m_job(job),
+          m_session(*job.session),
+          m_result(result),
+          m_open_ended(open_ended),
+          m_ranks(job.cluster ? *job.cluster : cluster::single_process()) {
+        if (shared() && !job.renderer)
+            throw UsageError("render: --oracle runs on one process, not under mpirun");
+        cluster::together(m_ranks, [&] {
+            if (job.renderer) job.renderer->begin(m_session.camera(), job.render);
+            if (job.compensate) {
+                reference::CompensationOptions options = job.compensation;
+                options.first_pass = uint32_t(m_ranks.rank());
+                options.pass_stride = uint32_t(m_ranks.size());
+                auto compensation = std::make_unique<reference::ClampCompensation>(
+                    m_session.scene(), m_session.accel(), m_session.lights(), options);
+                if (compensation->active())
+                    m_compensation = std::make_unique<CompensationThread>(std::move(compensation));
+                if (m_compensation && job.compensation_passes > 0)
+                    m_compensation->allow(my_passes(job.compensation_passes));
+            }
+        });
         Timer setup;
-        m_stream = make_stream(job);
+        sampler::SamplerSettings settings = job.settings;
+        if (shared()) settings.cluster = &m_ranks;
+        const session::SceneSession& s = m_session;
+        // The Metropolis bootstrap meets the other ranks inside (its own agreement points).
+        cluster::together(m_ranks, [&] {
+            m_stream = sampler::make_vpl_stream(job.sampler, s.scene(), s.accel(), s.lights(),
+                                                s.camera(), settings);
+        });
         m_result.sampling_seconds += setup.seconds();
         m_unlit = warn_if_unlit(*m_stream, m_session);
         m_gather = job.gather;
@@ -96,27 +111,33 @@ public:
     void add(uint64_t work) {
         m_chunk.clear();
         Timer sampling;
-        m_stream->next(work, m_chunk);
+        m_stream->next(work, m_chunk);  // over ranks: an agreement point inside
         m_result.sampling_seconds += sampling.seconds();
         Timer shading;
-        if (m_job.renderer) {
-            m_job.renderer->accumulate(m_chunk);
-        } else if (!m_chunk.empty()) {
-            m_gather.first_vpl = m_result.vpls;
-            add_image(m_sum, reference::gather_vpls(m_session.scene(), m_session.accel(), {m_chunk},
-                                                    m_gather));
-        }
+        cluster::together(m_ranks, [&] {
+            if (m_job.renderer) {
+                m_job.renderer->accumulate(m_chunk, m_stream->last_index());
+            } else if (!m_chunk.empty()) {
+                m_gather.first_vpl = m_result.vpls;
+                add_image(m_sum, reference::gather_vpls(m_session.scene(), m_session.accel(),
+                                                        {m_chunk}, m_gather));
+            }
+        });
         m_result.shading_seconds += shading.seconds();
-        m_result.vpls += m_chunk.size();
+        m_result.vpls = m_stream->vpls_total();
         if (m_compensation && m_job.compensation_passes == 0)
-            m_compensation->allow(paced_compensation_passes(
-                m_result.vpls, m_open_ended ? uint32_t(1) << 20 : kFixedRenderPasses));
+            m_compensation->allow(my_passes(paced_compensation_passes(
+                m_result.vpls, m_open_ended ? uint32_t(1) << 20 : kFixedRenderPasses)));
     }
 
     // The image: scale · Σ contributions + the emitted radiance seen directly.
     void finish() {
         m_result.units = m_stream->work_done();
         m_result.statistics = m_stream->statistics();
+        if (shared()) {
+            finish_shared();
+            return;
+        }
         Timer shading;
         if (m_job.renderer) {
             m_result.image = m_job.renderer->resolve(m_stream->scale());
@@ -136,10 +157,59 @@ public:
     }
 
 private:
+    bool shared() const { return m_ranks.size() > 1; }
+
+    // Of the job's first `passes` compensation passes, those this rank runs (every R-th from its
+    // rank: ClampCompensation's first_pass and pass_stride).
+    uint32_t my_passes(uint32_t passes) const {
+        const auto r = uint32_t(m_ranks.rank()), n = uint32_t(m_ranks.size());
+        return passes > r ? (passes - r + n - 1) / n : 0;
+    }
+
+    // Over ranks: the contributions and the compensation passes summed to rank 0, which resolves.
+    void finish_shared() {
+        Timer shading;
+        Image sum, compensation;
+        std::vector<double> passes(1, 0.0);
+        cluster::together(m_ranks, [&] {
+            sum = m_job.renderer->contributions();
+            if (m_compensation) {
+                // Fixed size: the job's passes, of which rank 0's share is never empty; a time
+                // budget: those done, at least one on rank 0.
+                compensation = m_compensation->finish(!m_open_ended, m_ranks.root());
+                passes[0] = double(m_compensation->passes());
+                for (Rgb& c : compensation.pixels())
+                    c *= float(passes[0]);
+            }
+        });
+        // Met first, so that the time is the reduction's, not the wait for the slowest rank.
+        std::vector<double> met(1, 0.0);
+        m_ranks.sum_all(met);
+        Timer reduce;
+        m_ranks.sum_to_root(sum.channels());
+        m_result.reduce_bytes = sum.channels().size_bytes();
+        if (m_compensation) {
+            m_ranks.sum_to_root(compensation.channels());
+            m_ranks.sum_all(passes);
+            m_result.reduce_bytes += compensation.channels().size_bytes();
+        }
+        m_result.reduce_seconds = reduce.seconds();
+        cluster::together(m_ranks, [&] {
+            if (!m_ranks.root()) return;
+            m_result.image = m_job.renderer->resolve(m_stream->scale(), sum, m_result.vpls);
+            m_result.timings = m_job.renderer->timings();
+            if (m_compensation && passes[0] > 0.0)
+                add_image(m_result.image, compensation, float(1.0 / passes[0]));
+        });
+        m_result.compensation_passes = uint32_t(passes[0]);
+        m_result.shading_seconds += shading.seconds();
+    }
+
     const RenderJob& m_job;
     const session::SceneSession& m_session;
     RenderOutcome& m_result;
     bool m_open_ended;
+    cluster::Cluster& m_ranks;
     std::unique_ptr<sampler::VplStream> m_stream;
     bool m_unlit = false;
     reference::GatherOptions m_gather;
@@ -178,9 +248,16 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     int64_t shown = 0;
     Progress progress("render", tenths, job.quiet);
     const uint64_t first = uint64_t(job.render.batch);
-    while (!run.unlit() && budget.seconds() < seconds) {
-        run.add(next_chunk(run.stream().work_done(), budget.seconds(), seconds - budget.seconds(),
-                           first));
+    // Over ranks, rank 0's clock decides for all, so that they stop together and agree on each
+    // chunk's size (every rank traces its share of it).
+    cluster::Cluster& ranks = job.cluster ? *job.cluster : cluster::single_process();
+    auto elapsed = [&] {
+        std::vector<double> t(1, ranks.root() ? budget.seconds() : 0.0);
+        ranks.sum_all(t);
+        return t[0];
+    };
+    for (double t = elapsed(); !run.unlit() && t < seconds; t = elapsed()) {
+        run.add(next_chunk(run.stream().work_done(), t, seconds - t, first));
         progress.set_status(run.stream().statistics());
         const int64_t now = std::min(tenths, int64_t(budget.seconds() * 10.0));
         progress.advance(now - shown);
@@ -202,6 +279,12 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
     }
     if (r.compensation_passes > 0)
         pass_times += "; compensation " + std::to_string(r.compensation_passes) + " spp";
+    if (job.cluster) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "; %d ranks, images summed in %.1f ms (%.1f MB a rank)",
+                      job.cluster->size(), 1e3 * r.reduce_seconds, double(r.reduce_bytes) / 1e6);
+        pass_times += buf;
+    }
     char line[512];
     std::snprintf(line, sizeof line,
                   "render: %zu VPLs from %llu %s, %dx%d: sampling %.2f s, shading %.2f s (%s), "

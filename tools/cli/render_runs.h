@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/cluster/cluster.h"
 #include "engine/core/image.h"
 #include "engine/reference/clamp_compensation.h"
 #include "engine/reference/vpl_gather.h"
@@ -30,18 +31,24 @@ struct RenderJob {
     uint32_t compensation_passes = 0;
     reference::CompensationOptions compensation;
     bool quiet = false;
+    // The ranks that share the render (engine/cluster): each samples and shades its share, rank 0
+    // sums the images and alone gets the outcome's image. Null: this process alone.
+    cluster::Cluster* cluster = nullptr;
 };
 
 // What a render produced, for the summary line.
 struct RenderOutcome {
-    Image image;
+    Image image;         // empty on ranks other than 0
     uint64_t units = 0;  // light paths (mc) or chain steps (metropolis)
-    size_t vpls = 0;
+    size_t vpls = 0;     // by every rank
     double sampling_seconds = 0.0;
     double shading_seconds = 0.0;
     std::string statistics;         // the sampler's, may be empty
     render::RenderTimings timings;  // GPU only
     uint32_t compensation_passes = 0;
+    // Over ranks: the seconds of summing the images to rank 0 and the bytes each rank sent.
+    double reduce_seconds = 0.0;
+    uint64_t reduce_bytes = 0;
 };
 
 // `units` light paths or chain steps, sampled at once, then shaded.
