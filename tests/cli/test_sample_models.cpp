@@ -51,11 +51,10 @@ double rel_mse(const std::string& a, const std::string& b) {
 // must vary with the seed: the sub-pixel positions too (`mvpl render` rotates their lattice by
 // the seed, engine/core/subpixel.h); with fixed positions, DamagedHelmet (its emissive texture
 // averaged over few positions) read R 2.99 and MultiUVTest R 4.4, though their means agreed.
-// Measured but not bounded (issue 12 stays open for them): the normal-mapped glossy and mirror
-// cells of the NormalTangent tests under the sky (R ≈ 8, mean 0.92–0.94), whose reflection of
-// the sky a point or directional VPL cannot light: issue 15's specular chains.
+// Every model is bounded: the normal-mapped glossy and mirror cells of the NormalTangent tests,
+// whose reflection of the sky a point or directional VPL cannot light, are shaded through
+// specular chains (light/specular_chain.h; without them R ≈ 8, mean 0.92–0.94).
 constexpr double kNoiseRatioBound = 3.0;
-const std::vector<std::string> kNotBounded = {"NormalTangentMirrorTest", "NormalTangentTest"};
 
 TEST(SampleModels, EveryModelRendersFiniteOnTheGpuAndWithThePathTracer) {
     const std::vector<fs::path> models = sample_models();
@@ -83,15 +82,10 @@ TEST(SampleModels, EveryModelRendersFiniteOnTheGpuAndWithThePathTracer) {
         const double across = rel_mse(vpl[0], pt[0]);
         const double noise = 0.5 * (rel_mse(vpl[0], vpl[1]) + rel_mse(pt[0], pt[1]));
         const double ratio = across / std::max(noise, 1e-12);
-        const bool bounded =
-            std::find(kNotBounded.begin(), kNotBounded.end(), name) == kNotBounded.end();
-        if (bounded) {
-            EXPECT_LE(ratio, kNoiseRatioBound) << "relMSE " << across << ", noise " << noise;
-        }
+        EXPECT_LE(ratio, kNoiseRatioBound) << "relMSE " << across << ", noise " << noise;
         RecordProperty(name, std::to_string(ratio));
-        std::printf("%-30s VPL/PT mean %.3f, relMSE %.4g, noise %.4g, ratio %.2f%s\n", name.c_str(),
-                    luminance(a) / std::max(luminance(b), 1e-30f), across, noise, ratio,
-                    bounded ? "" : " (not bounded)");
+        std::printf("%-30s VPL/PT mean %.3f, relMSE %.4g, noise %.4g, ratio %.2f\n", name.c_str(),
+                    luminance(a) / std::max(luminance(b), 1e-30f), across, noise, ratio);
     }
 }
 
