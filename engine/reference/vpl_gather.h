@@ -36,6 +36,9 @@ struct GatherOptions {
     // then. The default schedule is RenderOptions' (batch 32, jitter on).
     SubpixelSchedule subpixel;
     uint64_t first_vpl = 0;
+    // Interleaved sampling as RenderOptions::interleave does it (interleaved_gather.h): 1 for
+    // none.
+    int interleave = 1;
 };
 
 struct GatherStats {

@@ -1,5 +1,6 @@
 #include "engine/render/shading_pass.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "engine/gpu/command_list.h"
@@ -8,6 +9,7 @@
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
 #include "engine/render/gpu_vpl.h"
+#include "shaders/shared/interleave.h"
 #include "shaders/shared/push_constants.h"
 
 namespace mvpl::render {
@@ -129,10 +131,25 @@ void ShadingPass::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
     push.flags = (batch.add_emission ? kAddEmission : 0u) | (batch.shadows ? kShadows : 0u);
     push.size[0] = width;
     push.size[1] = height;
-    std::vector<gpu::Resource> resources{&g_buffer, &m_accumulation, &m_vpls, shadows};
+    const uint32_t k = std::max(batch.interleave, 1u);
+    push.interleave = k;
+    push.vpl_offset = uint32_t(batch.vpl_offset % (k * k));
+    const gpu::Image* target = &m_accumulation;
+    if (k > 1) {
+        if (k > shared::kMaxInterleave || !batch.interleaved || batch.add_emission ||
+            batch.interleaved->width() != width || batch.interleaved->height() != height) {
+            throw gpu::GpuError(
+                "shading pass: interleaving needs K ≤ 8, an image of the accumulation's size and "
+                "no emission");
+        }
+        target = batch.interleaved;
+    }
+    std::vector<gpu::Resource> resources{&g_buffer, target, &m_vpls, shadows};
     if (m_features.has_directional()) resources.push_back(ortho);
-    cmd.dispatch(*m_pipeline, resources, gpu::push_bytes(push),
-                 (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
+    // Interleaved: one workgroup layer per pixel class, each invocation a pixel K apart.
+    const uint32_t span = kGroupSize * k;
+    cmd.dispatch(*m_pipeline, resources, gpu::push_bytes(push), (width + span - 1) / span,
+                 (height + span - 1) / span, k * k);
 }
 
 }  // namespace mvpl::render

@@ -29,6 +29,13 @@ struct ShadingBatch {
     // From ShadowPass: the cube array and the directional maps; nullptr: unshadowed.
     const gpu::Image* shadows = nullptr;
     const gpu::Image* ortho_shadows = nullptr;
+    // Interleaved sampling (shaders/shared/interleave.h): K > 1 shades each pixel with its
+    // class's share of the batch, times K², and stores that into `interleaved` (an RGBA32F
+    // image of the accumulation's size, InterleaveFilter::shaded()) instead of adding it to the
+    // accumulation; vpl_offset is the index of the batch's first VPL since begin().
+    uint32_t interleave = 1;
+    uint64_t vpl_offset = 0;
+    const gpu::Image* interleaved = nullptr;
 };
 
 class ShadingPass {

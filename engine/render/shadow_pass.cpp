@@ -10,6 +10,7 @@
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
 #include "engine/render/directional_frame.h"
+#include "engine/render/hemicube.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shader_program.h"
 #include "shaders/shared/push_constants.h"
@@ -99,11 +100,12 @@ ShadowPass::Casters ShadowPass::upload(gpu::Context& context, const ShadowCluste
 
 ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
                        const ShadowClusters& clusters, uint32_t resolution, uint32_t max_batch,
-                       bool culling, const ShadowClusters* proxy)
+                       bool culling, const ShadowClusters* proxy, bool hemicube)
     : m_geometry(&geometry),
       m_full(upload(context, clusters, "shadow casters")),
       m_proxy(proxy ? upload(context, *proxy, "shadow proxy") : Casters{}),
       m_culling(culling),
+      m_hemicube(hemicube),
       m_cubes(context,
               {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
                gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
@@ -212,11 +214,20 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
         const bool hemisphere =
             vpl.type == light::VplType::Area || vpl.type == light::VplType::Surface;
         for (uint32_t face = 0; face < 6; ++face) {
-            if (hemisphere && face_behind(vpl.normal, face)) continue;
+            gpu::RenderArea area{0, 0, resolution(), resolution()};
+            if (hemisphere && m_hemicube) {
+                const std::optional<FaceRect> rect =
+                    lit_face_rect(vpl.normal, face, resolution());
+                if (!rect) continue;
+                area = {rect->x, rect->y, rect->width, rect->height};
+            } else if (hemisphere && face_behind(vpl.normal, face)) {
+                continue;
+            }
+            m_texels_drawn += uint64_t(area.width) * area.height;
             const gpu::ColorTarget color{
                 &m_cubes, 6 * i + face, {kShadowNoOccluder, 0.0f, 0.0f, 0.0f}};
             const gpu::DepthTarget depth{&m_depth, face, 0.0f};
-            gpu::begin_rendering(cmd, std::span(&color, 1), &depth);
+            gpu::begin_rendering(cmd, std::span(&color, 1), &depth, &area);
             const ShadowPush push{{vpl.position.x, vpl.position.y, vpl.position.z, m_near},
                                   {face, 0u, 0u, 0u}};
             // Materials do not matter for distances: one index buffer for the whole scene, of

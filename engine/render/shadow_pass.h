@@ -46,10 +46,12 @@ public:
     // resolution: the side of a cube face in texels; max_batch: cubes in the array; culling:
     // whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle;
     // proxy (may be null): the simplified casters that surface VPLs (path length ≥ 1) draw,
-    // while emitter VPLs, whose shadows are the sharpest, draw `clusters`.
+    // while emitter VPLs, whose shadows are the sharpest, draw `clusters`; hemicube: Area and
+    // Surface VPLs draw only the texels of each face that their lit hemisphere can reach
+    // (hemicube.h), false: every face that is not wholly behind them, in full.
     ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
                uint32_t resolution, uint32_t max_batch, bool culling = true,
-               const ShadowClusters* proxy = nullptr);
+               const ShadowClusters* proxy = nullptr, bool hemicube = true);
     ~ShadowPass();
     ShadowPass(const ShadowPass&) = delete;
     ShadowPass& operator=(const ShadowPass&) = delete;
@@ -68,6 +70,8 @@ public:
     float near_distance() const { return m_near; }
     // Triangles drawn into cube faces since construction (bench reports the culling's effect).
     uint64_t triangles_drawn() const { return m_triangles_drawn; }
+    // Cube-face texels cleared and drawn since construction (the hemicubes' effect).
+    uint64_t texels_drawn() const { return m_texels_drawn; }
 
 private:
     void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
@@ -84,8 +88,10 @@ private:
     Casters m_full;
     Casters m_proxy;  // clusters null without a proxy
     bool m_culling;
+    bool m_hemicube;
     std::vector<gpu::IndexRange> m_ranges;  // scratch, per face
     uint64_t m_triangles_drawn = 0;
+    uint64_t m_texels_drawn = 0;
     gpu::Image m_cubes;
     gpu::Image m_depth;  // six layers, reused by every cube
     gpu::Image m_ortho;

@@ -12,6 +12,7 @@
 #include "engine/gpu/gpu_timer.h"
 #include "engine/render/emission_sum.h"
 #include "engine/render/g_buffer_pass.h"
+#include "engine/render/interleave_filter.h"
 #include "engine/render/render_memory.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shading_pass.h"
@@ -107,6 +108,7 @@ struct VplRenderer::Impl {
     std::unique_ptr<EmissionSum> emission;
     std::unique_ptr<ShadowPass> shadow;
     std::unique_ptr<ShadingPass> shading;
+    std::unique_ptr<InterleaveFilter> interleave;  // null without interleaved sampling
     RenderOptions built_for = unbuilt();
     // The progressive state: what begin() set up.
     RenderOptions options;
@@ -156,10 +158,11 @@ struct VplRenderer::Impl {
         }
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
             o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
-            o.shadow_proxy != built_for.shadow_proxy) {
+            o.shadow_proxy != built_for.shadow_proxy || o.hemicube != built_for.hemicube) {
             shadow = std::make_unique<ShadowPass>(*context, geometry, clusters, o.shadow_resolution,
                                                   o.batch, o.shadow_culling,
-                                                  o.shadow_proxy ? proxy.get() : nullptr);
+                                                  o.shadow_proxy ? proxy.get() : nullptr,
+                                                  o.hemicube);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();
@@ -167,6 +170,13 @@ struct VplRenderer::Impl {
             shading =
                 std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch,
                                               geometry.features(o.surface_vpls), nullptr, cache);
+        }
+        if (o.interleave <= 1) {
+            interleave.reset();
+        } else if (!interleave || interleave->k() != o.interleave ||
+                   o.width != built_for.width || o.height != built_for.height) {
+            interleave = std::make_unique<InterleaveFilter>(*context, o.width, o.height,
+                                                            o.interleave);
         }
         if (!o.dump_shaders.empty()) dump_scene_shaders(o.dump_shaders, geometry, o.surface_vpls);
         built_for = o;
@@ -193,10 +203,11 @@ Image VplRenderer::render(const light::VplSet& vpls, const RenderOptions& option
 
 void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& options) {
     if (options.width == 0 || options.height == 0 || options.batch == 0 ||
-        options.shadow_resolution == 0 || options.batches_per_position == 0) {
+        options.shadow_resolution == 0 || options.batches_per_position == 0 ||
+        options.interleave == 0 || options.interleave > 8) {
         throw gpu::GpuError(
             "VplRenderer::begin: zero width, height, batch, shadow resolution or batches per "
-            "position");
+            "position, or interleave outside 1..8");
     }
     const auto start = std::chrono::steady_clock::now();
     Impl& m = *m_impl;
@@ -226,7 +237,8 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
     if (vpls.empty()) return;
     const auto start = std::chrono::steady_clock::now();
     const RenderOptions& options = m.options;
-    const std::vector<Slice> slices = plan_batches(vpls.size(), m.shaded, options);
+    const uint64_t shaded_before = m.shaded;
+    const std::vector<Slice> slices = plan_batches(vpls.size(), shaded_before, options);
     gpu::GpuTimer timer(*m.context, 3 * uint32_t(slices.size()));
 
     ShadingBatch batch;
@@ -238,9 +250,15 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
     // the accumulation holds VPLs only.
     batch.add_emission = false;
     const uint64_t drawn_before = m.shadow->triangles_drawn();
+    const uint64_t texels_before = m.shadow->texels_drawn();
     for (const Slice& s : slices) {
         const std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
         m.shading->upload(slice, m.geometry.bounds());
+        if (m.interleave) {
+            batch.interleave = options.interleave;
+            batch.vpl_offset = shaded_before + s.first;
+            batch.interleaved = &m.interleave->shaded();
+        }
         m.context->submit_and_wait([&](gpu::CommandList& cmd) {
             if (s.position != m.position) m.record_g_buffer(cmd, timer, s.position);
             if (options.shadows) {
@@ -251,6 +269,10 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
             }
             const uint32_t scope = timer.begin(cmd, "shading");
             m.shading->record(cmd, m.g_buffer->image(), batch);
+            if (m.interleave) {
+                cmd.barrier();
+                m.interleave->record(cmd, m.g_buffer->image(), m.shading->accumulation());
+            }
             timer.end(cmd, scope);
         });
         m.shaded += s.count;
@@ -259,6 +281,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
     m.timings.batches += uint32_t(slices.size());
     m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
     m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
+    m.timings.shadow_texels += m.shadow->texels_drawn() - texels_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
 }
 

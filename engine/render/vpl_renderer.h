@@ -40,12 +40,19 @@ struct RenderOptions {
     // Surface VPLs draw the simplified shadow proxy of the scene's large meshes
     // (shadow_clusters.h); false: every VPL draws the full geometry.
     bool shadow_proxy = true;
+    // Area and Surface VPLs draw only the part of each cube face that their lit hemisphere can
+    // reach (hemicube.h); false: whole faces (the A/B of mvpl bench --sweep).
+    bool hemicube = true;
     // Sub-pixel positions: VPL i since begin() is shaded at position i / (batch ·
     // batches_per_position) of the sequence, its G-buffer drawn when that position comes up, so
     // that the image does not depend on how the VPLs were split into accumulate() calls. false:
     // one G-buffer at the pixel centres for the whole image (no anti-aliasing).
     bool jitter = true;
     uint32_t batches_per_position = 1;
+    // Interleaved sampling (Keller & Heidrich 2001; shaders/shared/interleave.h): K in 1 … 8,
+    // 1 for none. Each pixel shades 1/K² of every batch, then a geometry-aware filter over the
+    // K×K neighbourhood on the batch's G-buffer restores the sum where the surface is smooth.
+    uint32_t interleave = 1;
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
     bool surface_vpls = true;
@@ -68,6 +75,7 @@ struct RenderTimings {
     double wall_ms = 0.0;   // host time of render(), uploads and read-back included
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // triangles drawn into cube faces
+    uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
     uint32_t g_buffers = 0;         // G-buffers drawn: one per sub-pixel position
 };
 

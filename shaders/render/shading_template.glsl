@@ -183,7 +183,20 @@ float spot_falloff(GpuVpl v, float cos_angle) {
 //@endif
 
 void main() {
-    const ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    // Interleaved sampling (shaders/shared/interleave.h): workgroup z is the pixel class c, and
+    // its 8×8 invocations are pixels of that class K apart, so that the loop over the class's
+    // VPLs is uniform in a workgroup (lavapipe runs both sides of a branch that diverges across
+    // its SIMD lanes: a per-pixel choice of VPLs would save nothing).
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    uint first_vpl = 0u;
+    uint vpl_step = 1u;
+    if (pc.interleave > 1u) {
+        const uint k = pc.interleave;
+        const uint c = gl_WorkGroupID.z;
+        px = ivec2(gl_GlobalInvocationID.xy * k + uvec2(c % k, c / k));
+        vpl_step = k * k;
+        first_vpl = (c + vpl_step - pc.vpl_offset) % vpl_step;
+    }
     if (any(greaterThanEqual(uvec2(px), pc.size))) return;
     const vec4 position = imageLoad(g_buffer, ivec3(px, 0));
     if (position.w <= 0.0) return;
@@ -207,7 +220,7 @@ void main() {
     const float shadow_res = float(imageSize(shadow_cubes).x);
 
     vec3 sum = (pc.flags & kAddEmission) != 0u ? emission_ior.rgb : vec3(0.0);
-    for (uint i = 0u; i < pc.vpl_count; ++i) {
+    for (uint i = first_vpl; i < pc.vpl_count; i += vpl_step) {
         const GpuVpl v = vpls[i];
 //@if directional
         if (v.type == kVplDirectional) {
@@ -253,6 +266,11 @@ void main() {
         sum += v.power * vis * f_r * cos_r * f_vpl * emitter / max(d2, pc.d_min2);
 //@endif
     }
-    const vec4 accumulated = imageLoad(accumulation, px);
-    imageStore(accumulation, px, vec4(accumulated.rgb + sum, 1.0));
+    if (pc.interleave > 1u) {
+        // The class's share, K² times: the interleaved batch image, which the filter adds.
+        imageStore(accumulation, px, vec4(float(vpl_step) * sum, 1.0));
+    } else {
+        const vec4 accumulated = imageLoad(accumulation, px);
+        imageStore(accumulation, px, vec4(accumulated.rgb + sum, 1.0));
+    }
 }

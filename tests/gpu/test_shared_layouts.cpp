@@ -36,9 +36,11 @@ layout(std430, binding = 4) buffer B4 { OrthoPush ortho; };
 layout(std430, binding = 5) buffer B5 { ShadingPush shading; };
 layout(std430, binding = 6) buffer B6 { PresentPush present; };
 layout(std430, binding = 7) buffer B7 { EmissionPush emission; };
+layout(std430, binding = 8) buffer B8 { InterleavePush interleave; };
 void main() {
     shading.vpl_count = vpl.type + g_buffer.material + material.size.x + shadow.face.x +
-                        uint(ortho.extents.x) + present.width + emission.layer;
+                        uint(ortho.extents.x) + present.width + emission.layer +
+                        interleave.interleave;
 }
 )";
 
@@ -92,6 +94,11 @@ const Member kMembers[] = {
     MVPL_MEMBER(ShadingPush, vpl_count),
     MVPL_MEMBER(ShadingPush, flags),
     MVPL_MEMBER(ShadingPush, size),
+    MVPL_MEMBER(ShadingPush, interleave),
+    MVPL_MEMBER(ShadingPush, vpl_offset),
+    MVPL_MEMBER(InterleavePush, size),
+    MVPL_MEMBER(InterleavePush, interleave),
+    MVPL_MEMBER(InterleavePush, pad),
     MVPL_MEMBER(PresentPush, scale),
     MVPL_MEMBER(PresentPush, exposure_scale),
     MVPL_MEMBER(PresentPush, width),

@@ -29,6 +29,7 @@ Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::
     o.clamp = settings.clamp;
     o.shadows = settings.shadows;
     o.jitter = settings.jitter;
+    o.interleave = uint32_t(settings.interleave);
     return renderer.render(vpls, o);
 }
 
@@ -39,6 +40,7 @@ Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
     o.width = o.height = settings.res;
     o.clamp = settings.clamp;
     o.subpixel = {settings.jitter, uint64_t(settings.batch)};
+    o.interleave = settings.interleave;
     return reference::gather_vpls(scene, accel, vpls, o);
 }
 

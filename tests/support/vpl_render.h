@@ -25,6 +25,7 @@ struct VplRenderSettings {
     bool shadows = true;
     int batch = 32;
     bool jitter = true;  // a sub-pixel position per batch, the same in both renderers
+    int interleave = 1;  // interleaved sampling (RenderOptions::interleave), in both renderers
 };
 
 // The GPU renderer's image of `vpls` seen by the scene camera.

@@ -45,6 +45,8 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_culling = !no_shadow_culling;
     o.shadow_proxy = !no_shadow_proxy;
     o.jitter = !no_jitter;
+    o.hemicube = !no_hemicube;
+    o.interleave = uint32_t(interleave);
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -58,6 +60,12 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-shadow-proxy", &args.no_shadow_proxy,
                     "surface VPLs draw the full geometry into their shadow maps (default: the "
                     "simplified proxy of meshes of 4096+ triangles)");
+    parser.add_flag("--no-hemicube", &args.no_hemicube,
+                    "surface and area VPLs draw whole shadow cube faces (default: only the part "
+                    "their lit hemisphere reaches)");
+    parser.add_int("--interleave", &args.interleave,
+                   "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
+                   "then a geometry-aware K×K filter (1 = off)");
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     // The renderer's limits: 4096² faces × 6 × a batch must still fit in memory.
@@ -66,6 +74,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
             out_of_range(parser, "--shadow-res", "4..4096");
         if (args.batch < 1 || args.batch > 256) out_of_range(parser, "--batch", "1..256");
         if (!(args.clamp >= 0.0f && args.clamp <= 1.0f)) out_of_range(parser, "--clamp", "[0, 1]");
+        if (args.interleave < 1 || args.interleave > 8)
+            out_of_range(parser, "--interleave", "1..8");
     });
 }
 

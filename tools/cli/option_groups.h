@@ -14,7 +14,8 @@
 
 namespace mvpl::cli {
 
-// --shadow-res, --batch, --clamp, --no-jitter, --no-shadow-culling, --no-shadow-proxy: the GPU
+// --shadow-res, --batch, --clamp, --no-jitter, --no-shadow-culling, --no-shadow-proxy,
+// --no-hemicube, --interleave: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
@@ -23,6 +24,8 @@ struct RendererArgs {
     bool no_jitter = !render::RenderOptions{}.jitter;
     bool no_shadow_culling = false;
     bool no_shadow_proxy = false;
+    bool no_hemicube = false;
+    int interleave = int(render::RenderOptions{}.interleave);
 
     // Copies them into `o`.
     void apply(render::RenderOptions& o) const;

@@ -120,6 +120,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     g.max_depth = max_depth;
     g.quiet = a.quiet;
     g.subpixel = render::subpixel_schedule(ro);  // the GPU's sub-pixel positions
+    g.interleave = int(ro.interleave);
     job.compensate = a.compensation.enabled();
     job.compensation_passes = uint32_t(a.compensation.spp);
     reference::CompensationOptions& c = job.compensation;
