@@ -183,7 +183,8 @@ void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline&
 
 ShadowPass::~ShadowPass() = default;
 
-void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch) {
+void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
+                        const std::vector<bool>& skip) {
     if (batch.size() > max_batch()) {
         throw gpu::GpuError("shadow pass: a batch of " + std::to_string(batch.size()) +
                             " VPLs for " + std::to_string(max_batch()) + " cubes");
@@ -201,6 +202,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
     for (uint32_t i = 0; i < batch.size(); ++i) {
         const light::Vpl& vpl = batch[i];
         ++m_vpl_seed;  // each VPL its own hashed-transparency pattern (glTF BLEND)
+        if (!skip.empty() && skip[i]) continue;
         if (vpl.type == light::VplType::Directional) {
             if (ortho_depth_in_use) cmd.barrier();
             ortho_depth_in_use = true;

@@ -57,8 +57,10 @@ public:
     ShadowPass& operator=(const ShadowPass&) = delete;
 
     // Renders the cubes (and the orthographic maps of directional VPLs) of batch, at most
-    // max_batch VPLs, into cubes() and ortho_maps().
-    void record(gpu::CommandList& cmd, std::span<const light::Vpl> batch);
+    // max_batch VPLs, into cubes() and ortho_maps(); VPL i's only when skip is empty or
+    // skip[i] is false (a VPL the shading pass never looks up: vpl_culling.h).
+    void record(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
+                const std::vector<bool>& skip = {});
 
     const gpu::Image& cubes() const { return m_cubes; }
     // Orthographic maps of the directional VPLs (layer = index in the batch; at least 2 layers,

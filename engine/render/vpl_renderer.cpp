@@ -17,6 +17,7 @@
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shading_pass.h"
 #include "engine/render/shadow_pass.h"
+#include "engine/render/vpl_culling.h"
 #include "engine/scene/camera.h"
 
 namespace mvpl::render {
@@ -96,13 +97,19 @@ SubpixelSchedule subpixel_schedule(const RenderOptions& options) {
 
 struct VplRenderer::Impl {
     Impl(gpu::Context& c, const scene::Scene& s)
-        : context(&c), camera(s.camera), geometry(c, s), clusters(s), proxy(make_proxy(s)) {}
+        : context(&c),
+          camera(s.camera),
+          geometry(c, s),
+          clusters(s),
+          proxy(make_proxy(s)),
+          culling(s) {}
 
     gpu::Context* context;
     scene::Camera camera;
     SceneGeometry geometry;
     ShadowClusters clusters;
     std::unique_ptr<ShadowClusters> proxy;  // null when no mesh is large enough for one
+    VplCulling culling;
     // Passes are kept between renders with the same sizes (pipelines compile in ~100 ms).
     std::unique_ptr<GBufferPass> g_buffer;
     std::unique_ptr<EmissionSum> emission;
@@ -214,6 +221,7 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     m.prepare(options);
     m.options = options;
     m.view_camera = camera;
+    if (options.vpl_culling) m.culling.set_view(camera, options.width, options.height);
     if (m.geometry.environment().active()) {
         m.emission->set_background(
             background_image(m.geometry.environment(), camera, options.width, options.height));
@@ -251,8 +259,27 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
     batch.add_emission = false;
     const uint64_t drawn_before = m.shadow->triangles_drawn();
     const uint64_t texels_before = m.shadow->texels_drawn();
+    std::vector<light::Vpl> kept;
+    std::vector<bool> skip;
     for (const Slice& s : slices) {
-        const std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
+        std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
+        skip.clear();
+        if (options.vpl_culling) {
+            // Without interleaving the culled VPLs leave the batch (each would add nothing);
+            // interleaved, a VPL's index picks its pixels, so they stay and only lose their
+            // shadow cubes.
+            kept.clear();
+            skip.resize(slice.size());
+            for (size_t i = 0; i < slice.size(); ++i) {
+                skip[i] = !m.culling.may_reach_view(slice[i]);
+                if (!skip[i]) kept.push_back(slice[i]);
+            }
+            m.timings.culled_vpls += slice.size() - kept.size();
+            if (!m.interleave) {
+                slice = kept;
+                skip.clear();
+            }
+        }
         m.shading->upload(slice, m.geometry.bounds());
         if (m.interleave) {
             batch.interleave = options.interleave;
@@ -263,7 +290,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
             if (s.position != m.position) m.record_g_buffer(cmd, timer, s.position);
             if (options.shadows) {
                 const uint32_t scope = timer.begin(cmd, "shadow");
-                m.shadow->record(cmd, slice);
+                m.shadow->record(cmd, slice, skip);
                 timer.end(cmd, scope);
                 cmd.barrier();
             }
@@ -276,7 +303,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
             timer.end(cmd, scope);
         });
         m.shaded += s.count;
-        if (options.on_batch) options.on_batch(slice.size());
+        if (options.on_batch) options.on_batch(s.count);
     }
     m.timings.batches += uint32_t(slices.size());
     m.timings.g_buffer_ms += timer.milliseconds("g-buffer");

@@ -43,6 +43,9 @@ struct RenderOptions {
     // Area and Surface VPLs draw only the part of each cube face that their lit hemisphere can
     // reach (hemicube.h); false: whole faces (the A/B of mvpl bench --sweep).
     bool hemicube = true;
+    // Area and Surface VPLs whose lit half-space holds no point of the view are neither drawn
+    // nor shaded (vpl_culling.h; the image is the same to the bit); false: every VPL.
+    bool vpl_culling = true;
     // Sub-pixel positions: VPL i since begin() is shaded at position i / (batch ·
     // batches_per_position) of the sequence, its G-buffer drawn when that position comes up, so
     // that the image does not depend on how the VPLs were split into accumulate() calls. false:
@@ -76,6 +79,7 @@ struct RenderTimings {
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // triangles drawn into cube faces
     uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
+    uint64_t culled_vpls = 0;       // VPLs that could not reach the view (vpl_culling.h)
     uint32_t g_buffers = 0;         // G-buffers drawn: one per sub-pixel position
 };
 

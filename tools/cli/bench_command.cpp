@@ -46,6 +46,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.shadow_proxy = c.shadow_proxy;
     ro.interleave = uint32_t(c.interleave);
     ro.hemicube = c.hemicube;
+    ro.vpl_culling = c.vpl_culling;
     return ro;
 }
 
@@ -66,6 +67,7 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.batches = t.batches;
     s.shadow_triangles = t.shadow_triangles;
     s.shadow_texels = t.shadow_texels;
+    s.culled_vpls = t.culled_vpls;
     s.g_buffers = t.g_buffers;
     return s;
 }
@@ -111,8 +113,8 @@ int run_bench(const Args& args) {
     parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported");
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
-                    "each lever of issue 14 switched (shadow culling, proxy, hemicubes, "
-                    "interleave)");
+                    "each lever of issue 14 switched (shadow culling, proxy, hemicubes, VPL "
+                    "culling, interleave)");
     parser.add_flag("--no-shadows", &no_shadows,
                     "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
                     "measure what visibility costs)");
@@ -126,6 +128,7 @@ int run_bench(const Args& args) {
     config.jitter = !renderer_args.no_jitter;
     config.interleave = renderer_args.interleave;
     config.hemicube = !renderer_args.no_hemicube;
+    config.vpl_culling = !renderer_args.no_vpl_culling;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     if (paths < 1 || paths > (uint64_t(1) << 24))
@@ -154,6 +157,9 @@ int run_bench(const Args& args) {
         sweep_configs.push_back(c);
         c = config;
         c.hemicube = !config.hemicube;
+        sweep_configs.push_back(c);
+        c = config;
+        c.vpl_culling = !config.vpl_culling;
         sweep_configs.push_back(c);
         c = config;
         c.interleave = config.interleave == 1 ? kSweepInterleave : 1;

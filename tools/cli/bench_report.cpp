@@ -50,6 +50,8 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"shadow_proxy\": " + (r.config.shadow_proxy ? "true" : "false") + ",\n";
     s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
     s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
+    s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
+    s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
     s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
     s += i + "\"jitter\": " + (r.config.jitter ? "true" : "false") + ",\n";
@@ -72,7 +74,8 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
 std::string bench_levers(const BenchConfig& c) {
     return std::string("culling ") + (c.shadow_culling ? "on" : "off") + ", proxy " +
            (c.shadow_proxy ? "on" : "off") + ", hemicube " + (c.hemicube ? "on" : "off") +
-           ", interleave " + std::to_string(c.interleave);
+           ", VPL culling " + (c.vpl_culling ? "on" : "off") + ", interleave " +
+           std::to_string(c.interleave);
 }
 
 double BenchReport::paths_per_s() const {
@@ -107,6 +110,7 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
     r.median.batches = samples.empty() ? 0 : samples.front().batches;
     r.median.shadow_triangles = samples.empty() ? 0 : samples.front().shadow_triangles;
     r.median.shadow_texels = samples.empty() ? 0 : samples.front().shadow_texels;
+    r.median.culled_vpls = samples.empty() ? 0 : samples.front().culled_vpls;
     r.median.g_buffers = samples.empty() ? 0 : samples.front().g_buffers;
     const double n = double(vpls);
     r.shadow_triangles_per_vpl = ratio(double(r.median.shadow_triangles), n);
@@ -175,14 +179,15 @@ std::string bench_table(const BenchReport& b) {
     std::snprintf(
         buf, sizeof buf,
         "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
-        "  levers           %s\n"
+        "  levers           %s; %llu VPLs culled\n"
         "    G-buffer       %8.2f ms  %u G-buffers\n"
         "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL, %.0f texels/VPL\n"
         "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
         "  end to end       %8.3f s  %.1f VPL/s\n"
         "  peak memory      host %.1f MiB, device %.1f MiB\n",
         m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
-        m.median.batches, m.median.wall_s, bench_levers(m.config).c_str(), m.median.g_buffer_ms,
+        m.median.batches, m.median.wall_s, bench_levers(m.config).c_str(),
+        static_cast<unsigned long long>(m.median.culled_vpls), m.median.g_buffer_ms,
         m.median.g_buffers, m.median.shadow_ms, m.shadow_ms_per_vpl, m.shadow_triangles_per_vpl,
         m.shadow_texels_per_vpl,
         m.median.shading_ms, m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6,

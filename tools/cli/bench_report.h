@@ -18,6 +18,7 @@ struct BenchConfig {
     bool jitter = true;          // a G-buffer per batch (false with --no-jitter: one per render)
     int interleave = 1;          // render::RenderOptions::interleave
     bool hemicube = true;        // render::RenderOptions::hemicube
+    bool vpl_culling = true;     // render::RenderOptions::vpl_culling
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".
@@ -32,6 +33,7 @@ struct RenderSample {
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // drawn into cube faces
     uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
+    uint64_t culled_vpls = 0;       // VPLs that could not reach the view
     uint32_t g_buffers = 0;         // one per sub-pixel position
 };
 

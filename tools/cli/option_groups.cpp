@@ -46,6 +46,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_proxy = !no_shadow_proxy;
     o.jitter = !no_jitter;
     o.hemicube = !no_hemicube;
+    o.vpl_culling = !no_vpl_culling;
     o.interleave = uint32_t(interleave);
 }
 
@@ -63,6 +64,9 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-hemicube", &args.no_hemicube,
                     "surface and area VPLs draw whole shadow cube faces (default: only the part "
                     "their lit hemisphere reaches)");
+    parser.add_flag("--no-vpl-culling", &args.no_vpl_culling,
+                    "keep surface and area VPLs whose lit side holds nothing in view (default: "
+                    "they are neither drawn nor shaded)");
     parser.add_int("--interleave", &args.interleave,
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
                    "then a geometry-aware K×K filter (1 = off)");

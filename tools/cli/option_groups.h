@@ -15,7 +15,7 @@
 namespace mvpl::cli {
 
 // --shadow-res, --batch, --clamp, --no-jitter, --no-shadow-culling, --no-shadow-proxy,
-// --no-hemicube, --interleave: the GPU
+// --no-hemicube, --no-vpl-culling, --interleave: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
@@ -25,6 +25,7 @@ struct RendererArgs {
     bool no_shadow_culling = false;
     bool no_shadow_proxy = false;
     bool no_hemicube = false;
+    bool no_vpl_culling = false;
     int interleave = int(render::RenderOptions{}.interleave);
 
     // Copies them into `o`.
