@@ -81,9 +81,9 @@ Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
                 for (int x = 0; x < width; ++x) {
                     Texel& t = texels[size_t(y) * size_t(width) + size_t(x)];
                     t = Texel{};
-                    const scene::CameraRay cr = scene::generate_camera_ray(
-                        scene.camera, width, height,
-                        Vec2(float(x) + offset.x, float(y) + offset.y));
+                    const scene::CameraRay cr =
+                        scene::generate_camera_ray(scene.camera, width, height,
+                                                   Vec2(float(x) + offset.x, float(y) + offset.y));
                     const trace::Ray ray{cr.origin, cr.direction};
                     const std::optional<trace::Hit> hit = accel.intersect_camera(ray);
                     if (!hit) continue;

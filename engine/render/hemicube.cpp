@@ -16,12 +16,18 @@ struct FaceAxes {
 
 FaceAxes face_axes(uint32_t face) {
     switch (face) {
-        case 0: return {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}};
-        case 1: return {{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
-        case 2: return {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
-        case 3: return {{0, -1, 0}, {1, 0, 0}, {0, 0, -1}};
-        case 4: return {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}};
-        default: return {{0, 0, -1}, {-1, 0, 0}, {0, -1, 0}};
+        case 0:
+            return {{1, 0, 0}, {0, 0, -1}, {0, -1, 0}};
+        case 1:
+            return {{-1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
+        case 2:
+            return {{0, 1, 0}, {1, 0, 0}, {0, 0, 1}};
+        case 3:
+            return {{0, -1, 0}, {1, 0, 0}, {0, 0, -1}};
+        case 4:
+            return {{0, 0, 1}, {1, 0, 0}, {0, -1, 0}};
+        default:
+            return {{0, 0, -1}, {-1, 0, 0}, {0, -1, 0}};
     }
 }
 

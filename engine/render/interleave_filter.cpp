@@ -36,8 +36,8 @@ void InterleaveFilter::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
                               const gpu::Image& accumulation) {
     const uint32_t width = m_shaded.width();
     const uint32_t height = m_shaded.height();
-    if (g_buffer.width() != width || g_buffer.height() != height ||
-        accumulation.width() != width || accumulation.height() != height) {
+    if (g_buffer.width() != width || g_buffer.height() != height || accumulation.width() != width ||
+        accumulation.height() != height) {
         throw gpu::GpuError("interleave filter: images of different sizes");
     }
     const shared::InterleavePush push{{width, height}, m_k, 0u};

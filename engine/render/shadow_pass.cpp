@@ -218,8 +218,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
         for (uint32_t face = 0; face < 6; ++face) {
             gpu::RenderArea area{0, 0, resolution(), resolution()};
             if (hemisphere && m_hemicube) {
-                const std::optional<FaceRect> rect =
-                    lit_face_rect(vpl.normal, face, resolution());
+                const std::optional<FaceRect> rect = lit_face_rect(vpl.normal, face, resolution());
                 if (!rect) continue;
                 area = {rect->x, rect->y, rect->width, rect->height};
             } else if (hemisphere && face_behind(vpl.normal, face)) {

@@ -41,7 +41,7 @@ private:
     };
     std::vector<Box> m_chunks;   // every chunk
     std::vector<Box> m_visible;  // those in the view
-    float m_margin = 0.0f;          // for rounding: 1e-5 of the scene's diagonal
+    float m_margin = 0.0f;       // for rounding: 1e-5 of the scene's diagonal
 };
 
 }  // namespace mvpl::render

@@ -166,10 +166,9 @@ struct VplRenderer::Impl {
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
             o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
             o.shadow_proxy != built_for.shadow_proxy || o.hemicube != built_for.hemicube) {
-            shadow = std::make_unique<ShadowPass>(*context, geometry, clusters, o.shadow_resolution,
-                                                  o.batch, o.shadow_culling,
-                                                  o.shadow_proxy ? proxy.get() : nullptr,
-                                                  o.hemicube);
+            shadow = std::make_unique<ShadowPass>(
+                *context, geometry, clusters, o.shadow_resolution, o.batch, o.shadow_culling,
+                o.shadow_proxy ? proxy.get() : nullptr, o.hemicube);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();
@@ -180,10 +179,10 @@ struct VplRenderer::Impl {
         }
         if (o.interleave <= 1) {
             interleave.reset();
-        } else if (!interleave || interleave->k() != o.interleave ||
-                   o.width != built_for.width || o.height != built_for.height) {
-            interleave = std::make_unique<InterleaveFilter>(*context, o.width, o.height,
-                                                            o.interleave);
+        } else if (!interleave || interleave->k() != o.interleave || o.width != built_for.width ||
+                   o.height != built_for.height) {
+            interleave =
+                std::make_unique<InterleaveFilter>(*context, o.width, o.height, o.interleave);
         }
         if (!o.dump_shaders.empty()) dump_scene_shaders(o.dump_shaders, geometry, o.surface_vpls);
         built_for = o;

@@ -39,8 +39,8 @@ std::pair<uint32_t, glm::uvec2> texel_of(const Vec3& w, uint32_t res) {
         t = -w.y;
     }
     const auto texel = [&](float v) {
-        return uint32_t(std::clamp(std::floor((v / m * 0.5f + 0.5f) * float(res)), 0.0f,
-                                   float(res - 1)));
+        return uint32_t(
+            std::clamp(std::floor((v / m * 0.5f + 0.5f) * float(res)), 0.0f, float(res - 1)));
     };
     return {face, {texel(s), texel(t)}};
 }
@@ -73,8 +73,7 @@ TEST(Hemicube, AnAxisAlignedNormalDrawsOneFaceAndFourHalves) {
     constexpr uint32_t kRes = 64;
     const Vec3 up(0.0f, 1.0f, 0.0f);  // faces: +Y front, −Y back
     ASSERT_TRUE(lit_face_rect(up, 2, kRes).has_value());
-    EXPECT_EQ(lit_face_rect(up, 2, kRes)->width * lit_face_rect(up, 2, kRes)->height,
-              kRes * kRes);
+    EXPECT_EQ(lit_face_rect(up, 2, kRes)->width * lit_face_rect(up, 2, kRes)->height, kRes * kRes);
     EXPECT_FALSE(lit_face_rect(up, 3, kRes).has_value());
     for (const uint32_t side : {0u, 1u, 4u, 5u}) {
         const std::optional<FaceRect> r = lit_face_rect(up, side, kRes);
@@ -115,7 +114,8 @@ TEST_F(HemicubeTest, ImagesAreTheSameAsWithWholeFaces) {
         const Image full = renderer.render(vpls, o, &full_timings);
         // An axis-aligned normal draws 1 + 4 · (res/2 + 3)/res faces instead of 5: 0.62 of the
         // texels at 128², 0.75 at 16² (the margin weighs more); other normals draw less.
-        const double ratio = double(hemi_timings.shadow_texels) / double(full_timings.shadow_texels);
+        const double ratio =
+            double(hemi_timings.shadow_texels) / double(full_timings.shadow_texels);
         EXPECT_LT(ratio, shadow_res >= 128 ? 0.7 : 0.8) << "shadow faces " << shadow_res;
         RecordProperty("texel_ratio_" + std::to_string(shadow_res), std::to_string(ratio));
         size_t differing = 0;

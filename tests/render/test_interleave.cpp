@@ -26,8 +26,7 @@ constexpr int kRes = 48;
 scene::Scene plane_scene() {
     scene::Scene s;
     s.materials = {test::diffuse_material(Rgb(0.5f, 0.6f, 0.7f))};
-    s.meshes.push_back(
-        test::make_quad(Vec3(-50, 0, -50), Vec3(0, 0, 100), Vec3(100, 0, 0), 0));
+    s.meshes.push_back(test::make_quad(Vec3(-50, 0, -50), Vec3(0, 0, 100), Vec3(100, 0, 0), 0));
     s.camera = test::look_at(Vec3(0.0f, 6.0f, 1.0f), Vec3(0, 0, 0), 0.1f);
     s.has_camera = true;
     return s;

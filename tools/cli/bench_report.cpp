@@ -176,23 +176,22 @@ std::string bench_table(const BenchReport& b) {
                   static_cast<unsigned long long>(b.vpls), b.paths_per_s(),
                   b.sampling_vpls_per_s());
     s += buf;
-    std::snprintf(
-        buf, sizeof buf,
-        "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
-        "  levers           %s; %llu VPLs culled\n"
-        "    G-buffer       %8.2f ms  %u G-buffers\n"
-        "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL, %.0f texels/VPL\n"
-        "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
-        "  end to end       %8.3f s  %.1f VPL/s\n"
-        "  peak memory      host %.1f MiB, device %.1f MiB\n",
-        m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
-        m.median.batches, m.median.wall_s, bench_levers(m.config).c_str(),
-        static_cast<unsigned long long>(m.median.culled_vpls), m.median.g_buffer_ms,
-        m.median.g_buffers, m.median.shadow_ms, m.shadow_ms_per_vpl, m.shadow_triangles_per_vpl,
-        m.shadow_texels_per_vpl,
-        m.median.shading_ms, m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6,
-        m.end_to_end_s, m.end_to_end_vpls_per_s, double(b.peak_host_bytes) / (1 << 20),
-        double(b.peak_device_bytes) / (1 << 20));
+    std::snprintf(buf, sizeof buf,
+                  "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
+                  "  levers           %s; %llu VPLs culled\n"
+                  "    G-buffer       %8.2f ms  %u G-buffers\n"
+                  "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL, %.0f texels/VPL\n"
+                  "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
+                  "  end to end       %8.3f s  %.1f VPL/s\n"
+                  "  peak memory      host %.1f MiB, device %.1f MiB\n",
+                  m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
+                  m.median.batches, m.median.wall_s, bench_levers(m.config).c_str(),
+                  static_cast<unsigned long long>(m.median.culled_vpls), m.median.g_buffer_ms,
+                  m.median.g_buffers, m.median.shadow_ms, m.shadow_ms_per_vpl,
+                  m.shadow_triangles_per_vpl, m.shadow_texels_per_vpl, m.median.shading_ms,
+                  m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6, m.end_to_end_s,
+                  m.end_to_end_vpls_per_s, double(b.peak_host_bytes) / (1 << 20),
+                  double(b.peak_device_bytes) / (1 << 20));
     s += buf;
     if (!b.sweep.empty()) {
         s += "\n  batch  shadow  shadow ms/VPL  shading ms/VPL  M pixel·VPL/s  render s   VPL/s  "
