@@ -108,9 +108,11 @@ struct RenderArea {
 
 // Begins dynamic rendering over the full extent of the targets (all of the same size) and sets
 // the viewport to it. depth may be nullptr. With an area, only it is cleared and drawn (render
-// area and scissor; texels outside keep what they held); the viewport stays the full extent.
+// area and scissor; texels outside keep what they held); with a viewport, NDC maps to it rather
+// than to the full extent.
 void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
-                     const DepthTarget* depth, const RenderArea* area = nullptr);
+                     const DepthTarget* depth, const RenderArea* area = nullptr,
+                     const RenderArea* viewport = nullptr);
 void end_rendering(CommandList& cmd);
 
 // Binds pipeline and vertices, pushes push_constants (the layout's size) and draws

@@ -76,12 +76,15 @@ ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height,
 
 ShadingPass::~ShadingPass() = default;
 
-void ShadingPass::upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds) {
+void ShadingPass::upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds,
+                         std::span<const uint32_t> shadow_resolutions) {
     if (batch.size() > m_max_batch) {
         throw gpu::GpuError("shading pass: a batch of " + std::to_string(batch.size()) +
                             " VPLs for room for " + std::to_string(m_max_batch));
     }
-    const std::vector<GpuVpl> gpu_vpls = to_gpu_vpls(batch, bounds);
+    std::vector<GpuVpl> gpu_vpls = to_gpu_vpls(batch, bounds);
+    for (size_t i = 0; i < shadow_resolutions.size() && i < gpu_vpls.size(); ++i)
+        gpu_vpls[i].shadow_res = float(shadow_resolutions[i]);
     ShaderFeatures needed = m_features;
     for (const GpuVpl& g : gpu_vpls) {
         if (g.type >= uint32_t(kVplTypeCount)) {

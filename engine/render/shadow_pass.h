@@ -48,10 +48,13 @@ public:
     // proxy (may be null): the simplified casters that surface VPLs (path length ≥ 1) draw,
     // while emitter VPLs, whose shadows are the sharpest, draw `clusters`; hemicube: Area and
     // Surface VPLs draw only the texels of each face that their lit hemisphere can reach
-    // (hemicube.h), false: every face that is not wholly behind them, in full.
+    // (hemicube.h), false: every face that is not wholly behind them, in full;
+    // indirect_resolution: the face side of VPLs with path length ≥ 1, drawn into the first rows
+    // and columns of their layers (0, or not below resolution: the same as emitters').
     ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
                uint32_t resolution, uint32_t max_batch, bool culling = true,
-               const ShadowClusters* proxy = nullptr, bool hemicube = true);
+               const ShadowClusters* proxy = nullptr, bool hemicube = true,
+               uint32_t indirect_resolution = 0);
     ~ShadowPass();
     ShadowPass(const ShadowPass&) = delete;
     ShadowPass& operator=(const ShadowPass&) = delete;
@@ -67,6 +70,8 @@ public:
     // so that the view is always a 2D array).
     const gpu::Image& ortho_maps() const { return m_ortho; }
     uint32_t resolution() const { return m_cubes.width(); }
+    // The face side that vpl's cube uses (indirect_resolution for path length ≥ 1).
+    uint32_t face_resolution(const light::Vpl& vpl) const;
     uint32_t max_batch() const { return m_cubes.layers() / 6; }
     // Surfaces closer than this to a VPL do not shadow (the near plane), relative to the scene.
     float near_distance() const { return m_near; }
@@ -91,6 +96,7 @@ private:
     Casters m_proxy;  // clusters null without a proxy
     bool m_culling;
     bool m_hemicube;
+    uint32_t m_indirect_resolution;
     std::vector<gpu::IndexRange> m_ranges;  // scratch, per face
     uint64_t m_triangles_drawn = 0;
     uint64_t m_texels_drawn = 0;

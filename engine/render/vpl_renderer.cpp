@@ -165,10 +165,11 @@ struct VplRenderer::Impl {
         }
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
             o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
-            o.shadow_proxy != built_for.shadow_proxy || o.hemicube != built_for.hemicube) {
+            o.shadow_proxy != built_for.shadow_proxy || o.hemicube != built_for.hemicube ||
+            o.indirect_shadow_resolution != built_for.indirect_shadow_resolution) {
             shadow = std::make_unique<ShadowPass>(
                 *context, geometry, clusters, o.shadow_resolution, o.batch, o.shadow_culling,
-                o.shadow_proxy ? proxy.get() : nullptr, o.hemicube);
+                o.shadow_proxy ? proxy.get() : nullptr, o.hemicube, o.indirect_shadow_resolution);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();
@@ -260,6 +261,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
     const uint64_t texels_before = m.shadow->texels_drawn();
     std::vector<light::Vpl> kept;
     std::vector<bool> skip;
+    std::vector<uint32_t> resolutions;
     for (const Slice& s : slices) {
         std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
         skip.clear();
@@ -279,7 +281,12 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
                 skip.clear();
             }
         }
-        m.shading->upload(slice, m.geometry.bounds());
+        resolutions.clear();
+        if (options.shadows) {
+            for (const light::Vpl& v : slice)
+                resolutions.push_back(m.shadow->face_resolution(v));
+        }
+        m.shading->upload(slice, m.geometry.bounds(), resolutions);
         if (m.interleave) {
             batch.interleave = options.interleave;
             batch.vpl_offset = shaded_before + s.first;

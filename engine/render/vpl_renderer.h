@@ -30,7 +30,10 @@ struct RenderOptions {
     uint32_t width = 256;
     uint32_t height = 256;
     uint32_t shadow_resolution = 256;  // side of a shadow cube face in texels
-    uint32_t batch = 32;               // VPLs per shadow/shading batch
+    // The face side of indirect VPLs' cubes (path length ≥ 1), whose light is the smoother; 0:
+    // shadow_resolution (issue 14, "many small maps", rasterised).
+    uint32_t indirect_shadow_resolution = 0;
+    uint32_t batch = 32;  // VPLs per shadow/shading batch
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.
     float clamp = light::kDefaultClamp;
     bool shadows = true;  // false: every VPL unshadowed (tests, debugging)

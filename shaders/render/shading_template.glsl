@@ -112,7 +112,7 @@ CubeTexel cube_texel(vec3 w, float res) {
 // to_receiver = p − VPL, d = |to_receiver|, ng the receiver's geometric normal on the side it is
 // shaded from.
 float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
-    const float footprint = d * pc.texel_angle;
+    const float footprint = d * (2.0 / res);  // a texel's angle at the face's centre: 2 / res
     const vec3 w = to_receiver / d;
     const CubeTexel ct = cube_texel(w, res);
     const float stored =
@@ -126,7 +126,7 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
         lit = stored >= d_plane - (kConstantBias * d + kFootprintBias * footprint);
     } else {
         const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
-        lit = stored >= d - d * (kConstantBias + kSlopeBias * pc.texel_angle * tan_r);
+        lit = stored >= d - d * (kConstantBias + kSlopeBias * (2.0 / res) * tan_r);
     }
 
 //@if thin_walls
@@ -262,7 +262,9 @@ void main() {
         const vec3 f_r = closure_eval(receiver, n, wo, -w);
         if (max_component(f_r) <= 0.0) continue;
         const float vis =
-            (pc.flags & kShadows) != 0u ? visibility(i, r, d, ng, shadow_res) : 1.0;
+            (pc.flags & kShadows) != 0u
+                ? visibility(i, r, d, ng, v.shadow_res > 0.0 ? v.shadow_res : shadow_res)
+                : 1.0;
         sum += v.power * vis * f_r * cos_r * f_vpl * emitter / max(d2, pc.d_min2);
 //@endif
     }

@@ -38,7 +38,9 @@ struct GpuVpl {
     float roughness;
     float ior;
     uint closure_type;  // engine/material/closure.h, ClosureType
-    float pad3;
+    // The side of the VPL's cube faces in texels, of which it uses the first rows and columns of
+    // each layer (ShadowPass::face_resolution); 0: the cube array's.
+    float shadow_res;
 };
 
 #ifdef __cplusplus

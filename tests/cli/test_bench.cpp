@@ -143,8 +143,9 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
-    // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave.
-    ASSERT_EQ(j["sweep"].size(), 20u);
+    // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
+    // indirect faces of half the side.
+    ASSERT_EQ(j["sweep"].size(), 21u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -167,6 +168,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_EQ(j["sweep"][18]["culled_vpls"].get<int>(), 0);
     EXPECT_EQ(j["render"]["interleave"].get<int>(), 1);
     EXPECT_EQ(j["sweep"][19]["interleave"].get<int>(), 4);
+    EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(),
+              j["render"]["shadow_resolution"].get<int>() / 2);
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());

@@ -73,7 +73,7 @@ const Member kMembers[] = {
     MVPL_MEMBER(GpuVpl, roughness),
     MVPL_MEMBER(GpuVpl, ior),
     MVPL_MEMBER(GpuVpl, closure_type),
-    MVPL_MEMBER(GpuVpl, pad3),
+    MVPL_MEMBER(GpuVpl, shadow_res),
     MVPL_MEMBER(GBufferPush, view_proj),
     MVPL_MEMBER(GBufferPush, material_flags),
     MVPL_MEMBER(GBufferPush, material),

@@ -47,6 +47,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.interleave = uint32_t(c.interleave);
     ro.hemicube = c.hemicube;
     ro.vpl_culling = c.vpl_culling;
+    ro.indirect_shadow_resolution = uint32_t(c.indirect_shadow_resolution);
     return ro;
 }
 
@@ -114,7 +115,7 @@ int run_bench(const Args& args) {
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
                     "each lever of issue 14 switched (shadow culling, proxy, hemicubes, VPL "
-                    "culling, interleave)");
+                    "culling, interleave, indirect faces of half the side)");
     parser.add_flag("--no-shadows", &no_shadows,
                     "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
                     "measure what visibility costs)");
@@ -129,6 +130,7 @@ int run_bench(const Args& args) {
     config.interleave = renderer_args.interleave;
     config.hemicube = !renderer_args.no_hemicube;
     config.vpl_culling = !renderer_args.no_vpl_culling;
+    config.indirect_shadow_resolution = renderer_args.indirect_shadow_res;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     if (paths < 1 || paths > (uint64_t(1) << 24))
@@ -163,6 +165,10 @@ int run_bench(const Args& args) {
         sweep_configs.push_back(c);
         c = config;
         c.interleave = config.interleave == 1 ? kSweepInterleave : 1;
+        sweep_configs.push_back(c);
+        c = config;
+        c.indirect_shadow_resolution =
+            config.indirect_shadow_resolution == 0 ? std::max(config.shadow_resolution / 2, 4) : 0;
         sweep_configs.push_back(c);
     }
 

@@ -51,6 +51,11 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
     s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
     s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
+    s +=
+        i + "\"indirect_shadow_resolution\": " +
+        std::to_string(r.config.indirect_shadow_resolution > 0 ? r.config.indirect_shadow_resolution
+                                                               : r.config.shadow_resolution) +
+        ",\n";
     s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
     s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
@@ -75,7 +80,10 @@ std::string bench_levers(const BenchConfig& c) {
     return std::string("culling ") + (c.shadow_culling ? "on" : "off") + ", proxy " +
            (c.shadow_proxy ? "on" : "off") + ", hemicube " + (c.hemicube ? "on" : "off") +
            ", VPL culling " + (c.vpl_culling ? "on" : "off") + ", interleave " +
-           std::to_string(c.interleave);
+           std::to_string(c.interleave) + ", indirect faces " +
+           (c.indirect_shadow_resolution > 0
+                ? std::to_string(std::min(c.indirect_shadow_resolution, c.shadow_resolution)) + "²"
+                : "as emitters'");
 }
 
 double BenchReport::paths_per_s() const {

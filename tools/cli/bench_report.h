@@ -19,6 +19,7 @@ struct BenchConfig {
     int interleave = 1;          // render::RenderOptions::interleave
     bool hemicube = true;        // render::RenderOptions::hemicube
     bool vpl_culling = true;     // render::RenderOptions::vpl_culling
+    int indirect_shadow_resolution = 0;  // render::RenderOptions::indirect_shadow_resolution
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".

@@ -48,6 +48,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.hemicube = !no_hemicube;
     o.vpl_culling = !no_vpl_culling;
     o.interleave = uint32_t(interleave);
+    o.indirect_shadow_resolution = uint32_t(indirect_shadow_res);
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -67,6 +68,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-vpl-culling", &args.no_vpl_culling,
                     "keep surface and area VPLs whose lit side holds nothing in view (default: "
                     "they are neither drawn nor shaded)");
+    parser.add_int("--indirect-shadow-res", &args.indirect_shadow_res,
+                   "side of the shadow cube faces of indirect (surface) VPLs; 0: --shadow-res");
     parser.add_int("--interleave", &args.interleave,
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
                    "then a geometry-aware K×K filter (1 = off)");
@@ -78,6 +81,9 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
             out_of_range(parser, "--shadow-res", "4..4096");
         if (args.batch < 1 || args.batch > 256) out_of_range(parser, "--batch", "1..256");
         if (!(args.clamp >= 0.0f && args.clamp <= 1.0f)) out_of_range(parser, "--clamp", "[0, 1]");
+        if (args.indirect_shadow_res != 0 &&
+            (args.indirect_shadow_res < 4 || args.indirect_shadow_res > 4096))
+            out_of_range(parser, "--indirect-shadow-res", "0 or 4..4096");
         if (args.interleave < 1 || args.interleave > 8)
             out_of_range(parser, "--interleave", "1..8");
     });

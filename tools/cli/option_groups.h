@@ -15,7 +15,7 @@
 namespace mvpl::cli {
 
 // --shadow-res, --batch, --clamp, --no-jitter, --no-shadow-culling, --no-shadow-proxy,
-// --no-hemicube, --no-vpl-culling, --interleave: the GPU
+// --no-hemicube, --no-vpl-culling, --interleave, --indirect-shadow-res: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
@@ -27,6 +27,7 @@ struct RendererArgs {
     bool no_hemicube = false;
     bool no_vpl_culling = false;
     int interleave = int(render::RenderOptions{}.interleave);
+    int indirect_shadow_res = int(render::RenderOptions{}.indirect_shadow_resolution);
 
     // Copies them into `o`.
     void apply(render::RenderOptions& o) const;
