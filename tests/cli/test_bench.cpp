@@ -166,10 +166,11 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_TRUE(j["render"]["hemicube"].get<bool>());
     EXPECT_FALSE(j["sweep"][18]["vpl_culling"].get<bool>());
     EXPECT_EQ(j["sweep"][18]["culled_vpls"].get<int>(), 0);
-    EXPECT_EQ(j["render"]["interleave"].get<int>(), 1);
-    EXPECT_EQ(j["sweep"][19]["interleave"].get<int>(), 4);
-    EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(),
-              j["render"]["shadow_resolution"].get<int>() / 2);
+    EXPECT_EQ(j["render"]["interleave"].get<int>(), 2);  // the command line's default
+    EXPECT_EQ(j["sweep"][19]["interleave"].get<int>(), 1);
+    // 128² indirect faces by default, clamped to the 16² of this run; switched: as emitters'.
+    EXPECT_EQ(j["render"]["indirect_shadow_resolution"].get<int>(), 16);
+    EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(), 16);
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());

@@ -51,11 +51,11 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
     s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
     s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
-    s +=
-        i + "\"indirect_shadow_resolution\": " +
-        std::to_string(r.config.indirect_shadow_resolution > 0 ? r.config.indirect_shadow_resolution
-                                                               : r.config.shadow_resolution) +
-        ",\n";
+    const int indirect =
+        r.config.indirect_shadow_resolution > 0
+            ? std::min(r.config.indirect_shadow_resolution, r.config.shadow_resolution)
+            : r.config.shadow_resolution;
+    s += i + "\"indirect_shadow_resolution\": " + std::to_string(indirect) + ",\n";
     s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
     s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";

@@ -69,7 +69,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                     "keep surface and area VPLs whose lit side holds nothing in view (default: "
                     "they are neither drawn nor shaded)");
     parser.add_int("--indirect-shadow-res", &args.indirect_shadow_res,
-                   "side of the shadow cube faces of indirect (surface) VPLs; 0: --shadow-res");
+                   "side of the shadow cube faces of indirect (surface) VPLs, at most --shadow-res "
+                   "(0: --shadow-res)");
     parser.add_int("--interleave", &args.interleave,
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
                    "then a geometry-aware K×K filter (1 = off)");
