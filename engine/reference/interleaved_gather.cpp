@@ -8,6 +8,7 @@
 #include "engine/scene/camera.h"
 #include "engine/trace/interaction.h"
 #include "engine/trace/ray.h"
+#include "engine/trace/shading_point.h"
 #include "shaders/shared/interleave.h"
 
 namespace mvpl::reference {
@@ -21,6 +22,8 @@ struct Texel {
     Vec3 p{0.0f};
     Vec3 ng{0.0f};
     int material = -1;
+    Vec3 base{0.0f};    // the closure's base colour (the G-buffer's)
+    Vec3 albedo{0.0f};  // base, floored at kInterleaveMinAlbedo
     DVec3 shaded{0.0};
 };
 
@@ -29,7 +32,11 @@ bool same_surface(const Texel& a, const Texel& b) {
     if (!b.covered || b.material != a.material) return false;
     if (glm::dot(a.ng, b.ng) < shared::kInterleaveMinCos) return false;
     const Vec3 d = b.p - a.p;
-    return std::abs(glm::dot(a.ng, d)) <= shared::kInterleavePlaneSlope * glm::length(d);
+    if (std::abs(glm::dot(a.ng, d)) > shared::kInterleavePlaneSlope * glm::length(d)) return false;
+    const Vec3 diff = glm::abs(b.base - a.base);
+    const Vec3 allowed =
+        shared::kInterleaveAlbedo * glm::max(a.base, b.base) + Vec3(shared::kInterleaveMinAlbedo);
+    return diff.x <= allowed.x && diff.y <= allowed.y && diff.z <= allowed.z;
 }
 
 // The filtered value of pixel (x, y) (interleave.h's window, clamped into the image).
@@ -50,11 +57,11 @@ DVec3 filtered(const std::vector<Texel>& texels, int width, int height, int k, i
             if ((qx != x || qy != y) && !same_surface(t, q)) continue;
             const double w =
                 (even && std::abs(dx) == r ? 0.5 : 1.0) * (even && std::abs(dy) == r ? 0.5 : 1.0);
-            sum += w * q.shaded;
+            sum += w * q.shaded / DVec3(q.albedo);
             weights += w;
         }
     }
-    return sum / weights;
+    return DVec3(t.albedo) * (sum / weights);
 }
 
 }  // namespace
@@ -92,6 +99,9 @@ Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
                     t.p = si.p;
                     t.ng = si.ng;
                     t.material = si.material;
+                    t.base =
+                        trace::make_shading_point(accel.materials(), si).bsdf.params().base_color;
+                    t.albedo = glm::max(t.base, Vec3(shared::kInterleaveMinAlbedo));
                     const std::optional<light::Receiver> receiver =
                         light::make_receiver(scene, accel, ray);
                     if (!receiver) continue;

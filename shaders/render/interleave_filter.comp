@@ -18,6 +18,7 @@ void main() {
     const vec4 p = imageLoad(g_buffer, ivec3(px, 0));
     if (p.w <= 0.0) return;
     const vec3 n = imageLoad(g_buffer, ivec3(px, 2)).xyz;
+    const vec3 albedo = imageLoad(g_buffer, ivec3(px, 3)).rgb;
     const int k = int(pc.interleave);
     const int r = k / 2;
     const bool even = k % 2 == 0;
@@ -28,17 +29,24 @@ void main() {
         for (int dx = -r; dx <= r; ++dx) {
             const ivec2 q = centre + ivec2(dx, dy);
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
+            vec3 albedo_q = albedo;
             if (q != px) {
                 const vec4 pq = imageLoad(g_buffer, ivec3(q, 0));
                 if (pq.w != p.w) continue;
                 if (dot(n, imageLoad(g_buffer, ivec3(q, 2)).xyz) < kInterleaveMinCos) continue;
                 const vec3 d = pq.xyz - p.xyz;
                 if (abs(dot(n, d)) > kInterleavePlaneSlope * length(d)) continue;
+                albedo_q = imageLoad(g_buffer, ivec3(q, 3)).rgb;
+                if (any(greaterThan(abs(albedo_q - albedo),
+                                    kInterleaveAlbedo * max(albedo, albedo_q) +
+                                        kInterleaveMinAlbedo)))
+                    continue;
             }
             const float w = (even && abs(dx) == r ? 0.5 : 1.0) * (even && abs(dy) == r ? 0.5 : 1.0);
-            sum += w * imageLoad(shaded, q).rgb;
+            sum += w * imageLoad(shaded, q).rgb / max(albedo_q, vec3(kInterleaveMinAlbedo));
             weights += w;
         }
     }
-    imageStore(accumulation, px, vec4(imageLoad(accumulation, px).rgb + sum / weights, 1.0));
+    const vec3 filtered = max(albedo, vec3(kInterleaveMinAlbedo)) * (sum / weights);
+    imageStore(accumulation, px, vec4(imageLoad(accumulation, px).rgb + filtered, 1.0));
 }

@@ -16,7 +16,11 @@
 // acos(kInterleaveMinCos) = 25.8°, and the neighbour within kInterleavePlaneSlope (5.7°) of the
 // pixel's tangent plane as seen from it — exact on a plane (every neighbour is accepted), and it
 // rejects the other side of a crease or a depth step. A smooth curved surface keeps its
-// neighbours as long as a K-pixel footprint turns its normal by less than those angles.
+// neighbours as long as a K-pixel footprint turns its normal by less than those angles. And the
+// closure's base colour (textures) within kInterleaveAlbedo relative per channel: the shares are
+// demodulated by the neighbour's base colour and modulated by the pixel's own, so that the filter
+// averages lighting, not texture detail (a textured box lost its texels' contrast otherwise:
+// tests/cli/test_sample_models, BoxTextured).
 #ifndef MVPL_SHADERS_SHARED_INTERLEAVE_H
 #define MVPL_SHADERS_SHARED_INTERLEAVE_H
 
@@ -26,6 +30,8 @@ MVPL_SHARED_BEGIN
 
 const float kInterleaveMinCos = 0.9;
 const float kInterleavePlaneSlope = 0.1;
+const float kInterleaveAlbedo = 0.1;
+const float kInterleaveMinAlbedo = 1e-3;  // the demodulation's floor
 const uint kMaxInterleave = 8u;
 
 MVPL_SHARED_END
