@@ -255,7 +255,8 @@ VkDescriptorSet write_image_set(CommandList& cmd, const GraphicsPipeline& pipeli
 }
 
 void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
-                     const DepthTarget* depth) {
+                     const DepthTarget* depth, const RenderArea* area,
+                     const RenderArea* viewport_area) {
     const Image* first = !colors.empty() ? colors[0].image : depth ? depth->image : nullptr;
     if (!first) throw GpuError("begin_rendering without targets");
     const uint32_t width = first->width();
@@ -295,14 +296,29 @@ void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
     }
     VkRenderingInfo info{};
     info.sType = VK_STRUCTURE_TYPE_RENDERING_INFO;
-    info.renderArea = {{0, 0}, {width, height}};
+    VkRect2D scissor{{0, 0}, {width, height}};
+    if (area) {
+        if (area->width == 0 || area->height == 0 || area->x + area->width > width ||
+            area->y + area->height > height) {
+            throw GpuError("begin_rendering: the render area is empty or outside the targets");
+        }
+        scissor = {{int32_t(area->x), int32_t(area->y)}, {area->width, area->height}};
+    }
+    info.renderArea = scissor;
     info.layerCount = 1;
     info.colorAttachmentCount = uint32_t(attachments.size());
     info.pColorAttachments = attachments.data();
     info.pDepthAttachment = depth ? &depth_attachment : nullptr;
     vkCmdBeginRendering(cmd.handle(), &info);
-    const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    const VkRect2D scissor{{0, 0}, {width, height}};
+    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
+    if (viewport_area) {
+        viewport = {float(viewport_area->x),
+                    float(viewport_area->y),
+                    float(viewport_area->width),
+                    float(viewport_area->height),
+                    0.0f,
+                    1.0f};
+    }
     vkCmdSetViewport(cmd.handle(), 0, 1, &viewport);
     vkCmdSetScissor(cmd.handle(), 0, 1, &scissor);
 }

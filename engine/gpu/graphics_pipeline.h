@@ -98,10 +98,21 @@ struct DepthTarget {
     float clear = 0.0f;  // reversed depth: 0 is infinitely far
 };
 
+// A rectangle of texels: the render area of a pass that fills only part of its targets.
+struct RenderArea {
+    uint32_t x = 0;
+    uint32_t y = 0;
+    uint32_t width = 0;
+    uint32_t height = 0;
+};
+
 // Begins dynamic rendering over the full extent of the targets (all of the same size) and sets
-// the viewport and scissor to it. depth may be nullptr.
+// the viewport to it. depth may be nullptr. With an area, only it is cleared and drawn (render
+// area and scissor; texels outside keep what they held); with a viewport, NDC maps to it rather
+// than to the full extent.
 void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
-                     const DepthTarget* depth);
+                     const DepthTarget* depth, const RenderArea* area = nullptr,
+                     const RenderArea* viewport = nullptr);
 void end_rendering(CommandList& cmd);
 
 // Binds pipeline and vertices, pushes push_constants (the layout's size) and draws

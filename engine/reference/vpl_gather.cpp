@@ -8,6 +8,7 @@
 #include "engine/core/progress.h"
 #include "engine/core/timer.h"
 #include "engine/light/vpl_contribution.h"
+#include "engine/reference/interleaved_gather.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/interaction.h"
 #include "engine/trace/ray.h"
@@ -88,16 +89,32 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
                    vpls.scale,
                    d_min * d_min,
                    options.max_depth < 0 || options.max_depth >= 1};
+    // Interleaved: the pixels shade the emission alone (an empty list after all of them, so
+    // that it is averaged over the same positions) and the filtered VPL sum is added.
+    // As the GPU renderer: not where specular chains are traced (render/vpl_renderer.h).
+    const bool interleaved =
+        options.interleave > 1 && !light::scene_may_chain(scene, options.chains);
+    const std::vector<light::PreparedVpl> none;
+    GatherOptions emission_only = options;
+    emission_only.first_vpl = options.first_vpl + prepared.size();
+    const Gather ge{scene, accel, none, emission_only, vpls.scale, g.d_min2, g.show_emitters};
     Image image(options.width, options.height);
     Progress progress("vpl gather", options.height, options.quiet);
     parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {
         for (int64_t y = y0; y < y1; ++y) {
             for (int x = 0; x < options.width; ++x)
-                image.at(x, int(y)) = shade_pixel(g, x, int(y));
+                image.at(x, int(y)) = shade_pixel(interleaved ? ge : g, x, int(y));
             progress.advance();
         }
     });
     progress.finish();
+    if (interleaved) {
+        const Image sum = interleaved_vpl_sum(scene, accel, prepared, options, g.d_min2);
+        for (int y = 0; y < options.height; ++y) {
+            for (int x = 0; x < options.width; ++x)
+                image.at(x, y) += Rgb(DVec3(sum.at(x, y)) * vpls.scale);
+        }
+    }
     if (stats) {
         stats->seconds = timer.seconds();
         stats->rays = accel.ray_count() - rays_before;

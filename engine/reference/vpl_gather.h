@@ -43,6 +43,9 @@ struct GatherOptions {
     // directly (averaged over the same positions).
     light::ChainOptions chains;
     uint64_t chain_seed = 0;
+    // Interleaved sampling as RenderOptions::interleave does it (interleaved_gather.h): 1 for
+    // none.
+    int interleave = 1;
 };
 
 struct GatherStats {

@@ -1,5 +1,6 @@
 #include "engine/render/shading_pass.h"
 
+#include <algorithm>
 #include <cstring>
 
 #include "engine/gpu/command_list.h"
@@ -8,6 +9,7 @@
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
 #include "engine/render/gpu_vpl.h"
+#include "shaders/shared/interleave.h"
 #include "shaders/shared/push_constants.h"
 
 namespace mvpl::render {
@@ -76,12 +78,16 @@ ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height,
 
 ShadingPass::~ShadingPass() = default;
 
-void ShadingPass::upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds) {
+void ShadingPass::upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds,
+                         std::span<const uint32_t> shadow_resolutions) {
     if (batch.size() > m_max_batch) {
         throw gpu::GpuError("shading pass: a batch of " + std::to_string(batch.size()) +
                             " VPLs for room for " + std::to_string(m_max_batch));
     }
-    const std::vector<GpuVpl> gpu_vpls = to_gpu_vpls(batch, bounds);
+    std::vector<GpuVpl> gpu_vpls = to_gpu_vpls(batch, bounds);
+    for (size_t i = 0; i < shadow_resolutions.size() && i < gpu_vpls.size(); ++i)
+        gpu_vpls[i].face_and_length =
+            (gpu_vpls[i].face_and_length & 0xFFFF0000u) | (shadow_resolutions[i] & 0xFFFFu);
     ShaderFeatures needed = m_features;
     for (const GpuVpl& g : gpu_vpls) {
         if (g.type >= uint32_t(kVplTypeCount)) {
@@ -131,14 +137,31 @@ void ShadingPass::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
     push.flags = (batch.add_emission ? kAddEmission : 0u) | (batch.shadows ? kShadows : 0u);
     push.size[0] = width;
     push.size[1] = height;
-    std::vector<gpu::Resource> resources{&g_buffer, &m_accumulation, &m_vpls, shadows};
+    const uint32_t k = std::max(batch.interleave, 1u);
+    push.interleave = k;
+    push.vpl_offset = uint32_t(batch.vpl_offset % (k * k));
+    const gpu::Image* target = &m_accumulation;
+    if (k > 1) {
+        if (k > shared::kMaxInterleave || !batch.interleaved || batch.add_emission ||
+            batch.interleaved->width() != width || batch.interleaved->height() != height) {
+            throw gpu::GpuError(
+                "shading pass: interleaving needs K ≤ 8, an image of the accumulation's size and "
+                "no emission");
+        }
+        if (m_features.specular_chains)
+            throw gpu::GpuError("shading pass: interleaving with specular chains");
+        target = batch.interleaved;
+    }
+    std::vector<gpu::Resource> resources{&g_buffer, target, &m_vpls, shadows};
     if (m_features.has_directional() || m_features.specular_chains) resources.push_back(ortho);
     if (m_features.specular_chains) {
         if (!batch.chains) throw gpu::GpuError("shading pass: a chain program without records");
         resources.push_back(batch.chains);
     }
-    cmd.dispatch(*m_pipeline, resources, gpu::push_bytes(push),
-                 (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
+    // Interleaved: one workgroup layer per pixel class, each invocation a pixel K apart.
+    const uint32_t span = kGroupSize * k;
+    cmd.dispatch(*m_pipeline, resources, gpu::push_bytes(push), (width + span - 1) / span,
+                 (height + span - 1) / span, k * k);
 }
 
 }  // namespace mvpl::render

@@ -31,6 +31,13 @@ struct ShadingBatch {
     const gpu::Image* ortho_shadows = nullptr;
     // ChainLayer::records(): required by a program with ShaderFeatures::specular_chains.
     const gpu::Buffer* chains = nullptr;
+    // Interleaved sampling (shaders/shared/interleave.h): K > 1 shades each pixel with its
+    // class's share of the batch, times K², and stores that into `interleaved` (an RGBA32F
+    // image of the accumulation's size, InterleaveFilter::shaded()) instead of adding it to the
+    // accumulation; vpl_offset is the index of the batch's first VPL since begin().
+    uint32_t interleave = 1;
+    uint64_t vpl_offset = 0;
+    const gpu::Image* interleaved = nullptr;
 };
 
 class ShadingPass {
@@ -48,8 +55,10 @@ public:
 
     // Writes the batch into the VPL buffer: outside a recording, and not while a submitted
     // batch is still running (submit_and_wait guarantees that).
-    // bounds: the scene's (the extent of directional VPLs' maps).
-    void upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds);
+    // bounds: the scene's (the extent of directional VPLs' maps); shadow_resolutions: each VPL's
+    // face side (ShadowPass::face_resolution), empty when all use the whole array's.
+    void upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds,
+                std::span<const uint32_t> shadow_resolutions = {});
     // Records the clear of the accumulation image.
     void record_clear(gpu::CommandList& cmd);
     // Records the shading of the uploaded batch against g_buffer (GBufferPass::image()).

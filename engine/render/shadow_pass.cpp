@@ -1,5 +1,6 @@
 #include "engine/render/shadow_pass.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 
@@ -10,6 +11,7 @@
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
 #include "engine/render/directional_frame.h"
+#include "engine/render/hemicube.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shader_program.h"
 #include "shaders/shared/push_constants.h"
@@ -99,11 +101,14 @@ ShadowPass::Casters ShadowPass::upload(gpu::Context& context, const ShadowCluste
 
 ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
                        const ShadowClusters& clusters, uint32_t resolution, uint32_t max_batch,
-                       bool culling, const ShadowClusters* proxy)
+                       bool culling, const ShadowClusters* proxy, bool hemicube,
+                       uint32_t indirect_resolution)
     : m_geometry(&geometry),
       m_full(upload(context, clusters, "shadow casters")),
       m_proxy(proxy ? upload(context, *proxy, "shadow proxy") : Casters{}),
       m_culling(culling),
+      m_hemicube(hemicube),
+      m_indirect_resolution(indirect_resolution),
       m_cubes(context,
               {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
                gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
@@ -181,7 +186,13 @@ void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline&
 
 ShadowPass::~ShadowPass() = default;
 
-void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch) {
+uint32_t ShadowPass::face_resolution(const light::Vpl& vpl) const {
+    if (vpl.path_length == 0 || m_indirect_resolution == 0) return resolution();
+    return std::min(m_indirect_resolution, resolution());
+}
+
+void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
+                        const std::vector<bool>& skip) {
     if (batch.size() > max_batch()) {
         throw gpu::GpuError("shadow pass: a batch of " + std::to_string(batch.size()) +
                             " VPLs for " + std::to_string(max_batch()) + " cubes");
@@ -199,6 +210,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
     for (uint32_t i = 0; i < batch.size(); ++i) {
         const light::Vpl& vpl = batch[i];
         ++m_vpl_seed;  // each VPL its own hashed-transparency pattern (glTF BLEND)
+        if (!skip.empty() && skip[i]) continue;
         if (vpl.type == light::VplType::Directional) {
             if (ortho_depth_in_use) cmd.barrier();
             ortho_depth_in_use = true;
@@ -212,11 +224,21 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
         const bool hemisphere =
             vpl.type == light::VplType::Area || vpl.type == light::VplType::Surface;
         for (uint32_t face = 0; face < 6; ++face) {
-            if (hemisphere && face_behind(vpl.normal, face)) continue;
+            const uint32_t res = face_resolution(vpl);
+            const gpu::RenderArea viewport{0, 0, res, res};
+            gpu::RenderArea area = viewport;
+            if (hemisphere && m_hemicube) {
+                const std::optional<FaceRect> rect = lit_face_rect(vpl.normal, face, res);
+                if (!rect) continue;
+                area = {rect->x, rect->y, rect->width, rect->height};
+            } else if (hemisphere && face_behind(vpl.normal, face)) {
+                continue;
+            }
+            m_texels_drawn += uint64_t(area.width) * area.height;
             const gpu::ColorTarget color{
                 &m_cubes, 6 * i + face, {kShadowNoOccluder, 0.0f, 0.0f, 0.0f}};
             const gpu::DepthTarget depth{&m_depth, face, 0.0f};
-            gpu::begin_rendering(cmd, std::span(&color, 1), &depth);
+            gpu::begin_rendering(cmd, std::span(&color, 1), &depth, &area, &viewport);
             const ShadowPush push{{vpl.position.x, vpl.position.y, vpl.position.z, m_near},
                                   {face, 0u, 0u, 0u}};
             // Materials do not matter for distances: one index buffer for the whole scene, of
@@ -226,7 +248,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
                 // A face's texel spans at most 2/resolution radians.
                 casters.clusters->visible_ranges(vpl.position, face,
                                                  hemisphere ? &vpl.normal : nullptr,
-                                                 2.0f / float(resolution()), m_ranges);
+                                                 2.0f / float(res), m_ranges);
             } else {
                 m_ranges.assign(1, casters.clusters->all());
             }

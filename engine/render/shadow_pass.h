@@ -46,28 +46,39 @@ public:
     // resolution: the side of a cube face in texels; max_batch: cubes in the array; culling:
     // whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle;
     // proxy (may be null): the simplified casters that surface VPLs (path length ≥ 1) draw,
-    // while emitter VPLs, whose shadows are the sharpest, draw `clusters`.
+    // while emitter VPLs, whose shadows are the sharpest, draw `clusters`; hemicube: Area and
+    // Surface VPLs draw only the texels of each face that their lit hemisphere can reach
+    // (hemicube.h), false: every face that is not wholly behind them, in full;
+    // indirect_resolution: the face side of VPLs with path length ≥ 1, drawn into the first rows
+    // and columns of their layers (0, or not below resolution: the same as emitters').
     ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
                uint32_t resolution, uint32_t max_batch, bool culling = true,
-               const ShadowClusters* proxy = nullptr);
+               const ShadowClusters* proxy = nullptr, bool hemicube = true,
+               uint32_t indirect_resolution = 0);
     ~ShadowPass();
     ShadowPass(const ShadowPass&) = delete;
     ShadowPass& operator=(const ShadowPass&) = delete;
 
     // Renders the cubes (and the orthographic maps of directional VPLs) of batch, at most
-    // max_batch VPLs, into cubes() and ortho_maps().
-    void record(gpu::CommandList& cmd, std::span<const light::Vpl> batch);
+    // max_batch VPLs, into cubes() and ortho_maps(); VPL i's only when skip is empty or
+    // skip[i] is false (a VPL the shading pass never looks up: vpl_culling.h).
+    void record(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
+                const std::vector<bool>& skip = {});
 
     const gpu::Image& cubes() const { return m_cubes; }
     // Orthographic maps of the directional VPLs (layer = index in the batch; at least 2 layers,
     // so that the view is always a 2D array).
     const gpu::Image& ortho_maps() const { return m_ortho; }
     uint32_t resolution() const { return m_cubes.width(); }
+    // The face side that vpl's cube uses (indirect_resolution for path length ≥ 1).
+    uint32_t face_resolution(const light::Vpl& vpl) const;
     uint32_t max_batch() const { return m_cubes.layers() / 6; }
     // Surfaces closer than this to a VPL do not shadow (the near plane), relative to the scene.
     float near_distance() const { return m_near; }
     // Triangles drawn into cube faces since construction (bench reports the culling's effect).
     uint64_t triangles_drawn() const { return m_triangles_drawn; }
+    // Cube-face texels cleared and drawn since construction (the hemicubes' effect).
+    uint64_t texels_drawn() const { return m_texels_drawn; }
 
 private:
     void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
@@ -84,8 +95,11 @@ private:
     Casters m_full;
     Casters m_proxy;  // clusters null without a proxy
     bool m_culling;
+    bool m_hemicube;
+    uint32_t m_indirect_resolution;
     std::vector<gpu::IndexRange> m_ranges;  // scratch, per face
     uint64_t m_triangles_drawn = 0;
+    uint64_t m_texels_drawn = 0;
     gpu::Image m_cubes;
     gpu::Image m_depth;  // six layers, reused by every cube
     gpu::Image m_ortho;

@@ -14,10 +14,12 @@
 #include "engine/render/chain_layer.h"
 #include "engine/render/emission_sum.h"
 #include "engine/render/g_buffer_pass.h"
+#include "engine/render/interleave_filter.h"
 #include "engine/render/render_memory.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shading_pass.h"
 #include "engine/render/shadow_pass.h"
+#include "engine/render/vpl_culling.h"
 #include "engine/scene/camera.h"
 
 namespace mvpl::render {
@@ -81,8 +83,11 @@ std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptio
         for (size_t first = 0; first < count;) {
             const uint64_t position = schedule.position_of(index[first]);
             size_t end = first + 1;
+            // Interleaved, a VPL's index picks its pixel class from the batch's first index
+            // (ShadingBatch::vpl_offset), so a batch holds consecutive indices only.
             while (end < count && end - first < options.batch &&
-                   schedule.position_of(index[end]) == position)
+                   schedule.position_of(index[end]) == position &&
+                   (options.interleave <= 1 || index[end] == index[end - 1] + 1))
                 ++end;
             slices.push_back({first, end - first, position});
             first = end;
@@ -118,7 +123,8 @@ struct VplRenderer::Impl {
           camera(s.camera),
           geometry(c, s),
           clusters(s),
-          proxy(make_proxy(s)) {}
+          proxy(make_proxy(s)),
+          culling(s) {}
 
     gpu::Context* context;
     const scene::Scene* scene;
@@ -127,12 +133,14 @@ struct VplRenderer::Impl {
     SceneGeometry geometry;
     ShadowClusters clusters;
     std::unique_ptr<ShadowClusters> proxy;  // null when no mesh is large enough for one
+    VplCulling culling;
     // Passes are kept between renders with the same sizes (pipelines compile in ~100 ms).
     std::unique_ptr<GBufferPass> g_buffer;
     std::unique_ptr<EmissionSum> emission;
     std::unique_ptr<ShadowPass> shadow;
     std::unique_ptr<ShadingPass> shading;
     std::unique_ptr<ChainLayer> chains;  // null unless the options and the scene ask for chains
+    std::unique_ptr<InterleaveFilter> interleave;  // null without interleaved sampling
     RenderOptions built_for = unbuilt();
     // The progressive state: what begin() set up.
     RenderOptions options;
@@ -194,10 +202,11 @@ struct VplRenderer::Impl {
         }
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
             o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
-            o.shadow_proxy != built_for.shadow_proxy) {
-            shadow = std::make_unique<ShadowPass>(*context, geometry, clusters, o.shadow_resolution,
-                                                  o.batch, o.shadow_culling,
-                                                  o.shadow_proxy ? proxy.get() : nullptr);
+            o.shadow_proxy != built_for.shadow_proxy || o.hemicube != built_for.hemicube ||
+            o.indirect_shadow_resolution != built_for.indirect_shadow_resolution) {
+            shadow = std::make_unique<ShadowPass>(
+                *context, geometry, clusters, o.shadow_resolution, o.batch, o.shadow_culling,
+                o.shadow_proxy ? proxy.get() : nullptr, o.hemicube, o.indirect_shadow_resolution);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();
@@ -213,6 +222,14 @@ struct VplRenderer::Impl {
             features.specular_chains = chained;
             shading = std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch, features,
                                                     nullptr, cache);
+        }
+        // Not with chains: the filter would average the chains' different ends (vpl_renderer.h).
+        if (o.interleave <= 1 || chained) {
+            interleave.reset();
+        } else if (!interleave || interleave->k() != o.interleave || o.width != built_for.width ||
+                   o.height != built_for.height) {
+            interleave =
+                std::make_unique<InterleaveFilter>(*context, o.width, o.height, o.interleave);
         }
         if (!o.dump_shaders.empty()) dump_scene_shaders(o.dump_shaders, geometry, o.surface_vpls);
         built_for = o;
@@ -240,16 +257,18 @@ Image VplRenderer::render(const light::VplSet& vpls, const RenderOptions& option
 
 void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& options) {
     if (options.width == 0 || options.height == 0 || options.batch == 0 ||
-        options.shadow_resolution == 0 || options.batches_per_position == 0) {
+        options.shadow_resolution == 0 || options.batches_per_position == 0 ||
+        options.interleave == 0 || options.interleave > 8) {
         throw gpu::GpuError(
             "VplRenderer::begin: zero width, height, batch, shadow resolution or batches per "
-            "position");
+            "position, or interleave outside 1..8");
     }
     const auto start = std::chrono::steady_clock::now();
     Impl& m = *m_impl;
     m.prepare(options);
     m.options = options;
     m.view_camera = camera;
+    if (options.vpl_culling) m.culling.set_view(camera, options.width, options.height);
     if (m.geometry.environment().active()) {
         m.emission->set_background(
             background_image(m.geometry.environment(), camera, options.width, options.height));
@@ -281,7 +300,8 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     if (vpls.empty()) return;
     const auto start = std::chrono::steady_clock::now();
     const RenderOptions& options = m.options;
-    const std::vector<Slice> slices = plan_batches(vpls.size(), m.shaded, options, index);
+    const uint64_t shaded_before = m.shaded;
+    const std::vector<Slice> slices = plan_batches(vpls.size(), shaded_before, options, index);
     gpu::GpuTimer timer(*m.context, 3 * uint32_t(slices.size()));
 
     ShadingBatch batch;
@@ -294,27 +314,64 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     batch.add_emission = false;
     batch.chains = m.chains ? &m.chains->records() : nullptr;
     const uint64_t drawn_before = m.shadow->triangles_drawn();
+    const uint64_t texels_before = m.shadow->texels_drawn();
+    std::vector<light::Vpl> kept;
+    std::vector<bool> skip;
+    std::vector<uint32_t> resolutions;
     for (const Slice& s : slices) {
-        const std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
-        m.shading->upload(slice, m.geometry.bounds());
+        std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
+        skip.clear();
+        // Not with chains: a VPL may light only what a mirror shows, outside the view.
+        if (options.vpl_culling && !m.chains) {
+            // Without interleaving the culled VPLs leave the batch (each would add nothing);
+            // interleaved, a VPL's index picks its pixels, so they stay and only lose their
+            // shadow cubes.
+            kept.clear();
+            skip.resize(slice.size());
+            for (size_t i = 0; i < slice.size(); ++i) {
+                skip[i] = !m.culling.may_reach_view(slice[i]);
+                if (!skip[i]) kept.push_back(slice[i]);
+            }
+            m.timings.culled_vpls += slice.size() - kept.size();
+            if (!m.interleave) {
+                slice = kept;
+                skip.clear();
+            }
+        }
+        resolutions.clear();
+        if (options.shadows) {
+            for (const light::Vpl& v : slice)
+                resolutions.push_back(m.shadow->face_resolution(v));
+        }
+        m.shading->upload(slice, m.geometry.bounds(), resolutions);
+        if (m.interleave) {
+            batch.interleave = options.interleave;
+            batch.vpl_offset = index.empty() ? shaded_before + s.first : index[s.first];
+            batch.interleaved = &m.interleave->shaded();
+        }
         m.context->submit_and_wait([&](gpu::CommandList& cmd) {
             if (s.position != m.position) m.record_g_buffer(cmd, timer, s.position);
             if (options.shadows) {
                 const uint32_t scope = timer.begin(cmd, "shadow");
-                m.shadow->record(cmd, slice);
+                m.shadow->record(cmd, slice, skip);
                 timer.end(cmd, scope);
                 cmd.barrier();
             }
             const uint32_t scope = timer.begin(cmd, "shading");
             m.shading->record(cmd, m.g_buffer->image(), batch);
+            if (m.interleave) {
+                cmd.barrier();
+                m.interleave->record(cmd, m.g_buffer->image(), m.shading->accumulation());
+            }
             timer.end(cmd, scope);
         });
         m.shaded = index.empty() ? m.shaded + s.count : index[s.first + s.count - 1] + 1;
-        if (options.on_batch) options.on_batch(slice.size());
+        if (options.on_batch) options.on_batch(s.count);
     }
     m.timings.batches += uint32_t(slices.size());
     m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
     m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
+    m.timings.shadow_texels += m.shadow->texels_drawn() - texels_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
 }
 

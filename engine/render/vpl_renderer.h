@@ -34,7 +34,10 @@ struct RenderOptions {
     uint32_t width = 256;
     uint32_t height = 256;
     uint32_t shadow_resolution = 256;  // side of a shadow cube face in texels
-    uint32_t batch = 32;               // VPLs per shadow/shading batch
+    // The face side of indirect VPLs' cubes (path length ≥ 1), whose light is the smoother; 0:
+    // shadow_resolution (issue 14, "many small maps", rasterised).
+    uint32_t indirect_shadow_resolution = 0;
+    uint32_t batch = 32;  // VPLs per shadow/shading batch
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.
     float clamp = light::kDefaultClamp;
     bool shadows = true;  // false: every VPL unshadowed (tests, debugging)
@@ -44,6 +47,12 @@ struct RenderOptions {
     // Surface VPLs draw the simplified shadow proxy of the scene's large meshes
     // (shadow_clusters.h); false: every VPL draws the full geometry.
     bool shadow_proxy = true;
+    // Area and Surface VPLs draw only the part of each cube face that their lit hemisphere can
+    // reach (hemicube.h); false: whole faces (the A/B of mvpl bench --sweep).
+    bool hemicube = true;
+    // Area and Surface VPLs whose lit half-space holds no point of the view are neither drawn
+    // nor shaded (vpl_culling.h; the image is the same to the bit); false: every VPL.
+    bool vpl_culling = true;
     // Sub-pixel positions: VPL i since begin() is shaded at position i / (batch ·
     // batches_per_position) of the sequence, its G-buffer drawn when that position comes up, so
     // that the image does not depend on how the VPLs were split into accumulate() calls. false:
@@ -59,6 +68,12 @@ struct RenderOptions {
     // the scene's BVH, and a scene with a material they may continue; off by default.
     light::ChainOptions chains;
     uint64_t chain_seed = 0;
+    // Interleaved sampling (Keller & Heidrich 2001; shaders/shared/interleave.h): K in 1 … 8,
+    // 1 for none. Each pixel shades 1/K² of every batch, then a geometry-aware filter over the
+    // K×K neighbourhood on the batch's G-buffer restores the sum where the surface is smooth.
+    // Not with specular chains: a scene that traces them is shaded with K = 1 (the filter would
+    // average the chains' different ends).
+    uint32_t interleave = 1;
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.
     bool surface_vpls = true;
@@ -81,6 +96,8 @@ struct RenderTimings {
     double wall_ms = 0.0;   // host time of render(), uploads and read-back included
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // triangles drawn into cube faces
+    uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
+    uint64_t culled_vpls = 0;       // VPLs that could not reach the view (vpl_culling.h)
     uint32_t g_buffers = 0;         // G-buffers drawn: one per sub-pixel position
     double chain_ms = 0.0;          // host time tracing specular chains (in wall_ms)
     uint64_t chain_rays = 0;

@@ -119,7 +119,7 @@ CubeTexel cube_texel(vec3 w, float res) {
 // to_receiver = p − VPL, d = |to_receiver|, ng the receiver's geometric normal on the side it is
 // shaded from.
 float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
-    const float footprint = d * pc.texel_angle;
+    const float footprint = d * (2.0 / res);  // a texel's angle at the face's centre: 2 / res
     const vec3 w = to_receiver / d;
     const CubeTexel ct = cube_texel(w, res);
     const float stored =
@@ -133,7 +133,7 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
         lit = stored >= d_plane - (kConstantBias * d + kFootprintBias * footprint);
     } else {
         const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
-        lit = stored >= d - d * (kConstantBias + kSlopeBias * pc.texel_angle * tan_r);
+        lit = stored >= d - d * (kConstantBias + kSlopeBias * (2.0 / res) * tan_r);
     }
 
 //@if thin_walls
@@ -190,7 +190,20 @@ float spot_falloff(GpuVpl v, float cos_angle) {
 //@endif
 
 void main() {
-    const ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    // Interleaved sampling (shaders/shared/interleave.h): workgroup z is the pixel class c, and
+    // its 8×8 invocations are pixels of that class K apart, so that the loop over the class's
+    // VPLs is uniform in a workgroup (lavapipe runs both sides of a branch that diverges across
+    // its SIMD lanes: a per-pixel choice of VPLs would save nothing).
+    ivec2 px = ivec2(gl_GlobalInvocationID.xy);
+    uint first_vpl = 0u;
+    uint vpl_step = 1u;
+    if (pc.interleave > 1u) {
+        const uint k = pc.interleave;
+        const uint c = gl_WorkGroupID.z;
+        px = ivec2(gl_GlobalInvocationID.xy * k + uvec2(c % k, c / k));
+        vpl_step = k * k;
+        first_vpl = (c + vpl_step - pc.vpl_offset) % vpl_step;
+    }
     if (any(greaterThanEqual(uvec2(px), pc.size))) return;
     const vec4 position = imageLoad(g_buffer, ivec3(px, 0));
     if (position.w <= 0.0) return;
@@ -233,10 +246,10 @@ void main() {
 
     const vec3 emitted = (pc.flags & kAddEmission) != 0u ? emission_ior.rgb : vec3(0.0);
     vec3 sum = vec3(0.0);
-    for (uint i = 0u; i < vpl_count; ++i) {
+    for (uint i = first_vpl; i < vpl_count; i += vpl_step) {
         const GpuVpl v = vpls[i];
 //@if specular_chains
-        if (v.path_length > max_vpl_length) continue;
+        if ((v.face_and_length >> 16u) > max_vpl_length) continue;
 //@endif
 //@if directional
         if (v.type == kVplDirectional) {
@@ -278,10 +291,18 @@ void main() {
         const vec3 f_r = closure_eval(receiver, n, wo, -w);
         if (max_component(f_r) <= 0.0) continue;
         const float vis =
-            (pc.flags & kShadows) != 0u ? visibility(i, r, d, ng, shadow_res) : 1.0;
+            (pc.flags & kShadows) != 0u
+                ? visibility(i, r, d, ng, (v.face_and_length & 0xFFFFu) != 0u ? float(v.face_and_length & 0xFFFFu) : shadow_res)
+                : 1.0;
         sum += v.power * vis * f_r * cos_r * f_vpl * emitter / max(d2, pc.d_min2);
 //@endif
     }
-    const vec4 accumulated = imageLoad(accumulation, px);
-    imageStore(accumulation, px, vec4(accumulated.rgb + emitted + weight * sum, 1.0));
+    if (pc.interleave > 1u) {
+        // The class's share, K² times: the interleaved batch image, which the filter adds.
+        // (Never with chains: weight is 1 here; ShadingPass refuses the combination.)
+        imageStore(accumulation, px, vec4(float(vpl_step) * sum, 1.0));
+    } else {
+        const vec4 accumulated = imageLoad(accumulation, px);
+        imageStore(accumulation, px, vec4(accumulated.rgb + emitted + weight * sum, 1.0));
+    }
 }

@@ -38,7 +38,10 @@ struct GpuVpl {
     float roughness;
     float ior;
     uint closure_type;  // engine/material/closure.h, ClosureType
-    uint path_length;   // segments from the light (engine/light/vpl.h)
+    // Bits 0–15: the side of the VPL's cube faces in texels, of which it uses the first rows and
+    // columns of each layer (ShadowPass::face_resolution), 0 for the cube array's; bits 16–31:
+    // its path_length (segments from the light, engine/light/vpl.h; saturated at 65535).
+    uint face_and_length;
 };
 
 #ifdef __cplusplus

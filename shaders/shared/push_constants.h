@@ -56,6 +56,19 @@ struct ShadingPush {
     uint vpl_count;
     uint flags;  // kAddEmission | kShadows
     uvec2 size;
+    // Interleaved sampling (shaders/shared/interleave.h): K, 1 for none; with K > 1 the pixel
+    // of class c shades the batch's VPLs i with (vpl_offset + i) mod K² = c, times K², and
+    // stores the sum instead of adding it (the filter adds it to the accumulation).
+    uint interleave;
+    uint vpl_offset;  // the batch's first VPL index since begin(), mod K²
+};
+
+// The geometry-aware filter of interleaved sampling (engine/render/interleave_filter.cpp;
+// shaders/render/interleave_filter.comp).
+struct InterleavePush {
+    uvec2 size;
+    uint interleave;  // K
+    uint pad;
 };
 const uint kAddEmission = 1u;  // ShadingPush::flags: add the G-buffer's emitted radiance
 const uint kShadows = 2u;      // ShadingPush::flags: test visibility in the shadow maps
@@ -76,7 +89,10 @@ MVPL_STD430_MEMBER(OrthoPush, extents);
 static_assert(sizeof(OrthoPush) == 64);
 MVPL_STD430_MEMBER(ShadingPush, camera_position);
 MVPL_STD430_MEMBER(ShadingPush, size);
-static_assert(sizeof(ShadingPush) == 40);
+MVPL_STD430_MEMBER(ShadingPush, interleave);
+static_assert(sizeof(ShadingPush) == 48);
+MVPL_STD430_MEMBER(InterleavePush, size);
+static_assert(sizeof(InterleavePush) == 16);
 #endif
 
 MVPL_SHARED_END

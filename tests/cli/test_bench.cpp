@@ -34,12 +34,18 @@ void expect_rel(double actual, double expected, const char* what) {
     EXPECT_NEAR(actual, expected, kRelative * std::abs(expected)) << what;
 }
 
-// Every number anywhere in the document is finite and positive (counts, times, rates, bytes);
-// the rest are strings (scene, device) and the `shadows` flag.
+// Every number anywhere in the document is finite and positive (counts, times, rates, bytes),
+// but for the count of culled VPLs, which is ≥ 0; the rest are strings (scene, device) and
+// flags.
 void expect_positive_numbers(const json& j, const std::string& where) {
     if (j.is_object()) {
-        for (const auto& [key, value] : j.items())
+        for (const auto& [key, value] : j.items()) {
+            if (key == "culled_vpls") {
+                EXPECT_GE(value.get<double>(), 0.0) << where;
+                continue;
+            }
             expect_positive_numbers(value, where + "." + key);
+        }
     } else if (j.is_array()) {
         for (size_t i = 0; i < j.size(); ++i)
             expect_positive_numbers(j[i], where + "[" + std::to_string(i) + "]");
@@ -137,8 +143,9 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
-    // shadow culling off and with the shadow proxy off.
-    ASSERT_EQ(j["sweep"].size(), 17u);
+    // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
+    // indirect faces of half the side.
+    ASSERT_EQ(j["sweep"].size(), 21u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -155,6 +162,19 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_GT(j["render"]["shadow_triangles_per_vpl"].get<double>(), 0.0);
     EXPECT_FALSE(j["sweep"][16]["shadow_proxy"].get<bool>());
     EXPECT_TRUE(j["sweep"][16]["shadow_culling"].get<bool>());
+    EXPECT_FALSE(j["sweep"][17]["hemicube"].get<bool>());
+    EXPECT_TRUE(j["render"]["hemicube"].get<bool>());
+    EXPECT_FALSE(j["sweep"][18]["vpl_culling"].get<bool>());
+    EXPECT_EQ(j["sweep"][18]["culled_vpls"].get<int>(), 0);
+    EXPECT_EQ(j["render"]["interleave"].get<int>(), 2);  // the command line's default
+    EXPECT_EQ(j["sweep"][19]["interleave"].get<int>(), 1);
+    // 128² indirect faces by default, clamped to the 16² of this run; switched: as emitters'.
+    EXPECT_EQ(j["render"]["indirect_shadow_resolution"].get<int>(), 16);
+    EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(), 16);
+    // Hemicubes only ever remove texels from a face.
+    EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
+              j["sweep"][17]["shadow_texels_per_vpl"].get<double>());
+    EXPECT_NE(s_result.out.find("levers"), std::string::npos) << s_result.out;
     // The table for people: a header and one row per configuration.
     EXPECT_NE(s_result.out.find("end to end"), std::string::npos) << s_result.out;
     EXPECT_NE(s_result.out.find("batch  shadow"), std::string::npos) << s_result.out;

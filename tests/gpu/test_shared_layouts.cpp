@@ -39,9 +39,11 @@ layout(std430, binding = 5) buffer B5 { ShadingPush shading; };
 layout(std430, binding = 6) buffer B6 { PresentPush present; };
 layout(std430, binding = 7) buffer B7 { EmissionPush emission; };
 layout(std430, binding = 8) buffer B8 { ChainRecord chain; };
+layout(std430, binding = 9) buffer B9 { InterleavePush interleave; };
 void main() {
     shading.vpl_count = vpl.type + g_buffer.material + material.size.x + shadow.face.x +
-                        uint(ortho.extents.x) + present.width + emission.layer + chain.state;
+                        uint(ortho.extents.x) + present.width + emission.layer + chain.state +
+                        interleave.interleave;
 }
 )";
 
@@ -74,7 +76,7 @@ const Member kMembers[] = {
     MVPL_MEMBER(GpuVpl, roughness),
     MVPL_MEMBER(GpuVpl, ior),
     MVPL_MEMBER(GpuVpl, closure_type),
-    MVPL_MEMBER(GpuVpl, path_length),
+    MVPL_MEMBER(GpuVpl, face_and_length),
     MVPL_MEMBER(ChainRecord, position),
     MVPL_MEMBER(ChainRecord, state),
     MVPL_MEMBER(ChainRecord, shading_normal),
@@ -109,6 +111,11 @@ const Member kMembers[] = {
     MVPL_MEMBER(ShadingPush, vpl_count),
     MVPL_MEMBER(ShadingPush, flags),
     MVPL_MEMBER(ShadingPush, size),
+    MVPL_MEMBER(ShadingPush, interleave),
+    MVPL_MEMBER(ShadingPush, vpl_offset),
+    MVPL_MEMBER(InterleavePush, size),
+    MVPL_MEMBER(InterleavePush, interleave),
+    MVPL_MEMBER(InterleavePush, pad),
     MVPL_MEMBER(PresentPush, scale),
     MVPL_MEMBER(PresentPush, exposure_scale),
     MVPL_MEMBER(PresentPush, width),

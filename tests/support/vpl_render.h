@@ -29,6 +29,7 @@ struct VplRenderSettings {
     float chain_roughness = -1.0f;
     int chain_max_depth = -1;
     uint64_t chain_seed = 0;
+    int interleave = 1;  // interleaved sampling (RenderOptions::interleave), in both renderers
 };
 
 // The GPU renderer's image of `vpls` seen by the scene camera.

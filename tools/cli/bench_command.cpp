@@ -35,6 +35,8 @@ namespace {
 // --sweep: batch sizes × shadow face sides, around the defaults (32, 256).
 constexpr int kSweepBatches[] = {8, 16, 32, 64, 128};
 constexpr int kSweepShadowResolutions[] = {128, 256, 512};
+// The interleave the sweep tries when the main configuration has none.
+constexpr int kSweepInterleave = 4;
 
 render::RenderOptions render_options(const BenchConfig& c, float clamp, bool shadows) {
     render::RenderOptions ro;
@@ -47,6 +49,10 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.shadows = shadows;
     ro.shadow_culling = c.shadow_culling;
     ro.shadow_proxy = c.shadow_proxy;
+    ro.interleave = uint32_t(c.interleave);
+    ro.hemicube = c.hemicube;
+    ro.vpl_culling = c.vpl_culling;
+    ro.indirect_shadow_resolution = uint32_t(c.indirect_shadow_resolution);
     return ro;
 }
 
@@ -105,6 +111,8 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.shading_ms = t.shading_ms;
     s.batches = t.batches;
     s.shadow_triangles = t.shadow_triangles;
+    s.shadow_texels = t.shadow_texels;
+    s.culled_vpls = t.culled_vpls;
     s.g_buffers = t.g_buffers;
     if (ranks.size() > 1) {
         // GPU time and work summed over the ranks, so that per VPL they are the job's cost.
@@ -168,7 +176,8 @@ int run_bench(const Args& args) {
     parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported");
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
-                    "shadow culling switched");
+                    "each lever of issue 14 switched (shadow culling, proxy, hemicubes, VPL "
+                    "culling, interleave, indirect faces of half the side)");
     parser.add_flag("--no-shadows", &no_shadows,
                     "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
                     "measure what visibility costs)");
@@ -184,6 +193,10 @@ int run_bench(const Args& args) {
     config.shadow_culling = !renderer_args.no_shadow_culling;
     config.shadow_proxy = !renderer_args.no_shadow_proxy;
     config.jitter = !renderer_args.no_jitter;
+    config.interleave = renderer_args.interleave;
+    config.hemicube = !renderer_args.no_hemicube;
+    config.vpl_culling = !renderer_args.no_vpl_culling;
+    config.indirect_shadow_resolution = renderer_args.indirect_shadow_res;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     std::ofstream json_out;
@@ -210,6 +223,19 @@ int run_bench(const Args& args) {
         sweep_configs.push_back(c);
         c = config;
         c.shadow_proxy = !config.shadow_proxy;
+        sweep_configs.push_back(c);
+        c = config;
+        c.hemicube = !config.hemicube;
+        sweep_configs.push_back(c);
+        c = config;
+        c.vpl_culling = !config.vpl_culling;
+        sweep_configs.push_back(c);
+        c = config;
+        c.interleave = config.interleave == 1 ? kSweepInterleave : 1;
+        sweep_configs.push_back(c);
+        c = config;
+        c.indirect_shadow_resolution =
+            config.indirect_shadow_resolution == 0 ? std::max(config.shadow_resolution / 2, 4) : 0;
         sweep_configs.push_back(c);
     }
 

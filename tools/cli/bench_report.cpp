@@ -48,6 +48,16 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"batch\": " + std::to_string(r.config.batch) + ",\n";
     s += i + "\"shadow_culling\": " + (r.config.shadow_culling ? "true" : "false") + ",\n";
     s += i + "\"shadow_proxy\": " + (r.config.shadow_proxy ? "true" : "false") + ",\n";
+    s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
+    s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
+    s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
+    const int indirect =
+        r.config.indirect_shadow_resolution > 0
+            ? std::min(r.config.indirect_shadow_resolution, r.config.shadow_resolution)
+            : r.config.shadow_resolution;
+    s += i + "\"indirect_shadow_resolution\": " + std::to_string(indirect) + ",\n";
+    s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
+    s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
     s += i + "\"jitter\": " + (r.config.jitter ? "true" : "false") + ",\n";
     s += i + "\"batches\": " + std::to_string(r.median.batches) + ",\n";
@@ -65,6 +75,16 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
 }
 
 }  // namespace
+
+std::string bench_levers(const BenchConfig& c) {
+    return std::string("culling ") + (c.shadow_culling ? "on" : "off") + ", proxy " +
+           (c.shadow_proxy ? "on" : "off") + ", hemicube " + (c.hemicube ? "on" : "off") +
+           ", VPL culling " + (c.vpl_culling ? "on" : "off") + ", interleave " +
+           std::to_string(c.interleave) + ", indirect faces " +
+           (c.indirect_shadow_resolution > 0
+                ? std::to_string(std::min(c.indirect_shadow_resolution, c.shadow_resolution)) + "²"
+                : "as emitters'");
+}
 
 double BenchReport::paths_per_s() const {
     return ratio(double(paths), sampling_s);
@@ -97,9 +117,12 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
     r.median.wall_s = field(&RenderSample::wall_s);
     r.median.batches = samples.empty() ? 0 : samples.front().batches;
     r.median.shadow_triangles = samples.empty() ? 0 : samples.front().shadow_triangles;
+    r.median.shadow_texels = samples.empty() ? 0 : samples.front().shadow_texels;
+    r.median.culled_vpls = samples.empty() ? 0 : samples.front().culled_vpls;
     r.median.g_buffers = samples.empty() ? 0 : samples.front().g_buffers;
     const double n = double(vpls);
     r.shadow_triangles_per_vpl = ratio(double(r.median.shadow_triangles), n);
+    r.shadow_texels_per_vpl = ratio(double(r.median.shadow_texels), n);
     r.shadow_ms_per_vpl = ratio(r.median.shadow_ms, n);
     r.shading_ms_per_vpl = ratio(r.median.shading_ms, n);
     r.shading_pixel_vpls_per_s =
@@ -146,7 +169,7 @@ std::string bench_json(const BenchReport& b) {
 
 std::string bench_table(const BenchReport& b) {
     const RenderResult& m = b.main;
-    char buf[512];
+    char buf[1024];
     std::string s;
     std::snprintf(buf, sizeof buf,
                   "bench: %s, %llu triangles, %s; medians of %d%s%s\n"
@@ -163,31 +186,31 @@ std::string bench_table(const BenchReport& b) {
                   static_cast<unsigned long long>(b.vpls), b.paths_per_s(),
                   b.sampling_vpls_per_s());
     s += buf;
-    std::snprintf(
-        buf, sizeof buf,
-        "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
-        "    G-buffer       %8.2f ms  %u G-buffers\n"
-        "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL (culling %s, proxy %s)\n"
-        "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
-        "  end to end       %8.3f s  %.1f VPL/s\n"
-        "  peak memory      host %.1f MiB, device %.1f MiB\n",
-        m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
-        m.median.batches, m.median.wall_s, m.median.g_buffer_ms, m.median.g_buffers,
-        m.median.shadow_ms, m.shadow_ms_per_vpl, m.shadow_triangles_per_vpl,
-        m.config.shadow_culling ? "on" : "off", m.config.shadow_proxy ? "on" : "off",
-        m.median.shading_ms, m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6,
-        m.end_to_end_s, m.end_to_end_vpls_per_s, double(b.peak_host_bytes) / (1 << 20),
-        double(b.peak_device_bytes) / (1 << 20));
+    std::snprintf(buf, sizeof buf,
+                  "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
+                  "  levers           %s; %llu VPLs culled\n"
+                  "    G-buffer       %8.2f ms  %u G-buffers\n"
+                  "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL, %.0f texels/VPL\n"
+                  "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
+                  "  end to end       %8.3f s  %.1f VPL/s\n"
+                  "  peak memory      host %.1f MiB, device %.1f MiB\n",
+                  m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
+                  m.median.batches, m.median.wall_s, bench_levers(m.config).c_str(),
+                  static_cast<unsigned long long>(m.median.culled_vpls), m.median.g_buffer_ms,
+                  m.median.g_buffers, m.median.shadow_ms, m.shadow_ms_per_vpl,
+                  m.shadow_triangles_per_vpl, m.shadow_texels_per_vpl, m.median.shading_ms,
+                  m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6, m.end_to_end_s,
+                  m.end_to_end_vpls_per_s, double(b.peak_host_bytes) / (1 << 20),
+                  double(b.peak_device_bytes) / (1 << 20));
     s += buf;
     if (!b.sweep.empty()) {
-        s += "\n  batch  shadow  culling  proxy  shadow ms/VPL  shading ms/VPL  M pixel·VPL/s  "
-             "render s  VPL/s\n";
+        s += "\n  batch  shadow  shadow ms/VPL  shading ms/VPL  M pixel·VPL/s  render s   VPL/s  "
+             "levers\n";
         for (const RenderResult& r : b.sweep) {
-            std::snprintf(
-                buf, sizeof buf, "  %5d  %6d  %7s  %5s  %13.3f  %14.3f  %13.1f  %8.3f  %5.1f\n",
-                r.config.batch, r.config.shadow_resolution, r.config.shadow_culling ? "on" : "off",
-                r.config.shadow_proxy ? "on" : "off", r.shadow_ms_per_vpl, r.shading_ms_per_vpl,
-                r.shading_pixel_vpls_per_s * 1e-6, r.median.wall_s, r.end_to_end_vpls_per_s);
+            std::snprintf(buf, sizeof buf, "  %5d  %6d  %13.3f  %14.3f  %13.1f  %8.3f  %6.1f  %s\n",
+                          r.config.batch, r.config.shadow_resolution, r.shadow_ms_per_vpl,
+                          r.shading_ms_per_vpl, r.shading_pixel_vpls_per_s * 1e-6, r.median.wall_s,
+                          r.end_to_end_vpls_per_s, bench_levers(r.config).c_str());
             s += buf;
         }
     }

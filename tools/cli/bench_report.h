@@ -16,7 +16,14 @@ struct BenchConfig {
     bool shadow_culling = true;  // render::RenderOptions::shadow_culling
     bool shadow_proxy = true;    // render::RenderOptions::shadow_proxy
     bool jitter = true;          // a G-buffer per batch (false with --no-jitter: one per render)
+    int interleave = 1;          // render::RenderOptions::interleave
+    bool hemicube = true;        // render::RenderOptions::hemicube
+    bool vpl_culling = true;     // render::RenderOptions::vpl_culling
+    int indirect_shadow_resolution = 0;  // render::RenderOptions::indirect_shadow_resolution
 };
+
+// The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".
+std::string bench_levers(const BenchConfig& config);
 
 // One measured render of the VPLs with one configuration. Times in seconds unless named _ms.
 struct RenderSample {
@@ -26,6 +33,8 @@ struct RenderSample {
     double wall_s = 0.0;  // host time of begin + accumulate + resolve (uploads, read-back)
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // drawn into cube faces
+    uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
+    uint64_t culled_vpls = 0;       // VPLs that could not reach the view
     uint32_t g_buffers = 0;         // one per sub-pixel position
 };
 
@@ -36,6 +45,7 @@ struct RenderResult {
     RenderSample median;
     double shadow_ms_per_vpl = 0.0;
     double shadow_triangles_per_vpl = 0.0;
+    double shadow_texels_per_vpl = 0.0;
     double shading_ms_per_vpl = 0.0;
     double shading_pixel_vpls_per_s = 0.0;  // width · height · VPLs / shading GPU seconds
     double end_to_end_s = 0.0;              // light-path generation + render wall time

@@ -46,6 +46,10 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_proxy = !no_shadow_proxy;
     o.jitter = !no_jitter;
     o.chains.max_roughness = no_chains ? -1.0f : chain_roughness;
+    o.hemicube = !no_hemicube;
+    o.vpl_culling = !no_vpl_culling;
+    o.interleave = uint32_t(interleave);
+    o.indirect_shadow_resolution = uint32_t(indirect_shadow_res);
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -59,6 +63,18 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-shadow-proxy", &args.no_shadow_proxy,
                     "surface VPLs draw the full geometry into their shadow maps (default: the "
                     "simplified proxy of meshes of 4096+ triangles)");
+    parser.add_flag("--no-hemicube", &args.no_hemicube,
+                    "surface and area VPLs draw whole shadow cube faces (default: only the part "
+                    "their lit hemisphere reaches)");
+    parser.add_flag("--no-vpl-culling", &args.no_vpl_culling,
+                    "keep surface and area VPLs whose lit side holds nothing in view (default: "
+                    "they are neither drawn nor shaded)");
+    parser.add_int("--indirect-shadow-res", &args.indirect_shadow_res,
+                   "side of the shadow cube faces of indirect (surface) VPLs, at most --shadow-res "
+                   "(0: --shadow-res)");
+    parser.add_int("--interleave", &args.interleave,
+                   "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
+                   "then a geometry-aware K×K filter (1 = off)");
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     parser.add_float("--chain-roughness", &args.chain_roughness,
@@ -74,6 +90,11 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
         if (!(args.clamp >= 0.0f && args.clamp <= 1.0f)) out_of_range(parser, "--clamp", "[0, 1]");
         if (!(args.chain_roughness >= 0.0f && args.chain_roughness <= 1.0f))
             out_of_range(parser, "--chain-roughness", "[0, 1]");
+        if (args.indirect_shadow_res != 0 &&
+            (args.indirect_shadow_res < 4 || args.indirect_shadow_res > 4096))
+            out_of_range(parser, "--indirect-shadow-res", "0 or 4..4096");
+        if (args.interleave < 1 || args.interleave > 8)
+            out_of_range(parser, "--interleave", "1..8");
     });
 }
 

@@ -78,6 +78,7 @@ int run_preview(const Args& args) {
     o.batch = uint32_t(renderer.batch);
     o.jitter = !renderer.no_jitter;
     o.clamp = renderer.clamp;
+    renderer.apply(o.levers);
     o.hud = !no_hud;
     o.motion_scaling = !no_motion_scaling;
     o.camera = camera.choice;

@@ -145,6 +145,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     g.subpixel = render::subpixel_schedule(ro);  // the GPU's sub-pixel positions
     g.chains = ro.chains;                        // and its specular chains
     g.chain_seed = ro.chain_seed;
+    g.interleave = int(ro.interleave);
     job.compensate = a.compensation.enabled();
     job.compensation_passes = uint32_t(a.compensation.spp);
     reference::CompensationOptions& c = job.compensation;

@@ -226,7 +226,7 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     if (chain && !moving && !m_chain) m_chain = make_history(m_sampler);
     m_history = chain && !moving ? m_chain.get() : m_mc_history.get();
     m_motion_sum = moving && (divisor > 1 || chain);
-    render::RenderOptions ro;
+    render::RenderOptions ro = m_options.levers;
     ro.width = m_render_width;
     ro.height = m_render_height;
     ro.shadow_resolution = m_options.shadow_resolution;

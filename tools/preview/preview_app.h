@@ -35,6 +35,9 @@ struct PreviewOptions {
     uint32_t shadow_resolution = render::RenderOptions{}.shadow_resolution;
     uint32_t batch = render::RenderOptions{}.batch;
     bool jitter = render::RenderOptions{}.jitter;  // a new sub-pixel position per batch
+    // The renderer's levers (shadow culling, proxy, hemicubes, VPL culling, interleave, indirect
+    // faces), as the command line set them; its sizes, batch, jitter and clamp are the above.
+    render::RenderOptions levers;
     bool hud = true;
     // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
     bool motion_scaling = true;

@@ -1,0 +1,22 @@
+#pragma once
+// The CPU oracle's interleaved sampling (shaders/shared/interleave.h), so that a GPU image
+// rendered with `--interleave K` can be checked pixel by pixel: per sub-pixel position, each
+// pixel's class share of the position's VPLs (times K²) with exact Embree visibility, then the
+// same geometry-aware filter as interleave_filter.comp over the first hits of that position's
+// camera rays. gather_vpls calls it when GatherOptions::interleave > 1.
+#include <vector>
+
+#include "engine/core/image.h"
+#include "engine/light/vpl_contribution.h"
+#include "engine/reference/vpl_gather.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl::reference {
+
+// Σ over the list's VPLs, interleaved and filtered, unscaled (no emission); d_min2 = d_min².
+Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
+                          const std::vector<light::PreparedVpl>& vpls, const GatherOptions& options,
+                          float d_min2);
+
+}  // namespace mvpl::reference

@@ -1,0 +1,48 @@
+#include "engine/render/interleave_filter.h"
+
+#include "engine/gpu/command_list.h"
+#include "engine/gpu/compute_pipeline.h"
+#include "engine/gpu/gpu_error.h"
+#include "engine/gpu/shader_compiler.h"
+#include "shaders/shared/interleave.h"
+#include "shaders/shared/push_constants.h"
+
+namespace mvpl::render {
+namespace {
+
+constexpr uint32_t kGroupSize = 8;  // interleave_filter.comp's local size
+
+}  // namespace
+
+InterleaveFilter::InterleaveFilter(gpu::Context& context, uint32_t width, uint32_t height,
+                                   uint32_t k)
+    : m_shaded(context,
+               {width, height, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
+               "interleaved batch"),
+      m_pipeline(std::make_unique<gpu::ComputePipeline>(
+          context, gpu::compile_embedded_shader("render/interleave_filter.comp"),
+          gpu::ComputeLayout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
+                              gpu::BindingType::storage_image},
+                             sizeof(shared::InterleavePush)},
+          "interleave filter")),
+      m_k(k) {
+    if (k < 2 || k > shared::kMaxInterleave)
+        throw gpu::GpuError("interleave filter: K must be in 2..8");
+}
+
+InterleaveFilter::~InterleaveFilter() = default;
+
+void InterleaveFilter::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
+                              const gpu::Image& accumulation) {
+    const uint32_t width = m_shaded.width();
+    const uint32_t height = m_shaded.height();
+    if (g_buffer.width() != width || g_buffer.height() != height || accumulation.width() != width ||
+        accumulation.height() != height) {
+        throw gpu::GpuError("interleave filter: images of different sizes");
+    }
+    const shared::InterleavePush push{{width, height}, m_k, 0u};
+    cmd.dispatch(*m_pipeline, {&g_buffer, &m_shaded, &accumulation}, gpu::push_bytes(push),
+                 (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
+}
+
+}  // namespace mvpl::render

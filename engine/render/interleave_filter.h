@@ -1,0 +1,42 @@
+#pragma once
+// The geometry-aware filter of interleaved sampling (Keller & Heidrich 2001;
+// shaders/shared/interleave.h): the shading pass stores each pixel's share of a batch, K² times,
+// into shaded(), and record() adds to the accumulation the mean of those over each pixel's K×K
+// neighbours on the same surface of the batch's G-buffer. The filter is linear in shaded(), so
+// that one pass per batch filters a sub-pixel position's batches as one would. Vulkan-free to
+// include.
+#include <cstdint>
+#include <memory>
+
+#include "engine/gpu/image.h"
+
+namespace mvpl::gpu {
+class CommandList;
+class ComputePipeline;
+class Context;
+}  // namespace mvpl::gpu
+
+namespace mvpl::render {
+
+class InterleaveFilter {
+public:
+    // k in 2 … shared::kMaxInterleave.
+    InterleaveFilter(gpu::Context& context, uint32_t width, uint32_t height, uint32_t k);
+    ~InterleaveFilter();
+    InterleaveFilter(const InterleaveFilter&) = delete;
+    InterleaveFilter& operator=(const InterleaveFilter&) = delete;
+
+    // The interleaved batch image the shading pass writes (ShadingBatch::interleaved).
+    const gpu::Image& shaded() const { return m_shaded; }
+    uint32_t k() const { return m_k; }
+    // Adds the filtered shaded() into accumulation, with the neighbourhoods of g_buffer
+    // (GBufferPass::image()); after a barrier that follows the shading.
+    void record(gpu::CommandList& cmd, const gpu::Image& g_buffer, const gpu::Image& accumulation);
+
+private:
+    gpu::Image m_shaded;
+    std::unique_ptr<gpu::ComputePipeline> m_pipeline;
+    uint32_t m_k;
+};
+
+}  // namespace mvpl::render

@@ -1,0 +1,39 @@
+// Interleaved sampling (Keller & Heidrich 2001, "Interleaved Sampling"): in each K×K block of
+// pixels, the pixel of class c = (x mod K) + K · (y mod K) shades only the VPLs of a batch whose
+// index since begin() is c mod K², times K²; a geometry-aware filter then averages each pixel
+// over the K×K neighbourhood of pixels on the same surface, so that where the whole
+// neighbourhood is accepted every VPL is counted once. The GPU filter
+// (shaders/render/interleave_filter.comp) and the CPU oracle's
+// (engine/reference/interleaved_gather.cpp) read these constants, so that both accept the same
+// neighbours.
+//
+// The window: for odd K the K×K pixels centred on the pixel; for even K the (K+1)×(K+1) ones,
+// the outer rows and columns weighted ½ (the two share their class, so that every class weighs
+// 1 in all and the window stays centred: an even K×K window would shift the image by half a
+// pixel). Near the image's border the window's centre moves inwards until the window fits.
+//
+// Same surface: both covered by the same material, geometric (winding) normals within
+// acos(kInterleaveMinCos) = 25.8°, and the neighbour within kInterleavePlaneSlope (5.7°) of the
+// pixel's tangent plane as seen from it — exact on a plane (every neighbour is accepted), and it
+// rejects the other side of a crease or a depth step. A smooth curved surface keeps its
+// neighbours as long as a K-pixel footprint turns its normal by less than those angles. And the
+// closure's base colour (textures) within kInterleaveAlbedo relative per channel: the shares are
+// demodulated by the neighbour's base colour and modulated by the pixel's own, so that the filter
+// averages lighting, not texture detail (a textured box lost its texels' contrast otherwise:
+// tests/cli/test_sample_models, BoxTextured).
+#ifndef MVPL_SHADERS_SHARED_INTERLEAVE_H
+#define MVPL_SHADERS_SHARED_INTERLEAVE_H
+
+#include "prelude.h"
+
+MVPL_SHARED_BEGIN
+
+const float kInterleaveMinCos = 0.9;
+const float kInterleavePlaneSlope = 0.1;
+const float kInterleaveAlbedo = 0.1;
+const float kInterleaveMinAlbedo = 1e-3;  // the demodulation's floor
+const uint kMaxInterleave = 8u;
+
+MVPL_SHARED_END
+
+#endif
