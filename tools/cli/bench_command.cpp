@@ -254,9 +254,8 @@ int run_bench(const Args& args) {
         std::unique_ptr<gpu::Context> context;
         std::unique_ptr<render::VplRenderer> renderer;
         cluster::together(ranks, [&] {
-            session = std::make_unique<session::SceneSession>(scene_path, camera.choice,
-                                                              environment.choice,
-                                                              scene_file.options);
+            session = std::make_unique<session::SceneSession>(
+                scene_path, camera.choice, environment.choice, scene_file.options);
             load_s.push_back(session->load_seconds());
             bvh_s.push_back(session->bvh_seconds());
             if (k == 0 && ranks.root()) session->warn_if_no_light("nothing to bench");

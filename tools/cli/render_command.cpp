@@ -186,9 +186,8 @@ int run_render(const Args& args) {
         if (ranks.root()) check_outputs(a.outputs);
         if (!ranks.root()) a.quiet = true;
         total.reset();
-        session = std::make_unique<session::SceneSession>(a.scene_path, a.camera.choice,
-                                                          a.environment.choice,
-                                                          a.scene_file.options);
+        session = std::make_unique<session::SceneSession>(
+            a.scene_path, a.camera.choice, a.environment.choice, a.scene_file.options);
         apply_scene_defaults(parser, session->scene(), &a.settings.tracer.max_depth, &a.width,
                              &a.height);
         session->warn_if_no_light("the image shows emitters only");
