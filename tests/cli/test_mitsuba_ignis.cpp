@@ -5,6 +5,9 @@
 // load to the same image from both formats.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -119,9 +122,11 @@ TEST(MitsubaIgnis, PathTracerMatchesMitsubasReferences) {
 
 // The VPL renderer (GPU, Monte Carlo, clamping compensation on: unbiased up to what the
 // compensation misses) on the same files: the mean per channel within the path tracer's 1 %.
-// 1024 light paths keep the mean's own noise far below that (measured 0.05 % to 0.3 %).
-// sphere-light is measured, not bounded: the VPL renderer reads 2.0–3.0 % above Mitsuba there,
-// from the XML and from its glTF conversion alike (a renderer matter, open in issue 16).
+// 1024 light paths keep the mean's own noise far below that (measured 0.05 % to 0.3 %) but on
+// sphere-light, whose VPLs all lie on the emitting sphere, half of them facing away from the
+// plane: there one seed's mean varies by ±3 % (seeds 1–4: 1.002, 1.006, 0.982, 0.962; the
+// default seed 1.030), so its bound adds the noise of a four-seed average, 6 standard errors
+// (Student's t with 3 degrees of freedom exceeds 5.84 with probability 1 %).
 TEST(MitsubaIgnis, VplRendererMatchesMitsubasMeans) {
     if (!fs::exists(kIgnis / "mitsuba")) GTEST_SKIP() << "../shared/reference/ignis is absent";
     const fs::path dir = fs::temp_directory_path() / "mvpl_mitsuba_ignis";
@@ -143,9 +148,34 @@ TEST(MitsubaIgnis, VplRendererMatchesMitsubasMeans) {
         std::printf("%-16s %-14s VPL relMSE %.3g mean ratio %.4f %.4f %.4f\n", c.name.c_str(),
                     c.defines.c_str(), ours.rel_mse, ours.mean_ratio[0], ours.mean_ratio[1],
                     ours.mean_ratio[2]);
-        if (c.name == "sphere-light") continue;
-        for (double ratio : ours.mean_ratio)
-            EXPECT_NEAR(ratio, 1.0, 0.01);
+        if (c.name != "sphere-light") {
+            for (double ratio : ours.mean_ratio)
+                EXPECT_NEAR(ratio, 1.0, 0.01);
+            continue;
+        }
+        constexpr int kSeeds = 4;
+        std::array<std::array<double, 3>, kSeeds> ratios{};
+        for (int seed = 0; seed < kSeeds; ++seed) {
+            const auto s = run_mvpl_gpu(
+                "render " + shell_quote((kIgnis / "mitsuba" / (c.name + ".xml")).string()) +
+                " --vpls 1024 --quiet --seed " + std::to_string(seed + 1) + " -o " +
+                shell_quote(out));
+            ASSERT_EQ(s.exit_code, 0) << s.err;
+            const Comparison one = compare(out, (kIgnis / "references" / c.reference).string());
+            for (int ch = 0; ch < 3; ++ch)
+                ratios[size_t(seed)][size_t(ch)] = one.mean_ratio[size_t(ch)];
+        }
+        for (int ch = 0; ch < 3; ++ch) {
+            double mean = 0.0, var = 0.0;
+            for (const auto& r : ratios)
+                mean += r[size_t(ch)] / kSeeds;
+            for (const auto& r : ratios)
+                var += (r[size_t(ch)] - mean) * (r[size_t(ch)] - mean) / (kSeeds - 1);
+            const double standard_error = std::sqrt(var / kSeeds);
+            std::printf("sphere-light four seeds: channel %d mean ratio %.4f ± %.4f\n", ch, mean,
+                        standard_error);
+            EXPECT_NEAR(mean, 1.0, 0.01 + 6.0 * standard_error) << "channel " << ch;
+        }
     }
 }
 
