@@ -168,9 +168,9 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_EQ(j["sweep"][18]["culled_vpls"].get<int>(), 0);
     EXPECT_EQ(j["render"]["interleave"].get<int>(), 2);  // the command line's default
     EXPECT_EQ(j["sweep"][19]["interleave"].get<int>(), 1);
-    // 128² indirect faces by default, clamped to the 16² of this run; switched: as emitters'.
+    // Indirect faces as emitters' (16² in this run) by default; switched: half of that.
     EXPECT_EQ(j["render"]["indirect_shadow_resolution"].get<int>(), 16);
-    EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(), 16);
+    EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(), 8);
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());
