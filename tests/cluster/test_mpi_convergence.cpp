@@ -173,8 +173,9 @@ TEST_F(MpiConvergence, TwoRanksMatchOneProcess) {
 
 TEST_F(MpiConvergence, RankZeroAloneWritesEveryMethod) {
     // Compensation on (the default): the passes are split by rank and summed with their counts.
-    const Outcome r =
-        run(kTwoRanks + " convergence '" + kScene + "' --ref ref.exr --budget 0.3 --no-plot");
+    // Each rank picks its device by its local rank.
+    const Outcome r = run(kTwoRanks + " convergence '" + kScene +
+                          "' --ref ref.exr --budget 0.3 --no-plot --device local-rank");
     ASSERT_EQ(r.exit_code, 0) << r.err;
     const auto rows = read_csv(path("convergence/convergence.csv"));
     for (const std::string method : {"pt", "mc", "metropolis"}) {

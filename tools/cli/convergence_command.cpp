@@ -19,6 +19,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/convergence_analysis.h"
 #include "tools/cli/convergence_runs.h"
+#include "tools/cli/device_choice.h"
 #include "tools/cli/option_groups.h"
 #include "tools/session/scene_session.h"
 
@@ -135,6 +136,10 @@ int run_convergence(const Args& args) {
     add_environment_options(parser, environment);
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
+    int device = -1;
+    add_device_option(parser, device,
+                      "Vulkan device index (see mvpl info), -1 = default; under mpirun "
+                      "local-rank: by the rank's place on its machine");
     parser.add_flag("--no-plot", &no_plot, "write the CSV only");
     parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
     bool parsed = false;
@@ -142,8 +147,9 @@ int run_convergence(const Args& args) {
     Image reference;
     std::unique_ptr<session::SceneSession> loaded;
     cluster::together(ranks, [&] {
-        parsed = parser.parse(args);
+        parsed = parser.parse(with_local_rank_device(args));
         if (!parsed) return;
+        check_device("convergence", device);
         methods = checked_methods(ref_path, budget, methods_text);
         reference = read_exr(ref_path);
         if (width != 0 && (width != reference.width() || height != reference.height())) {
@@ -189,7 +195,9 @@ int run_convergence(const Args& args) {
         } else {
             cluster::together(ranks, [&] {
                 if (renderer) return;
-                context = std::make_unique<gpu::Context>(gpu::ContextOptions{});
+                gpu::ContextOptions co;
+                co.device_index = device;
+                context = std::make_unique<gpu::Context>(co);
                 renderer = std::make_unique<render::VplRenderer>(*context, session.scene(),
                                                                  &session.accel());
             });
