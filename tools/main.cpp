@@ -45,10 +45,11 @@ void silence_other_ranks(const mvpl::cluster::Cluster& ranks) {
 
 int run(const std::string& command, const mvpl::cli::Args& args) {
     using namespace mvpl;
-    if (cluster::world().size() > 1 && command != "render" && command != "bench") {
+    if (cluster::world().size() > 1 && command != "render" && command != "bench" &&
+        command != "convergence") {
         // Every rank refuses alike, so no rank waits for another: no MPI_Abort needed.
         const std::string what =
-            "under mpirun only `mvpl render` and `mvpl bench` share their "
+            "under mpirun only `mvpl render`, `mvpl bench` and `mvpl convergence` share their "
             "work over ranks; run '" +
             command + "' as one process";
         throw cluster::RankFailure(what, 2, 0);

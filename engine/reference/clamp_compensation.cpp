@@ -147,11 +147,12 @@ bool ClampCompensation::active() const {
     return m_impl->active();
 }
 
-Image ClampCompensation::image() const {
+Image ClampCompensation::image(uint32_t* passes) const {
     const CompensationOptions& o = m_impl->options;
     Image out(o.width, o.height);
     const std::lock_guard lock(m_impl->mutex);
     const uint32_t n = m_impl->passes;
+    if (passes) *passes = n;
     if (n == 0) return out;
     for (size_t i = 0; i < m_impl->sum.size(); ++i)
         out.pixels()[i] = Rgb(m_impl->sum[i] / double(n));

@@ -53,8 +53,9 @@ public:
     // at a time adds passes; passes() and image() may be called from another meanwhile.
     void add_pass();
     uint32_t passes() const;
-    // The mean over the passes completed so far (black before the first).
-    Image image() const;
+    // The mean over the passes completed so far (black before the first); `passes`, if given,
+    // receives their count, read with the same lock (ranks weight their means by it).
+    Image image(uint32_t* passes = nullptr) const;
     // Whether there is anything to compensate (clamping on and paths long enough for VPL light).
     bool active() const;
 

@@ -23,6 +23,12 @@ namespace mvpl::cli {
 // lavapipe, but on a GPU that shades VPLs a hundred times faster an unbounded count would make
 // the CPU the bottleneck of a fixed render, which waits for its passes: kFixedRenderPasses.
 uint32_t paced_compensation_passes(uint64_t vpls, uint32_t most = uint32_t(1) << 20);
+// Of a job's first `passes` compensation passes, those rank `rank` of `size` runs: every size-th
+// from its rank (ClampCompensation's first_pass and pass_stride).
+inline uint32_t rank_passes(uint32_t passes, int rank, int size) {
+    const auto r = uint32_t(rank), n = uint32_t(size);
+    return passes > r ? (passes - r + n - 1) / n : 0;
+}
 // The most passes a fixed-size render waits for (a time budget waits for none).
 inline constexpr uint32_t kFixedRenderPasses = 64;
 
@@ -41,8 +47,9 @@ public:
     // share, which may be none): black when no pass was run.
     Image finish(bool wait, bool at_least_one = true);
     uint32_t passes() const { return m_compensation->passes(); }
-    // The mean over the passes completed so far, while the thread goes on.
-    Image snapshot() const { return m_compensation->image(); }
+    // The mean over the passes completed so far, while the thread goes on; `passes`, if given,
+    // receives their count.
+    Image snapshot(uint32_t* passes = nullptr) const { return m_compensation->image(passes); }
 
 private:
     void run();

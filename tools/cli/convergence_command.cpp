@@ -1,11 +1,15 @@
 // `mvpl convergence`: error against run time for the reference path tracer and the VPL samplers,
-// against a reference image (DESIGN.md "Reference and oracle"; issue 6).
+// against a reference image (DESIGN.md "Reference and oracle"; issue 6). Under mpirun every rank
+// loads the scene and its device and shares each measurement's work (convergence_runs.h); rank 0
+// alone measures, writes and prints, and whatever fails on one rank is met by the others at the
+// next agreement point (cluster::together).
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
 #include "engine/core/image.h"
 #include "engine/gpu/context.h"
@@ -15,6 +19,7 @@
 #include "tools/cli/commands.h"
 #include "tools/cli/convergence_analysis.h"
 #include "tools/cli/convergence_runs.h"
+#include "tools/cli/device_choice.h"
 #include "tools/cli/option_groups.h"
 #include "tools/session/scene_session.h"
 
@@ -79,9 +84,26 @@ void print_summary(const std::vector<ConvergencePoint>& all,
     }
 }
 
+// The methods named by --methods, after the checks of --ref and --budget.
+std::vector<std::string> checked_methods(const std::string& ref_path, float budget,
+                                         const std::string& methods_text) {
+    if (ref_path.empty()) throw UsageError("convergence: --ref REF.exr is required");
+    if (!(budget > 0.0f && budget <= 1e6f))
+        throw UsageError("convergence: --budget must be in (0, 1e6] seconds");
+    const std::vector<std::string> methods = split_commas(methods_text);
+    if (methods.empty()) throw UsageError("convergence: --methods names no method");
+    for (const std::string& m : methods) {
+        if (m != "pt" && m != "mc" && m != "metropolis")
+            throw UsageError("convergence: unknown method '" + m +
+                             "' (available: pt, mc, metropolis)");
+    }
+    return methods;
+}
+
 }  // namespace
 
 int run_convergence(const Args& args) {
+    cluster::Cluster& ranks = cluster::world();
     std::string scene_path, ref_path, out_dir = "convergence";
     std::string methods_text = "pt,mc,metropolis";
     float budget = 10.0f;
@@ -95,7 +117,8 @@ int run_convergence(const Args& args) {
         "Error against run time: the reference path tracer and the VPL samplers,\n"
         "each run progressively up to --budget seconds against --ref; writes\n"
         "DIR/convergence.csv and DIR/convergence.png and prints, per VPL sampler, the\n"
-        "speed-up over the path tracer at equal relMSE and the bias floor.");
+        "speed-up over the path tracer at equal relMSE and the bias floor.\n"
+        "Under mpirun, the ranks share each method's work and rank 0 writes.");
     parser.add_positional("SCENE", &scene_path, "scene file");
     parser.add_string("--ref", &ref_path, "reference image (.exr); its size is the image size");
     parser.add_float("--budget", &budget, "seconds per method");
@@ -113,31 +136,37 @@ int run_convergence(const Args& args) {
     add_environment_options(parser, environment);
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
+    int device = -1;
+    add_device_option(parser, device,
+                      "Vulkan device index (see mvpl info), -1 = default; under mpirun "
+                      "local-rank: by the rank's place on its machine");
     parser.add_flag("--no-plot", &no_plot, "write the CSV only");
     parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
-    if (!parser.parse(args)) return 0;
-    if (ref_path.empty()) throw UsageError("convergence: --ref REF.exr is required");
-    if (!(budget > 0.0f && budget <= 1e6f))
-        throw UsageError("convergence: --budget must be in (0, 1e6] seconds");
-    const std::vector<std::string> methods = split_commas(methods_text);
-    if (methods.empty()) throw UsageError("convergence: --methods names no method");
-    for (const std::string& m : methods) {
-        if (m != "pt" && m != "mc" && m != "metropolis")
-            throw UsageError("convergence: unknown method '" + m +
-                             "' (available: pt, mc, metropolis)");
-    }
-
-    const Image reference = read_exr(ref_path);
-    if (width != 0 && (width != reference.width() || height != reference.height())) {
-        throw UsageError("convergence: --res " + std::to_string(width) + "x" +
-                         std::to_string(height) + " differs from the reference's " +
-                         std::to_string(reference.width()) + "x" +
-                         std::to_string(reference.height()));
-    }
-    const session::SceneSession session(scene_path, camera.choice, environment.choice,
-                                        scene_file.options);
-    apply_scene_defaults(parser, session.scene(), &settings.tracer.max_depth, nullptr, nullptr);
-    std::filesystem::create_directories(out_dir);
+    bool parsed = false;
+    std::vector<std::string> methods;
+    Image reference;
+    std::unique_ptr<session::SceneSession> loaded;
+    cluster::together(ranks, [&] {
+        parsed = parser.parse(with_local_rank_device(args));
+        if (!parsed) return;
+        check_device("convergence", device);
+        methods = checked_methods(ref_path, budget, methods_text);
+        reference = read_exr(ref_path);
+        if (width != 0 && (width != reference.width() || height != reference.height())) {
+            throw UsageError("convergence: --res " + std::to_string(width) + "x" +
+                             std::to_string(height) + " differs from the reference's " +
+                             std::to_string(reference.width()) + "x" +
+                             std::to_string(reference.height()));
+        }
+        loaded = std::make_unique<session::SceneSession>(scene_path, camera.choice,
+                                                         environment.choice, scene_file.options);
+        apply_scene_defaults(parser, loaded->scene(), &settings.tracer.max_depth, nullptr, nullptr);
+        if (ranks.root()) std::filesystem::create_directories(out_dir);
+    });
+    if (!parsed) return 0;
+    const session::SceneSession& session = *loaded;
+    // Rank 0 alone prints: progress, summary and the files written.
+    if (!ranks.root()) quiet = true;
 
     ConvergenceRun run;
     run.session = &session;
@@ -154,6 +183,7 @@ int run_convergence(const Args& args) {
     run.quiet = quiet;
     run.compensate = compensation_args.enabled();
     run.compensation_passes = uint32_t(compensation_args.spp);
+    run.cluster = &ranks;
 
     std::vector<ConvergencePoint> all;
     std::unique_ptr<gpu::Context> context;
@@ -163,33 +193,40 @@ int run_convergence(const Args& args) {
         if (method == "pt") {
             points = run_path_tracer(run);
         } else {
-            if (!renderer) {
-                context = std::make_unique<gpu::Context>(gpu::ContextOptions{});
+            cluster::together(ranks, [&] {
+                if (renderer) return;
+                gpu::ContextOptions co;
+                co.device_index = device;
+                context = std::make_unique<gpu::Context>(co);
                 renderer = std::make_unique<render::VplRenderer>(*context, session.scene(),
                                                                  &session.accel());
-            }
+            });
             points = run_vpl_sampler(run, method, settings, *renderer, render_options);
         }
         all.insert(all.end(), points.begin(), points.end());
     }
 
-    const std::filesystem::path csv = std::filesystem::path(out_dir) / "convergence.csv";
-    std::ofstream(csv) << to_csv(all);
-    if (!quiet) print_summary(all, methods);
-    if (!no_plot) {
-        const std::filesystem::path png = std::filesystem::path(out_dir) / "convergence.png";
-        const std::string command =
-            shell_quote(python_interpreter()) + " " + shell_quote(plot_script().string()) + " " +
-            shell_quote(csv.string()) + " " + shell_quote(png.string()) + " --title " +
-            shell_quote(std::filesystem::path(scene_path).stem().string());
-        if (std::system(command.c_str()) != 0) {
-            std::fprintf(stderr,
-                         "mvpl: warning: the plot was not made (%s failed; python3-matplotlib "
-                         "installed?); %s is written\n",
-                         plot_script().string().c_str(), csv.string().c_str());
+    // Rank 0 writes; the others wait for it, so that all exit with its status.
+    cluster::together(ranks, [&] {
+        if (!ranks.root()) return;
+        const std::filesystem::path csv = std::filesystem::path(out_dir) / "convergence.csv";
+        std::ofstream(csv) << to_csv(all);
+        if (!quiet) print_summary(all, methods);
+        if (!no_plot) {
+            const std::filesystem::path png = std::filesystem::path(out_dir) / "convergence.png";
+            const std::string command =
+                shell_quote(python_interpreter()) + " " + shell_quote(plot_script().string()) +
+                " " + shell_quote(csv.string()) + " " + shell_quote(png.string()) + " --title " +
+                shell_quote(std::filesystem::path(scene_path).stem().string());
+            if (std::system(command.c_str()) != 0) {
+                std::fprintf(stderr,
+                             "mvpl: warning: the plot was not made (%s failed; python3-matplotlib "
+                             "installed?); %s is written\n",
+                             plot_script().string().c_str(), csv.string().c_str());
+            }
         }
-    }
-    if (!quiet) std::printf("convergence: wrote %s\n", csv.string().c_str());
+        if (!quiet) std::printf("convergence: wrote %s\n", csv.string().c_str());
+    });
     return 0;
 }
 

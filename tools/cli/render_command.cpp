@@ -15,6 +15,7 @@
 #include "engine/gpu/device_info.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/device_choice.h"
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/cli/render_runs.h"
@@ -87,30 +88,6 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     });
 }
 
-// `--device local-rank`: the device of index OMPI_COMM_WORLD_LOCAL_RANK (this rank's place among
-// the ranks on its machine; 0 without mpirun), modulo the devices there, so that ranks on one
-// machine spread over its GPUs and share them round-robin when there are fewer.
-Args with_local_rank_device(Args args) {
-    for (size_t i = 0; i + 1 < args.size(); ++i) {
-        if (args[i] != "--device" || args[i + 1] != "local-rank") continue;
-        const char* local = std::getenv("OMPI_COMM_WORLD_LOCAL_RANK");
-        const size_t count = std::max<size_t>(gpu::enumerate_devices().size(), 1);
-        args[i + 1] = std::to_string(size_t(local ? std::atoi(local) : 0) % count);
-    }
-    return args;
-}
-
-// --device N must name a device, checked before the scene is loaded.
-void check_device(const RenderArgs& a) {
-    if (a.oracle || a.device < 0) return;
-    const size_t count = gpu::enumerate_devices().size();
-    if (size_t(a.device) >= count) {
-        throw UsageError("render: --device " + std::to_string(a.device) +
-                         ": no such Vulkan device (there are " + std::to_string(count) +
-                         "; see mvpl info)");
-    }
-}
-
 RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     RenderJob job;
     job.session = &session;
@@ -179,7 +156,7 @@ int run_render(const Args& args) {
     cluster::together(ranks, [&] {
         parsed = parser.parse(with_local_rank_device(args));
         if (!parsed) return;
-        check_device(a);
+        if (!a.oracle) check_device("render", a.device);
         if (ranks.size() > 1 && a.oracle)
             throw UsageError("render: --oracle runs on one process, not under mpirun");
         a.outputs = outputs_or(a.outputs, "render.exr", defaulted);

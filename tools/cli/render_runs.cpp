@@ -159,11 +159,9 @@ public:
 private:
     bool shared() const { return m_ranks.size() > 1; }
 
-    // Of the job's first `passes` compensation passes, those this rank runs (every R-th from its
-    // rank: ClampCompensation's first_pass and pass_stride).
+    // Of the job's first `passes` compensation passes, those this rank runs.
     uint32_t my_passes(uint32_t passes) const {
-        const auto r = uint32_t(m_ranks.rank()), n = uint32_t(m_ranks.size());
-        return passes > r ? (passes - r + n - 1) / n : 0;
+        return rank_passes(passes, m_ranks.rank(), m_ranks.size());
     }
 
     // Over ranks: the contributions and the compensation passes summed to rank 0, which resolves.
