@@ -11,6 +11,7 @@
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
 #include "engine/light/specular_chain.h"
+#include "engine/render/batch_plan.h"
 #include "engine/render/chain_layer.h"
 #include "engine/render/emission_sum.h"
 #include "engine/render/g_buffer_pass.h"
@@ -61,50 +62,6 @@ std::unique_ptr<ShadowClusters> make_proxy(const scene::Scene& s) {
         }
     }
     return nullptr;
-}
-
-// A shadow/shading batch: `count` VPLs from `first` of an accumulate() call, all at one sub-pixel
-// position.
-struct Slice {
-    size_t first = 0;
-    size_t count = 0;
-    uint64_t position = 0;
-};
-
-// The batches of `count` VPLs that follow `shaded` others since begin(): at most options.batch
-// each and, with jitter, cut where the sub-pixel position changes, so that every VPL is shaded
-// at the position of its index since begin(), however the calls split the VPLs. With `index`
-// (a rank's share), VPL i's index is index[i] instead of shaded + i.
-std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptions& options,
-                                std::span<const uint64_t> index = {}) {
-    const SubpixelSchedule schedule = subpixel_schedule(options);
-    std::vector<Slice> slices;
-    if (!index.empty()) {
-        for (size_t first = 0; first < count;) {
-            const uint64_t position = schedule.position_of(index[first]);
-            size_t end = first + 1;
-            // Interleaved, a VPL's index picks its pixel class from the batch's first index
-            // (ShadingBatch::vpl_offset), so a batch holds consecutive indices only.
-            while (end < count && end - first < options.batch &&
-                   schedule.position_of(index[end]) == position &&
-                   (options.interleave <= 1 || index[end] == index[end - 1] + 1))
-                ++end;
-            slices.push_back({first, end - first, position});
-            first = end;
-        }
-        return slices;
-    }
-    for (size_t first = 0; first < count;) {
-        const uint64_t position = schedule.position_of(shaded + first);
-        size_t end = std::min(count, first + options.batch);
-        if (schedule.jitter) {
-            end = size_t(
-                std::min<uint64_t>(end, (position + 1) * schedule.vpls_per_position - shaded));
-        }
-        slices.push_back({first, end - first, position});
-        first = end;
-    }
-    return slices;
 }
 
 }  // namespace
