@@ -1,25 +1,11 @@
 #include "engine/light/specular_chain.h"
 
-#include <algorithm>
+#include <optional>
 #include <vector>
 
-#include "engine/trace/interaction.h"
 #include "engine/trace/shading_point.h"
 
 namespace mvpl::light {
-namespace {
-
-// Emitted radiance at a hit, front face only (as make_receiver).
-Rgb emitted_at(const trace::Accel& accel, const trace::SurfaceInteraction& si) {
-    if (!si.front_face) return Rgb(0.0f);
-    material::SurfacePoint point;
-    point.uv0 = si.uv0;
-    point.uv1 = si.uv1;
-    point.color = si.color;
-    return accel.materials().emission(si.material, point);
-}
-
-}  // namespace
 
 bool continues_chain(const material::Bsdf& bsdf, const Vec3& wo, const ChainOptions& options) {
     if (!(options.max_roughness >= 0.0f)) return false;
@@ -30,11 +16,7 @@ bool continues_chain(const material::Bsdf& bsdf, const Vec3& wo, const ChainOpti
 
 bool scene_may_chain(const scene::Scene& scene, const ChainOptions& options) {
     if (!options.enabled()) return false;
-    std::vector<bool> drawn(scene.materials.size(), false);
-    for (const scene::Mesh& mesh : scene.meshes) {
-        if (!mesh.indices.empty() && mesh.material >= 0 && size_t(mesh.material) < drawn.size())
-            drawn[size_t(mesh.material)] = true;
-    }
+    const std::vector<bool> drawn = scene.drawn_materials();
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const scene::Material& m = scene.materials[i];
         if (!drawn[i] || (m.metallic <= 0.0f && m.specular <= 0.0f)) continue;
@@ -52,27 +34,19 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
     trace::Ray ray = camera_ray;
     for (int bounce = 0;; ++bounce) {
         const int depth = bounce + 1;  // segments from the camera to this vertex
-        const std::optional<trace::Hit> hit =
-            bounce == 0 ? accel.intersect_camera(ray) : accel.intersect(ray);
-        if (!hit) {
-            if (scene.environment.active()) {
-                const Rgb le = scene.environment.lookup(glm::normalize(ray.direction));
-                if (bounce == 0 && emitted) *emitted += le;
-                if (bounce > 0) out.chain_emitted += out.throughput * le;
-            }
-            return out;
-        }
-        const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, ray);
-        if (bounce == 0 && emitted) *emitted += emitted_at(accel, si);
-        if (bounce > 0) out.chain_emitted += out.throughput * emitted_at(accel, si);
-
-        const trace::ShadingPoint sp = trace::make_shading_point(accel.materials(), si);
-        const Vec3 wo = sp.frame.to_local(-glm::normalize(ray.direction));
-        if (!(wo.z > 0.0f)) return out;  // seen from below the shading surface: black
+        // What this vertex emits (or the environment, where the ray leaves the scene): the first
+        // vertex's as seen directly, the later ones' through the chain's throughput.
+        Rgb seen(0.0f);
+        const std::optional<Receiver> vertex =
+            make_receiver(scene, accel, ray, bounce == 0 ? emitted : &seen, bounce == 0);
+        if (bounce > 0) out.chain_emitted += out.throughput * seen;
+        if (!vertex) return out;  // left the scene, or seen from below its shading surface
+        const trace::ShadingPoint& sp = vertex->sp;
+        const Vec3& wo = vertex->wo;
         if (!continues_chain(sp.bsdf, wo, options)) {
             // A VPL of path_length ℓ lights this vertex through depth + 1 + ℓ segments.
             if (!unlimited && options.max_depth - depth - 1 < 0) return out;
-            out.receiver = Receiver{sp, wo};
+            out.receiver = vertex;
             out.bounces = uint32_t(bounce);
             if (!unlimited) out.max_vpl_length = uint32_t(options.max_depth - depth - 1);
             return out;

@@ -48,15 +48,16 @@ PreparedVpl prepare_vpl(const Vpl& vpl) {
 }
 
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
-                                      const trace::Ray& camera_ray, Rgb* emitted) {
-    const std::optional<trace::Hit> hit = accel.intersect_camera(camera_ray);
+                                      const trace::Ray& ray, Rgb* emitted, bool from_camera) {
+    const std::optional<trace::Hit> hit =
+        from_camera ? accel.intersect_camera(ray) : accel.intersect(ray);
     if (!hit) {
         // The environment seen where the ray leaves the scene.
         if (emitted && scene.environment.active())
-            *emitted += scene.environment.lookup(glm::normalize(camera_ray.direction));
+            *emitted += scene.environment.lookup(glm::normalize(ray.direction));
         return std::nullopt;
     }
-    const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, camera_ray);
+    const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, ray);
     // Emitters emit from their front face only, whatever doubleSided says.
     if (emitted && si.front_face) {
         material::SurfacePoint point;
@@ -66,7 +67,7 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
         *emitted += accel.materials().emission(si.material, point);
     }
     Receiver r{trace::make_shading_point(accel.materials(), si), Vec3(0.0f, 0.0f, 1.0f)};
-    r.wo = r.sp.frame.to_local(-glm::normalize(camera_ray.direction));
+    r.wo = r.sp.frame.to_local(-glm::normalize(ray.direction));
     if (!(r.wo.z > 0.0f)) return std::nullopt;  // seen from below the shading surface: black
     return r;
 }

@@ -29,11 +29,14 @@ struct Receiver {
     trace::ShadingPoint sp;
     Vec3 wo{0.0f, 0.0f, 1.0f};  // towards the camera, in sp.frame; wo.z > 0
 };
-// The receiver at the first hit of `camera_ray`, if any and seen from above its shading surface;
+// The receiver at the first hit of `ray`, if any and seen from above its shading surface;
 // `emitted` (optional) receives the emitted radiance seen there (front face only), or the
-// environment's where the ray leaves the scene.
+// environment's where the ray leaves the scene. A camera ray (`from_camera`) passes through the
+// back faces of one-sided materials (Accel::intersect_camera); a ray continued from a surface
+// (light/specular_chain.h) does not.
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
-                                      const trace::Ray& camera_ray, Rgb* emitted = nullptr);
+                                      const trace::Ray& ray, Rgb* emitted = nullptr,
+                                      bool from_camera = true);
 
 // One VPL's contribution to one receiver (vpl.h), Embree visibility included; d_min2 = d_min².
 Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const PreparedVpl& pv,

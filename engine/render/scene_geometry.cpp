@@ -8,7 +8,7 @@ namespace mvpl::render {
 
 SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
     : m_graphs(material::SceneMaterials(scene).graphs()),
-      m_drawn(drawn_materials(scene)),
+      m_drawn(scene.drawn_materials()),
       m_features(scene_features(scene, ShaderOptions{})),
       m_textures(scene.textures),
       m_environment(scene.environment) {

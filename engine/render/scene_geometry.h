@@ -52,7 +52,7 @@ public:
     const std::vector<GeometryMaterial>& materials() const { return m_materials; }
     // The scene's material graphs, in material order (what the G-buffer shader resolves).
     const std::vector<material::MaterialGraph>& graphs() const { return m_graphs; }
-    // drawn_materials(scene): the materials the G-buffer generates code for.
+    // Scene::drawn_materials(): the materials the G-buffer generates code for.
     const std::vector<bool>& drawn() const { return m_drawn; }
     // The scene's decoded textures (what the graphs' image-texture nodes read).
     const std::vector<scene::Texture>& textures() const { return m_textures; }

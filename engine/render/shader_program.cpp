@@ -179,7 +179,7 @@ ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& op
     // The environment's direct light comes as directional VPLs (light::LightSampler::sample_le).
     if (scene.environment.active()) f.vpl_types[size_t(light::VplType::Directional)] = true;
     const material::SceneMaterials materials(scene);
-    const std::vector<bool> drawn = drawn_materials(scene);
+    const std::vector<bool> drawn = scene.drawn_materials();
     std::vector<material::MaterialGraph> graphs;
     for (size_t i = 0; i < drawn.size(); ++i) {
         if (!drawn[i]) continue;
@@ -188,15 +188,6 @@ ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& op
     }
     f.closure_types = material::scene_closure_types(graphs);
     return f;
-}
-
-std::vector<bool> drawn_materials(const scene::Scene& scene) {
-    std::vector<bool> drawn(scene.materials.size(), false);
-    for (const scene::Mesh& m : scene.meshes) {
-        if (m.triangle_count() == 0 || drawn.empty()) continue;
-        drawn[m.material >= 0 && size_t(m.material) < drawn.size() ? size_t(m.material) : 0] = true;
-    }
-    return drawn;
 }
 
 StageSource generate_shading_source(const ShaderFeatures& features,
@@ -279,7 +270,7 @@ SceneShaders generate_scene_shaders(const scene::Scene& scene, const ShaderOptio
     out.features = scene_features(scene, options);
     const material::SceneMaterials materials(scene);
     GBufferSources g =
-        generate_g_buffer_sources(materials.graphs(), scene.textures, drawn_materials(scene));
+        generate_g_buffer_sources(materials.graphs(), scene.textures, scene.drawn_materials());
     out.g_buffer_vert = std::move(g.vert);
     out.g_buffer_frag = std::move(g.frag);
     out.g_buffer_functions = std::move(g.functions);

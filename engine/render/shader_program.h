@@ -41,10 +41,6 @@ struct ShaderOptions {
 // the material graphs it draws with.
 ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& options);
 
-// Per scene material: whether a mesh with triangles uses it (an index out of range counts as
-// material 0, as SceneGeometry draws it). Code is generated for these only.
-std::vector<bool> drawn_materials(const scene::Scene& scene);
-
 struct StageSource {
     std::string name;    // "g_buffer.vert", "g_buffer.frag", "shading.comp"
     std::string source;  // self-contained GLSL (no #include)
@@ -89,7 +85,7 @@ struct GBufferSources {
     bool has_material_pass() const { return !textures.empty(); }
 };
 // The G-buffer stages for material graphs (textures: the scene's, for the bump-map step; drawn:
-// drawn_materials, empty for all).
+// Scene::drawn_materials, empty for all).
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
                                          const std::vector<scene::Texture>& textures,
                                          const std::vector<bool>& drawn = {});

@@ -11,6 +11,15 @@ Bounds Scene::bounds() const {
     return b;
 }
 
+std::vector<bool> Scene::drawn_materials() const {
+    std::vector<bool> drawn(materials.size(), false);
+    for (const Mesh& m : meshes) {
+        if (m.triangle_count() == 0 || drawn.empty()) continue;
+        drawn[m.material >= 0 && size_t(m.material) < drawn.size() ? size_t(m.material) : 0] = true;
+    }
+    return drawn;
+}
+
 size_t Scene::triangle_count() const {
     size_t n = 0;
     for (const Mesh& mesh : meshes)

@@ -118,6 +118,9 @@ struct Scene {
 
     Bounds bounds() const;
     size_t triangle_count() const;
+    // Per material: whether a mesh with triangles uses it (an index out of range counts as
+    // material 0, as the renderer draws it). Code is generated, and chains considered, for these.
+    std::vector<bool> drawn_materials() const;
 };
 
 }  // namespace mvpl::scene

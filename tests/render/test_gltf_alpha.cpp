@@ -27,7 +27,7 @@ constexpr uint32_t kRes = 48;
 
 GBufferSources generate_scene_shaders_g_buffer(const scene::Scene& s) {
     const material::SceneMaterials materials(s);
-    return generate_g_buffer_sources(materials.graphs(), s.textures, drawn_materials(s));
+    return generate_g_buffer_sources(materials.graphs(), s.textures, s.drawn_materials());
 }
 
 std::vector<GBufferTexel> g_buffer(gpu::Context& context, const scene::Scene& s) {
@@ -240,7 +240,7 @@ TEST(GltfAlphaShaders, AlphaTestOnlyInMaskedScenes) {
     EXPECT_NE(g.frag.source.find("alpha_cut("), std::string::npos);
     EXPECT_EQ(g.fragment_textures.size(), 1u);
     const material::SceneMaterials materials(s);
-    EXPECT_NE(generate_shadow_alpha_sources(materials.graphs(), s.textures, drawn_materials(s))
+    EXPECT_NE(generate_shadow_alpha_sources(materials.graphs(), s.textures, s.drawn_materials())
                   .frag.source.find("alpha_cut("),
               std::string::npos);
     for (scene::Material& m : s.materials)
@@ -249,7 +249,7 @@ TEST(GltfAlphaShaders, AlphaTestOnlyInMaskedScenes) {
     EXPECT_EQ(g.frag.source.find("alpha_cut"), std::string::npos);
     EXPECT_TRUE(g.fragment_textures.empty());
     const material::SceneMaterials opaque(s);
-    EXPECT_TRUE(generate_shadow_alpha_sources(opaque.graphs(), s.textures, drawn_materials(s))
+    EXPECT_TRUE(generate_shadow_alpha_sources(opaque.graphs(), s.textures, s.drawn_materials())
                     .frag.name.empty());
 }
 
