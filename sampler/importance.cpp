@@ -5,6 +5,7 @@
 
 #include "engine/core/color.h"
 #include "engine/core/rng.h"
+#include "engine/light/specular_chain.h"
 #include "engine/scene/camera.h"
 
 namespace mvpl::sampler {
@@ -25,9 +26,15 @@ Importance::Importance(const scene::Scene& scene, const trace::Accel& accel,
                             (float(j) + rng.next_float()) / float(gy) * float(options.height));
             const scene::CameraRay cr =
                 scene::generate_camera_ray(camera, options.width, options.height, film);
-            std::optional<light::Receiver> r =
-                light::make_receiver(scene, accel, trace::Ray{cr.origin, cr.direction});
-            if (r) m_points.push_back(std::move(*r));
+            // The chain's own generator (not the renderer's per-pixel one): the target needs a
+            // representative rough end per stratum, not the image's.
+            Rng chain_rng = light::chain_rng(options.seed, uint64_t(j * gx + i), 0);
+            const light::ChainedReceiver chained = light::make_chained_receiver(
+                scene, accel, trace::Ray{cr.origin, cr.direction}, chain_rng, options.chains);
+            if (chained.receiver && luminance(chained.throughput) > 0.0f) {
+                m_points.push_back(
+                    Point{*chained.receiver, chained.throughput, chained.max_vpl_length});
+            }
         }
     }
     m_weights.assign(m_points.size(), 1.0);
@@ -35,14 +42,18 @@ Importance::Importance(const scene::Scene& scene, const trace::Accel& accel,
     m_d_min2 = d_min * d_min;
 }
 
+float Importance::luminance_at(const Point& point, const light::PreparedVpl& pv) const {
+    if (pv.vpl->path_length > point.max_vpl_length) return 0.0f;
+    return luminance(point.throughput *
+                     light::vpl_contribution(m_accel, point.receiver, pv, m_d_min2));
+}
+
 double Importance::evaluate(std::span<const light::Vpl> vpls) const {
     double sum = 0.0;
     for (const light::Vpl& v : vpls) {
         const light::PreparedVpl pv = light::prepare_vpl(v);
-        for (size_t k = 0; k < m_points.size(); ++k) {
-            const Rgb c = light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2);
-            sum += m_weights[k] * double(luminance(c));
-        }
+        for (size_t k = 0; k < m_points.size(); ++k)
+            sum += m_weights[k] * double(luminance_at(m_points[k], pv));
     }
     return m_rays > 0 ? sum / double(m_rays) : 0.0;
 }
@@ -52,7 +63,7 @@ void Importance::evaluate_points(std::span<const light::Vpl> vpls,
     for (const light::Vpl& v : vpls) {
         const light::PreparedVpl pv = light::prepare_vpl(v);
         for (size_t k = 0; k < m_points.size(); ++k)
-            per_point[k] += luminance(light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2));
+            per_point[k] += luminance_at(m_points[k], pv);
     }
 }
 

@@ -4,7 +4,9 @@
 // stratified camera rays — averaged over the K rays, so that I estimates the path's share of the
 // image's mean luminance. Each point uses the oracle's per-point code (light::vpl_contribution:
 // the vpl.h formula, Embree visibility, d_min = clamp · scene diagonal), so the target sees what
-// the renderer shows.
+// the renderer shows. Where the renderer continues a glossy pixel through a specular chain
+// (light/specular_chain.h), so does the point set: a point is the chain's rough end, weighted by
+// the chain's throughput and lit only by the VPLs that max_depth lets light it (issue 15, item 3).
 //
 // A finite point set misses VPLs that light only other pixels; the sampler therefore samples the
 // defensive target I + ε·mean(I)·[the path has a VPL] (defensive_target below).
@@ -12,6 +14,8 @@
 #include <span>
 #include <vector>
 
+#include "engine/core/color.h"
+#include "engine/light/chain_options.h"
 #include "engine/light/vpl.h"
 #include "engine/light/vpl_contribution.h"
 #include "engine/scene/scene.h"
@@ -31,6 +35,8 @@ struct ImportanceOptions {
     // lit walls) count as much as the errors measured relative to the pixel (relMSE) make them
     // count, rather than in proportion to their brightness. False: plain luminance (the seed).
     bool relative = true;
+    // The renderer's specular chains (disabled: every point is a camera ray's first hit).
+    light::ChainOptions chains;
 };
 
 class Importance {
@@ -52,8 +58,15 @@ public:
     int rays() const { return m_rays; }
 
 private:
+    struct Point {
+        light::Receiver receiver;
+        Rgb throughput{1.0f};  // the chain's (1 without a chain)
+        uint32_t max_vpl_length = UINT32_MAX;
+    };
+    float luminance_at(const Point& point, const light::PreparedVpl& pv) const;
+
     const trace::Accel& m_accel;
-    std::vector<light::Receiver> m_points;
+    std::vector<Point> m_points;
     std::vector<double> m_weights;  // per point, 1 unless relative
     bool m_relative = true;
     int m_rays = 0;

@@ -25,6 +25,7 @@ MetropolisOptions metropolis_options(const SamplerSettings& s) {
     o.importance.height = s.height;
     o.importance.clamp = s.clamp;
     o.importance.seed = s.seed;
+    o.importance.chains = s.specular_chains;
     o.cluster = s.cluster;
     return o;
 }

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
@@ -32,6 +33,8 @@ struct SamplerSettings {
     uint64_t bootstrap = MetropolisOptions{}.bootstrap;
     double defensive = MetropolisOptions{}.defensive;
     VplsPerPath metropolis_per_path = MetropolisOptions{}.per_path;
+    // The renderer's specular chains, which the Metropolis target follows as the image does.
+    light::ChainOptions specular_chains;
     // The ranks that share the stream (null: this process alone).
     cluster::Cluster* cluster = nullptr;
 };

@@ -23,6 +23,7 @@ void put(float (&out)[3], const Vec3& v) {
 
 ChainRecord to_record(const light::ChainedReceiver& c) {
     ChainRecord r{};
+    put(r.emitted, c.chain_emitted);
     if (!c.receiver) {
         r.state = shared::kChainBlack;
         return r;
@@ -55,14 +56,9 @@ ChainLayer::ChainLayer(gpu::Context& context, const scene::Scene& scene, const t
       m_width(width),
       m_height(height),
       m_records(context, uint64_t(width) * height * sizeof(ChainRecord), gpu::BufferUsage::storage,
-                gpu::MemoryLocation::upload, "chain records"),
-      m_emission(int(width), int(height)) {}
+                gpu::MemoryLocation::upload, "chain records") {}
 
 ChainLayer::~ChainLayer() = default;
-
-void ChainLayer::clear_emission() {
-    m_emission = Image(int(m_width), int(m_height));
-}
 
 void ChainLayer::trace(const scene::Camera& camera, Vec2 offset, uint64_t position,
                        const light::ChainOptions& options, uint64_t seed) {
@@ -81,7 +77,6 @@ void ChainLayer::trace(const scene::Camera& camera, Vec2 offset, uint64_t positi
                 // A pixel whose first vertex is rough keeps the G-buffer's receiver.
                 const ChainRecord r = c.continued ? to_record(c) : ChainRecord{};
                 std::memcpy(&records[pixel], &r, sizeof(r));
-                m_emission.at(int(x), int(y)) += c.chain_emitted;
             }
         }
     });

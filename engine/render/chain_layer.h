@@ -3,12 +3,12 @@
 // position, the CPU follows every pixel's camera path through glossy vertices
 // (light/specular_chain.h, with the oracle's random numbers) and writes the receiver it ends on
 // into a storage buffer that the shading pass reads beside the G-buffer; the emitted radiance the
-// chains meet is summed on the host, per position, as the G-buffer's emission is on the GPU.
+// chains meet is in the same records, which the emission pass adds as it adds the G-buffer's
+// (render/emission_sum.h).
 // Built only for scenes with a material that may be continued. Vulkan-free to include.
 #include <cstdint>
 #include <memory>
 
-#include "engine/core/image.h"
 #include "engine/core/math.h"
 #include "engine/gpu/buffer.h"
 #include "engine/light/chain_options.h"
@@ -31,15 +31,12 @@ public:
     ChainLayer(const ChainLayer&) = delete;
     ChainLayer& operator=(const ChainLayer&) = delete;
 
-    // Writes the records of sub-pixel `position` (at `offset` in the pixel) seen by `camera`,
-    // and adds the chains' emitted radiance to the sum: outside a running batch.
+    // Writes the records of sub-pixel `position` (at `offset` in the pixel) seen by `camera`:
+    // outside a running batch, and one position per submission (the buffer holds one).
     void trace(const scene::Camera& camera, Vec2 offset, uint64_t position,
                const light::ChainOptions& options, uint64_t seed);
-    void clear_emission();
 
     const gpu::Buffer& records() const { return m_records; }
-    // Σ over the positions traced since clear_emission() of the chains' emitted radiance.
-    const Image& emission_sum() const { return m_emission; }
     uint64_t rays() const { return m_rays; }
     uint32_t width() const { return m_width; }
     uint32_t height() const { return m_height; }
@@ -50,7 +47,6 @@ private:
     uint32_t m_width;
     uint32_t m_height;
     gpu::Buffer m_records;  // host-visible ChainRecord per pixel
-    Image m_emission;
     uint64_t m_rays = 0;
 };
 

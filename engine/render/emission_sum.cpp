@@ -5,6 +5,7 @@
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/shader_compiler.h"
 #include "engine/render/g_buffer_pass.h"
+#include "shaders/shared/chain_record.h"
 #include "shaders/shared/push_constants.h"
 
 namespace mvpl::render {
@@ -20,10 +21,12 @@ EmissionSum::EmissionSum(gpu::Context& context, uint32_t width, uint32_t height)
             "emission sum"),
       m_background(context, {1, 1, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
                    "background"),
+      m_no_chains(context, sizeof(shared::ChainRecord), gpu::BufferUsage::storage,
+                  gpu::MemoryLocation::upload, "no chain records"),
       m_pipeline(std::make_unique<gpu::ComputePipeline>(
           context, gpu::compile_embedded_shader("render/emission_sum.comp"),
           gpu::ComputeLayout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
-                              gpu::BindingType::storage_image},
+                              gpu::BindingType::storage_image, gpu::BindingType::storage_buffer},
                              sizeof(shared::EmissionPush)},
           "emission sum")) {
     m_background.upload(std::vector<float>(4, 0.0f));
@@ -50,15 +53,24 @@ void EmissionSum::record_clear(gpu::CommandList& cmd) {
     cmd.clear_color(m_sum, {0.0f, 0.0f, 0.0f, 0.0f});
 }
 
-void EmissionSum::record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer) {
+void EmissionSum::record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer,
+                             const gpu::Buffer* chain_records) {
     const uint32_t width = m_sum.width();
     const uint32_t height = m_sum.height();
     if (g_buffer.width() != width || g_buffer.height() != height) {
         throw gpu::GpuError("emission sum: the G-buffer and the sum differ in size");
     }
-    const shared::EmissionPush push{{width, height}, kGBufferEmission, m_has_background ? 1u : 0u};
-    cmd.dispatch(*m_pipeline, {&g_buffer, &m_sum, &m_background}, gpu::push_bytes(push),
-                 (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
+    if (chain_records &&
+        chain_records->size() < uint64_t(width) * height * sizeof(shared::ChainRecord)) {
+        throw gpu::GpuError("emission sum: fewer chain records than pixels");
+    }
+    const uint32_t flags = (m_has_background ? shared::kEmissionBackground : 0u) |
+                           (chain_records ? shared::kEmissionChains : 0u);
+    const shared::EmissionPush push{{width, height}, kGBufferEmission, flags};
+    cmd.dispatch(*m_pipeline,
+                 {&g_buffer, &m_sum, &m_background, chain_records ? chain_records : &m_no_chains},
+                 gpu::push_bytes(push), (width + kGroupSize - 1) / kGroupSize,
+                 (height + kGroupSize - 1) / kGroupSize);
 }
 
 }  // namespace mvpl::render

@@ -7,6 +7,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine/gpu/buffer.h"
 #include "engine/gpu/image.h"
 
 namespace mvpl::gpu {
@@ -29,8 +30,11 @@ public:
     void set_background(const std::vector<float>& rgba);
 
     void record_clear(gpu::CommandList& cmd);
-    // Adds the emission layer of g_buffer (GBufferPass::image(), after a barrier) and 1 to alpha.
-    void record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer);
+    // Adds the emission layer of g_buffer (GBufferPass::image(), after a barrier), the emitted
+    // radiance in `chain_records` (ChainLayer::records(), when the render traces specular
+    // chains) and 1 to alpha.
+    void record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer,
+                    const gpu::Buffer* chain_records = nullptr);
 
     // RGBA32F: rgb Σ emitted radiance, a the number of G-buffers summed.
     const gpu::Image& image() const { return m_sum; }
@@ -39,6 +43,7 @@ private:
     gpu::Context& m_context;
     gpu::Image m_sum;
     gpu::Image m_background;  // 1×1 and unread until set_background
+    gpu::Buffer m_no_chains;  // bound, unread, where no chain records are given
     bool m_has_background = false;
     std::unique_ptr<gpu::ComputePipeline> m_pipeline;
 };

@@ -122,7 +122,7 @@ struct VplRenderer::Impl {
             timings.chain_rays += chains->rays() - rays;
         }
         cmd.barrier();
-        emission->record_add(cmd, g_buffer->image());
+        emission->record_add(cmd, g_buffer->image(), chains ? &chains->records() : nullptr);
         timer.end(cmd, scope);
         cmd.barrier();
         position = index;
@@ -236,7 +236,6 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     gpu::GpuTimer timer(*m.context, 1);
     m.context->submit_and_wait([&](gpu::CommandList& cmd) {
         m.shading->record_clear(cmd);
-        if (m.chains) m.chains->clear_emission();
         m.emission->record_clear(cmd);
         m.record_g_buffer(cmd, timer, 0);
     });
@@ -360,16 +359,18 @@ Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
     for (uint64_t p = 0; p < positions; ++p) {
         if (p >= m.drawn.size() || !m.drawn[size_t(p)]) missing.push_back(p);
     }
-    if (!missing.empty()) {
-        gpu::GpuTimer timer(*m.context, uint32_t(missing.size()));
+    // The chain records hold one position: a submission each where chains are traced.
+    const size_t per_submission = m.chains ? 1 : std::max<size_t>(missing.size(), 1);
+    for (size_t i = 0; i < missing.size(); i += per_submission) {
+        const size_t n = std::min(per_submission, missing.size() - i);
+        gpu::GpuTimer timer(*m.context, uint32_t(n));
         m.context->submit_and_wait([&](gpu::CommandList& cmd) {
-            for (const uint64_t p : missing)
-                m.record_g_buffer(cmd, timer, p);
+            for (size_t k = i; k < i + n; ++k)
+                m.record_g_buffer(cmd, timer, missing[k]);
         });
         m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
     }
     const std::vector<float> emission = m.emission->image().download_as<float>();
-    const Image* chained = m.chains ? &m.chains->emission_sum() : nullptr;
     Image image(int(m.options.width), int(m.options.height));
     for (size_t i = 0; i < image.pixels().size(); ++i) {
         const Rgb a = sum.pixels()[i];
@@ -377,11 +378,9 @@ Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
         // e[3] counts the G-buffers summed (one at least after begin()).
         const double count = std::max(double(e[3]), 1.0);
         // In double, so that a huge 1/N or a tiny one does not round the sum twice.
-        // The emitted radiance met by specular chains, summed per G-buffer as e is.
-        const Rgb c = chained ? chained->pixels()[i] : Rgb(0.0f);
-        image.pixels()[i] = Rgb(float(scale * a.r + (e[0] + c.r) / count),
-                                float(scale * a.g + (e[1] + c.g) / count),
-                                float(scale * a.b + (e[2] + c.b) / count));
+        image.pixels()[i] =
+            Rgb(float(scale * a.r + e[0] / count), float(scale * a.g + e[1] / count),
+                float(scale * a.b + e[2] / count));
     }
     m.add_timing(start, 0.0, 0.0);
     require_finite(image, "VplRenderer::resolve");

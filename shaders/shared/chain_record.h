@@ -28,6 +28,11 @@ struct ChainRecord {
     float ior;
     vec3 throughput;
     uint closure_type;  // engine/material/closure.h, ClosureType
+    // The emitted radiance the chain met after its first vertex, weighted by the throughput to
+    // it (ChainedReceiver::chain_emitted), in every state: the emission pass adds it to the
+    // pixel's sum (shaders/render/emission_sum.comp), so that the resolve and the preview see it.
+    vec3 emitted;
+    uint unused;
 };
 
 #ifdef __cplusplus
@@ -38,7 +43,8 @@ MVPL_STD430_MEMBER(ChainRecord, base_color);
 MVPL_STD430_MEMBER(ChainRecord, specular_color);
 MVPL_STD430_MEMBER(ChainRecord, wo);
 MVPL_STD430_MEMBER(ChainRecord, throughput);
-static_assert(sizeof(ChainRecord) == 112);
+MVPL_STD430_MEMBER(ChainRecord, emitted);
+static_assert(sizeof(ChainRecord) == 128);
 #endif
 
 MVPL_SHARED_END

@@ -27,9 +27,11 @@ struct MaterialPush {
 // (engine/render/emission_sum.cpp; shaders/render/emission_sum.comp).
 struct EmissionPush {
     uvec2 size;
-    uint layer;       // kGBufferEmission
-    uint background;  // 1: uncovered pixels take the background image
+    uint layer;  // kGBufferEmission
+    uint flags;  // kEmission* below
 };
+const uint kEmissionBackground = 1u;  // uncovered pixels take the background image
+const uint kEmissionChains = 2u;      // add the chain records' emitted radiance (chain_record.h)
 
 // A shadow cube face (engine/render/shadow_pass.cpp; shaders/render/shadow.vert).
 struct ShadowPush {

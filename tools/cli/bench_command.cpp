@@ -19,6 +19,7 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/memory.h"
+#include "engine/light/chain_options.h"
 #include "engine/render/vpl_renderer.h"
 #include "sampler/monte_carlo_sampler.h"
 #include "sampler/monte_carlo_stream.h"
@@ -53,6 +54,8 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.hemicube = c.hemicube;
     ro.vpl_culling = c.vpl_culling;
     ro.indirect_shadow_resolution = uint32_t(c.indirect_shadow_resolution);
+    ro.chains.max_roughness = c.chain_roughness;
+    ro.chains.max_depth = c.max_depth;
     return ro;
 }
 
@@ -114,6 +117,8 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.shadow_texels = t.shadow_texels;
     s.culled_vpls = t.culled_vpls;
     s.g_buffers = t.g_buffers;
+    s.chain_ms = t.chain_ms;
+    s.chain_rays = t.chain_rays;
     if (ranks.size() > 1) {
         // GPU time and work summed over the ranks, so that per VPL they are the job's cost.
         std::vector<double> sums{s.g_buffer_ms,
@@ -197,6 +202,8 @@ int run_bench(const Args& args) {
     config.hemicube = !renderer_args.no_hemicube;
     config.vpl_culling = !renderer_args.no_vpl_culling;
     config.indirect_shadow_resolution = renderer_args.indirect_shadow_res;
+    config.chain_roughness = renderer_args.no_chains ? -1.0f : renderer_args.chain_roughness;
+    config.max_depth = mc.tracer.max_depth;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     std::ofstream json_out;
@@ -237,6 +244,9 @@ int run_bench(const Args& args) {
         c.indirect_shadow_resolution =
             config.indirect_shadow_resolution == 0 ? std::max(config.shadow_resolution / 2, 4) : 0;
         sweep_configs.push_back(c);
+        c = config;
+        c.chain_roughness = config.chain_roughness >= 0.0f ? -1.0f : light::kDefaultChainRoughness;
+        sweep_configs.push_back(c);
     }
 
     BenchReport report;
@@ -263,7 +273,9 @@ int run_bench(const Args& args) {
             context = std::make_unique<gpu::Context>();
             context_s.push_back(t.seconds());
             t.reset();
-            renderer = std::make_unique<render::VplRenderer>(*context, session->scene());
+            // With the BVH: specular chains, where the scene has glossy surfaces.
+            renderer = std::make_unique<render::VplRenderer>(*context, session->scene(),
+                                                             &session->accel());
             // The first begin() builds the passes: pipelines and shader compilation belong to
             // start-up, not to the throughput of later renders.
             renderer->begin(session->scene().camera, render_options(config, clamp, !no_shadows));

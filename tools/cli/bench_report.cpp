@@ -39,6 +39,12 @@ std::string number(double value) {
     return buf;
 }
 
+std::string chain_bound(float roughness) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "≤ %.2f", double(roughness));
+    return buf;
+}
+
 std::string render_json(const RenderResult& r, const std::string& indent) {
     const std::string i = indent + "  ";
     std::string s = "{\n";
@@ -56,6 +62,9 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
             ? std::min(r.config.indirect_shadow_resolution, r.config.shadow_resolution)
             : r.config.shadow_resolution;
     s += i + "\"indirect_shadow_resolution\": " + std::to_string(indirect) + ",\n";
+    s += i + "\"chain_roughness\": " + number(r.config.chain_roughness) + ",\n";
+    s += i + "\"chain_ms\": " + number(r.median.chain_ms) + ",\n";
+    s += i + "\"chain_rays\": " + std::to_string(r.median.chain_rays) + ",\n";
     s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
     s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
@@ -83,7 +92,8 @@ std::string bench_levers(const BenchConfig& c) {
            std::to_string(c.interleave) + ", indirect faces " +
            (c.indirect_shadow_resolution > 0
                 ? std::to_string(std::min(c.indirect_shadow_resolution, c.shadow_resolution)) + "²"
-                : "as emitters'");
+                : "as emitters'") +
+           ", chains " + (c.chain_roughness >= 0.0f ? chain_bound(c.chain_roughness) : "off");
 }
 
 double BenchReport::paths_per_s() const {
@@ -115,6 +125,8 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
     r.median.shadow_ms = field(&RenderSample::shadow_ms);
     r.median.shading_ms = field(&RenderSample::shading_ms);
     r.median.wall_s = field(&RenderSample::wall_s);
+    r.median.chain_ms = field(&RenderSample::chain_ms);
+    r.median.chain_rays = samples.empty() ? 0 : samples.front().chain_rays;
     r.median.batches = samples.empty() ? 0 : samples.front().batches;
     r.median.shadow_triangles = samples.empty() ? 0 : samples.front().shadow_triangles;
     r.median.shadow_texels = samples.empty() ? 0 : samples.front().shadow_texels;
@@ -192,6 +204,7 @@ std::string bench_table(const BenchReport& b) {
                   "    G-buffer       %8.2f ms  %u G-buffers\n"
                   "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL, %.0f texels/VPL\n"
                   "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
+                  "    chains (host)  %8.2f ms  %llu rays\n"
                   "  end to end       %8.3f s  %.1f VPL/s\n"
                   "  peak memory      host %.1f MiB, device %.1f MiB\n",
                   m.config.width, m.config.height, m.config.shadow_resolution, m.config.batch,
@@ -199,7 +212,8 @@ std::string bench_table(const BenchReport& b) {
                   static_cast<unsigned long long>(m.median.culled_vpls), m.median.g_buffer_ms,
                   m.median.g_buffers, m.median.shadow_ms, m.shadow_ms_per_vpl,
                   m.shadow_triangles_per_vpl, m.shadow_texels_per_vpl, m.median.shading_ms,
-                  m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6, m.end_to_end_s,
+                  m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6, m.median.chain_ms,
+                  static_cast<unsigned long long>(m.median.chain_rays), m.end_to_end_s,
                   m.end_to_end_vpls_per_s, double(b.peak_host_bytes) / (1 << 20),
                   double(b.peak_device_bytes) / (1 << 20));
     s += buf;

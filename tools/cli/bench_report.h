@@ -20,6 +20,10 @@ struct BenchConfig {
     bool hemicube = true;        // render::RenderOptions::hemicube
     bool vpl_culling = true;     // render::RenderOptions::vpl_culling
     int indirect_shadow_resolution = 0;  // render::RenderOptions::indirect_shadow_resolution
+    // render::RenderOptions::chains: the roughness bound (negative: no specular chains) and the
+    // light paths' --max-depth, which bounds them.
+    float chain_roughness = -1.0f;
+    int max_depth = -1;
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".
@@ -36,6 +40,8 @@ struct RenderSample {
     uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
     uint64_t culled_vpls = 0;       // VPLs that could not reach the view
     uint32_t g_buffers = 0;         // one per sub-pixel position
+    double chain_ms = 0.0;          // host time tracing specular chains (within wall_s)
+    uint64_t chain_rays = 0;
 };
 
 // The medians over the repeats of one configuration, and the rates derived from those medians

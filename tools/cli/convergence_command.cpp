@@ -180,6 +180,7 @@ int run_convergence(const Args& args) {
     render::RenderOptions render_options;
     renderer_args.apply(render_options);
     render_options.chains.max_depth = run.max_depth;
+    settings.specular_chains = render_options.chains;  // the Metropolis target follows them too
     run.quiet = quiet;
     run.compensate = compensation_args.enabled();
     run.compensation_passes = uint32_t(compensation_args.spp);

@@ -113,6 +113,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     ro.subpixel_rotation = subpixel_rotation(s.seed);   // the seed varies the positions too
     ro.chains.max_depth = max_depth;
     ro.chain_seed = s.seed;
+    job.settings.specular_chains = ro.chains;  // the Metropolis target follows them too
     reference::GatherOptions& g = job.gather;
     g.width = a.width;
     g.height = a.height;

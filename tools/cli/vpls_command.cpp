@@ -8,6 +8,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/light/chain_options.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
 #include "engine/trace/interaction.h"
@@ -138,6 +139,9 @@ int run_vpls(const Args& args) {
     const session::SceneSession session(scene_path, camera.choice, environment.choice,
                                         scene_file.options);
     apply_scene_defaults(parser, session.scene(), &settings.tracer.max_depth, &width, &height);
+    // The Metropolis target follows the specular chains that `mvpl render` traces by default.
+    settings.specular_chains.max_roughness = light::kDefaultChainRoughness;
+    settings.specular_chains.max_depth = settings.tracer.max_depth;
     const scene::Scene& scene = session.scene();
     const trace::Accel& accel = session.accel();
     // The Metropolis target is the scene camera's view, whatever this picture shows.

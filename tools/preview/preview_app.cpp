@@ -64,7 +64,7 @@ public:
           m_window("mvpl preview: " + std::filesystem::path(options.scene_path).filename().string(),
                    options.width, options.height),
           m_context(context_options()),
-          m_renderer(m_context, m_session.scene()),
+          m_renderer(m_context, m_session.scene(), &m_session.accel()),  // specular chains
           m_swapchain(m_context, m_window.create_surface(m_context.instance()),
                       uint32_t(options.width), uint32_t(options.height)),
           m_present(m_context, m_swapchain.srgb()),
@@ -82,6 +82,11 @@ private:
         return co;
     }
     float clamp() const { return m_clamping ? m_options.clamp : 0.0f; }
+    light::ChainOptions chain_options() const {
+        light::ChainOptions c = m_options.levers.chains;
+        c.max_depth = m_options.max_depth;
+        return c;
+    }
     std::unique_ptr<VplHistory> make_history(const std::string& sampler) const;
     void apply(const Input& input, double dt);
     void apply_key(const std::string& key);
@@ -139,6 +144,7 @@ std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler)
     s.width = int(m_window_width ? m_window_width : uint32_t(m_options.width));
     s.height = int(m_window_height ? m_window_height : uint32_t(m_options.height));
     s.clamp = clamp();
+    s.specular_chains = chain_options();  // the target follows the chains the image traces
     return std::make_unique<VplHistory>(
         sampler::make_vpl_stream(sampler, m_session.scene(), m_session.accel(), m_session.lights(),
                                  m_controller.camera(), s),
@@ -234,6 +240,8 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     ro.jitter = m_options.jitter;
     ro.subpixel_rotation = subpixel_rotation(m_options.seed);  // as `mvpl render --seed`
     ro.clamp = clamp();
+    ro.chains = chain_options();
+    ro.chain_seed = m_options.seed;
     m_renderer.begin(m_controller.camera(), ro);
     m_replayed = 0;
     m_scale = 0.0;
