@@ -35,12 +35,13 @@ void expect_rel(double actual, double expected, const char* what) {
 }
 
 // Every number anywhere in the document is finite and positive (counts, times, rates, bytes),
-// but for the count of culled VPLs, which is ≥ 0; the rest are strings (scene, device) and
-// flags.
+// but for the count of culled VPLs and the specular chains' time, rays and roughness bound,
+// which are ≥ 0; the rest are strings (scene, device) and flags.
 void expect_positive_numbers(const json& j, const std::string& where) {
     if (j.is_object()) {
         for (const auto& [key, value] : j.items()) {
-            if (key == "culled_vpls") {
+            if (key == "culled_vpls" || key == "chain_ms" || key == "chain_rays" ||
+                key == "chain_roughness") {
                 EXPECT_GE(value.get<double>(), 0.0) << where;
                 continue;
             }
@@ -144,8 +145,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
-    // indirect faces of half the side.
-    ASSERT_EQ(j["sweep"].size(), 21u);
+    // indirect faces of half the side, specular chains.
+    ASSERT_EQ(j["sweep"].size(), 22u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -171,6 +172,12 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     // Indirect faces as emitters' (16² in this run) by default; switched: half of that.
     EXPECT_EQ(j["render"]["indirect_shadow_resolution"].get<int>(), 16);
     EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(), 8);
+    // Chains on by default and off when switched; the Cornell box has no glossy material, so
+    // neither traces a chain ray (a diffuse scene pays nothing for them).
+    EXPECT_TRUE(j["render"]["chains"].get<bool>());
+    EXPECT_FALSE(j["sweep"][21]["chains"].get<bool>());
+    EXPECT_EQ(j["render"]["chain_rays"].get<int64_t>(), 0);
+    EXPECT_EQ(j["sweep"][21]["chain_rays"].get<int64_t>(), 0);
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());
@@ -178,6 +185,34 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     // The table for people: a header and one row per configuration.
     EXPECT_NE(s_result.out.find("end to end"), std::string::npos) << s_result.out;
     EXPECT_NE(s_result.out.find("batch  shadow"), std::string::npos) << s_result.out;
+}
+
+// A scene with near-mirror metals traces specular chains in bench as in render: one chain per
+// pixel and sub-pixel position (32 × 24 pixels, 2 batches of 8 VPLs: 2 positions), each at
+// least one ray; `--no-chains` traces none.
+TEST(BenchChains, TheGlossySceneTracesChainsUnlessTurnedOff) {
+    const std::string glossy = MVPL_ASSETS_DIR "/glossy/glossy.gltf";
+    for (const bool off : {false, true}) {
+        const std::string path = (std::filesystem::temp_directory_path() /
+                                  ("mvpl_bench_chains_" + std::to_string(::getpid()) + ".json"))
+                                     .string();
+        const test::CommandResult r = test::run_mvpl_gpu(
+            "bench " + shell_quote(glossy) + " --res 32x24 --shadow-res 16 --batch 8 --vpls 8" +
+            " --repeat 1 --quiet" + (off ? " --no-chains" : "") + " --json " + shell_quote(path));
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        std::ifstream in(path);
+        const json j = json::parse(in);
+        std::filesystem::remove(path);
+        EXPECT_EQ(j["render"]["chains"].get<bool>(), !off);
+        const int64_t rays = j["render"]["chain_rays"].get<int64_t>();
+        const int64_t positions = j["render"]["g_buffers"].get<int64_t>();
+        if (off) {
+            EXPECT_EQ(rays, 0);
+        } else {
+            EXPECT_GE(rays, 32 * 24 * positions);
+            EXPECT_GT(j["render"]["chain_ms"].get<double>(), 0.0);
+        }
+    }
 }
 
 TEST(BenchUsage, BadFlagsExitTwoWithOneLine) {

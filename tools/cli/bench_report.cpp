@@ -62,7 +62,9 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
             ? std::min(r.config.indirect_shadow_resolution, r.config.shadow_resolution)
             : r.config.shadow_resolution;
     s += i + "\"indirect_shadow_resolution\": " + std::to_string(indirect) + ",\n";
-    s += i + "\"chain_roughness\": " + number(r.config.chain_roughness) + ",\n";
+    const bool chains = r.config.chain_roughness >= 0.0f;
+    s += i + "\"chains\": " + (chains ? "true" : "false") + ",\n";
+    if (chains) s += i + "\"chain_roughness\": " + number(r.config.chain_roughness) + ",\n";
     s += i + "\"chain_ms\": " + number(r.median.chain_ms) + ",\n";
     s += i + "\"chain_rays\": " + std::to_string(r.median.chain_rays) + ",\n";
     s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
