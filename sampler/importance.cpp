@@ -33,6 +33,8 @@ Importance::Importance(const scene::Scene& scene, const trace::Accel& accel,
     m_weights.assign(m_points.size(), 1.0);
     const float d_min = options.clamp * scene.bounds().diagonal();
     m_d_min2 = d_min * d_min;
+    const float vsl_radius = options.vsl_radius * scene.bounds().diagonal();
+    m_vsl_r2 = vsl_radius * vsl_radius;
 }
 
 double Importance::evaluate(std::span<const light::Vpl> vpls) const {
@@ -40,7 +42,7 @@ double Importance::evaluate(std::span<const light::Vpl> vpls) const {
     for (const light::Vpl& v : vpls) {
         const light::PreparedVpl pv = light::prepare_vpl(v);
         for (size_t k = 0; k < m_points.size(); ++k) {
-            const Rgb c = light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2);
+            const Rgb c = light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2, m_vsl_r2);
             sum += m_weights[k] * double(luminance(c));
         }
     }
@@ -52,7 +54,7 @@ void Importance::evaluate_points(std::span<const light::Vpl> vpls,
     for (const light::Vpl& v : vpls) {
         const light::PreparedVpl pv = light::prepare_vpl(v);
         for (size_t k = 0; k < m_points.size(); ++k)
-            per_point[k] += luminance(light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2));
+            per_point[k] += luminance(light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2, m_vsl_r2));
     }
 }
 

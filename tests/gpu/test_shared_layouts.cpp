@@ -113,6 +113,7 @@ const Member kMembers[] = {
     MVPL_MEMBER(ShadingPush, size),
     MVPL_MEMBER(ShadingPush, interleave),
     MVPL_MEMBER(ShadingPush, vpl_offset),
+    MVPL_MEMBER(ShadingPush, vsl_r2),
     MVPL_MEMBER(InterleavePush, size),
     MVPL_MEMBER(InterleavePush, interleave),
     MVPL_MEMBER(InterleavePush, pad),

@@ -139,6 +139,7 @@ std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler)
     s.width = int(m_window_width ? m_window_width : uint32_t(m_options.width));
     s.height = int(m_window_height ? m_window_height : uint32_t(m_options.height));
     s.clamp = clamp();
+    s.vsl_radius = m_options.levers.vsl_radius;
     return std::make_unique<VplHistory>(
         sampler::make_vpl_stream(sampler, m_session.scene(), m_session.accel(), m_session.lights(),
                                  m_controller.camera(), s),
