@@ -54,7 +54,8 @@ void Importance::evaluate_points(std::span<const light::Vpl> vpls,
     for (const light::Vpl& v : vpls) {
         const light::PreparedVpl pv = light::prepare_vpl(v);
         for (size_t k = 0; k < m_points.size(); ++k)
-            per_point[k] += luminance(light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2, m_vsl_r2));
+            per_point[k] +=
+                luminance(light::vpl_contribution(m_accel, m_points[k], pv, m_d_min2, m_vsl_r2));
     }
 }
 

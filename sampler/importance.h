@@ -25,9 +25,9 @@ struct ImportanceOptions {
     // The image the points are spread over (its aspect decides the field of view).
     int width = 256;
     int height = 256;
-    float clamp = light::kDefaultClamp;  // d_min / scene diagonal, as the renderer's
+    float clamp = light::kDefaultClamp;           // d_min / scene diagonal, as the renderer's
     float vsl_radius = light::kDefaultVslRadius;  // light/virtual_sphere.h, as the renderer's
-    uint64_t seed = 0;                   // jitter inside the strata
+    uint64_t seed = 0;                            // jitter inside the strata
     // Relative target: point k's luminance is weighted by 1 / (L_k + 0.1·mean L), L_k the radiance
     // there as estimated by the bootstrap (set_point_radiance), so that dim points (indirectly
     // lit walls) count as much as the errors measured relative to the pixel (relMSE) make them

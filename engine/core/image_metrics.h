@@ -11,7 +11,7 @@ struct ImageError {
     double rel_mse = 0.0;
     double rmse = 0.0;
     double mean_abs = 0.0;
-    DVec3 mean_ratio{1.0};  // per channel mean(x) / mean(r)
+    DVec3 mean_ratio{1.0};      // per channel mean(x) / mean(r)
     double rel_err_p999 = 0.0;  // 99.9th percentile (nearest rank) of |x − r| / (r + 10⁻²)
     double max_ratio = 0.0;     // max x / (r + 10⁻²)
 };

@@ -13,7 +13,9 @@ inline constexpr float kDefaultVslRadius = 0.03f;
 
 // Area and surface VPLs stand for a patch of surface and become spheres; point, spot and
 // directional VPLs are the scene's own punctual lights and stay as they are.
-inline bool is_spherical(VplType t) { return t == VplType::Area || t == VplType::Surface; }
+inline bool is_spherical(VplType t) {
+    return t == VplType::Area || t == VplType::Surface;
+}
 
 // The closure with its GGX α widened by spread2 (vsl_spread2); the closure itself when spread2
 // is 0 or the closure has no microfacet lobe.

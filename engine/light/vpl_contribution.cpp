@@ -103,9 +103,10 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
     if (!(glm::dot(to_light, sp.ng) > 0.0f)) return Rgb(0.0f);  // below the geometric surface
     const Vec3 wi = sp.frame.to_local(to_light);
     if (!(wi.z > 0.0f)) return Rgb(0.0f);  // cos θ' = max(0, n'·(−ω))
-    const Rgb f = spread2 > 0.0f && !sp.bsdf.params().is_lambertian()
-                      ? material::Bsdf(widen_closure(sp.bsdf.params(), spread2)).eval(receiver.wo, wi)
-                      : sp.bsdf.eval(receiver.wo, wi);
+    const Rgb f =
+        spread2 > 0.0f && !sp.bsdf.params().is_lambertian()
+            ? material::Bsdf(widen_closure(sp.bsdf.params(), spread2)).eval(receiver.wo, wi)
+            : sp.bsdf.eval(receiver.wo, wi);
     if (is_black(f)) return Rgb(0.0f);
     const Rgb c = v.power * f * factor * (wi.z * inv_d2);
     if (is_black(c)) return Rgb(0.0f);

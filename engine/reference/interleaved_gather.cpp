@@ -111,8 +111,8 @@ Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
                     // The first VPL of the position whose index since begin() is c mod K².
                     size_t v = i + size_t((c + classes - (first + i) % classes) % classes);
                     for (; v < end; v += classes) {
-                        t.shaded +=
-                            DVec3(light::vpl_contribution(accel, *receiver, vpls[v], d_min2, vsl_r2));
+                        t.shaded += DVec3(
+                            light::vpl_contribution(accel, *receiver, vpls[v], d_min2, vsl_r2));
                     }
                     t.shaded *= double(classes);
                 }

@@ -62,8 +62,8 @@ Rgb shade_pixel(const Gather& g, int x, int y) {
             DVec3 part(0.0);
             for (size_t k = i; k < end; ++k) {
                 if (g.vpls[k].vpl->path_length > chained.max_vpl_length) continue;
-                part +=
-                    DVec3(light::vpl_contribution(g.accel, *chained.receiver, g.vpls[k], g.d_min2, g.vsl_r2));
+                part += DVec3(light::vpl_contribution(g.accel, *chained.receiver, g.vpls[k],
+                                                      g.d_min2, g.vsl_r2));
             }
             sum += part * DVec3(chained.throughput);
         }
@@ -100,8 +100,8 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
     const std::vector<light::PreparedVpl> none;
     GatherOptions emission_only = options;
     emission_only.first_vpl = options.first_vpl + prepared.size();
-    const Gather ge{scene,  accel,    none,           emission_only,
-                    vpls.scale, g.d_min2, g.show_emitters, g.vsl_r2};
+    const Gather ge{scene,    accel,           none,    emission_only, vpls.scale,
+                    g.d_min2, g.show_emitters, g.vsl_r2};
     Image image(options.width, options.height);
     Progress progress("vpl gather", options.height, options.quiet);
     parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {

@@ -138,8 +138,8 @@ TEST(VirtualSphere, TheWidenedLobeMatchesTheConeAverageAtItsCentre) {
                     const float cos_t = 1.0f - u * (1.0f - std::cos(theta_s));
                     const float sin_t = std::sqrt(std::max(0.0f, 1.0f - cos_t * cos_t));
                     const float phi = 2.0f * kPi * v;
-                    const Vec3 w = frame.to_world(
-                        Vec3(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t));
+                    const Vec3 w =
+                        frame.to_world(Vec3(sin_t * std::cos(phi), sin_t * std::sin(phi), cos_t));
                     sum += double(point.eval(wo, w).r);
                     ++count;
                 }
@@ -150,8 +150,9 @@ TEST(VirtualSphere, TheWidenedLobeMatchesTheConeAverageAtItsCentre) {
             const material::Bsdf sphere(widen_closure(c, shared::vsl_spread2(r * r, d * d)));
             const double closed = double(sphere.eval(wo, centre).r);
             const double ratio = closed / average;
-            std::printf("alpha %.3f theta_s %.2f: closed form %.4g, cone average %.4g, ratio %.3f\n",
-                        alpha, theta_s, closed, average, ratio);
+            std::printf(
+                "alpha %.3f theta_s %.2f: closed form %.4g, cone average %.4g, ratio %.3f\n", alpha,
+                theta_s, closed, average, ratio);
             EXPECT_GT(ratio, 1.0 / 1.5) << alpha << " " << theta_s;
             EXPECT_LT(ratio, 1.5) << alpha << " " << theta_s;
         }

@@ -15,7 +15,8 @@
 
 namespace mvpl::cli {
 
-// --shadow-res, --batch, --clamp, --vsl-radius, --no-vsl, --no-jitter, --no-shadow-culling, --no-shadow-proxy,
+// --shadow-res, --batch, --clamp, --vsl-radius, --no-vsl, --no-jitter, --no-shadow-culling,
+// --no-shadow-proxy,
 // --no-hemicube, --no-vpl-culling, --interleave, --indirect-shadow-res: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
