@@ -94,7 +94,7 @@ uint64_t seed_from_env(uint64_t fallback) {
 // 1024 light paths at 48² (1962 such pixels: the percentile is the second-largest), the
 // reference 1024 spp. 16× the paths quarter the noise's deviation; the percentile's floor is
 // the bias of the clamp and the spheres (~0.55–0.8 at 1024 paths). Measured over seeds 1–10
-// (MVPL_VSL_SEED): the percentile falls from 0.87–4.9 to 0.55–0.76 (by 1.14–7.5×), the largest
+// (MVPL_VSL_SEED): the percentile falls from 0.87–4.9 to 0.55–0.80 (by 1.14–7.5×), the largest
 // ratio is 1.8–7.1 at 64 paths and 1.2–1.8 at 1024; with point VPLs at 1024 paths the
 // percentile is 0.66–4.2 and the largest ratio 1.5–27.6. The test runs seed 1.
 TEST_F(VirtualSpheresTest, NoGlossySpikes) {
