@@ -40,12 +40,14 @@ Importance::Importance(const scene::Scene& scene, const trace::Accel& accel,
     m_weights.assign(m_points.size(), 1.0);
     const float d_min = options.clamp * scene.bounds().diagonal();
     m_d_min2 = d_min * d_min;
+    const float vsl_radius = options.vsl_radius * scene.bounds().diagonal();
+    m_vsl_r2 = vsl_radius * vsl_radius;
 }
 
 float Importance::luminance_at(const Point& point, const light::PreparedVpl& pv) const {
     if (pv.vpl->path_length > point.max_vpl_length) return 0.0f;
     return luminance(point.throughput *
-                     light::vpl_contribution(m_accel, point.receiver, pv, m_d_min2));
+                     light::vpl_contribution(m_accel, point.receiver, pv, m_d_min2, m_vsl_r2));
 }
 
 double Importance::evaluate(std::span<const light::Vpl> vpls) const {

@@ -16,6 +16,7 @@
 
 #include "engine/core/color.h"
 #include "engine/light/chain_options.h"
+#include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
 #include "engine/light/vpl_contribution.h"
 #include "engine/scene/scene.h"
@@ -28,8 +29,9 @@ struct ImportanceOptions {
     // The image the points are spread over (its aspect decides the field of view).
     int width = 256;
     int height = 256;
-    float clamp = light::kDefaultClamp;  // d_min / scene diagonal, as the renderer's
-    uint64_t seed = 0;                   // jitter inside the strata
+    float clamp = light::kDefaultClamp;           // d_min / scene diagonal, as the renderer's
+    float vsl_radius = light::kDefaultVslRadius;  // light/virtual_sphere.h, as the renderer's
+    uint64_t seed = 0;                            // jitter inside the strata
     // Relative target: point k's luminance is weighted by 1 / (L_k + 0.1·mean L), L_k the radiance
     // there as estimated by the bootstrap (set_point_radiance), so that dim points (indirectly
     // lit walls) count as much as the errors measured relative to the pixel (relMSE) make them
@@ -71,6 +73,7 @@ private:
     bool m_relative = true;
     int m_rays = 0;
     float m_d_min2 = 0.0f;
+    float m_vsl_r2 = 0.0f;
 };
 
 // The defensive target. Why [the path has a VPL] is the right indicator: a path's contribution

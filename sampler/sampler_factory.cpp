@@ -24,6 +24,7 @@ MetropolisOptions metropolis_options(const SamplerSettings& s) {
     o.importance.width = s.width;
     o.importance.height = s.height;
     o.importance.clamp = s.clamp;
+    o.importance.vsl_radius = s.vsl_radius;
     o.importance.seed = s.seed;
     o.importance.chains = s.specular_chains;
     o.cluster = s.cluster;

@@ -25,6 +25,7 @@ struct SamplerSettings {
     int width = 256;
     int height = 256;
     float clamp = ImportanceOptions{}.clamp;
+    float vsl_radius = ImportanceOptions{}.vsl_radius;
     // Defaults are MetropolisOptions' own (measured there), not copies.
     float large_step = MetropolisOptions{}.large_step;
     float sigma = MetropolisOptions{}.sigma;

@@ -1,6 +1,9 @@
 #include "engine/core/image_metrics.h"
 
+#include <algorithm>
+#include <cmath>
 #include <string>
+#include <vector>
 
 #include "engine/core/error.h"
 
@@ -17,9 +20,16 @@ ImageError compare_images(const Image& image, const Image& reference) {
     DVec3 sum_x(0.0), sum_r(0.0);
     double rel = 0.0, sq = 0.0, abs_sum = 0.0;
     const size_t n = image.pixels().size();
+    // The spike metrics' +10⁻²: relMSE's guard against dividing by black pixels, unsquared.
+    constexpr double kGuard = 1e-2;
+    std::vector<double> rel_err(n);
     for (size_t i = 0; i < n; ++i) {
         const DVec3 x(image.pixels()[i]);
         const DVec3 r(reference.pixels()[i]);
+        const double lx = double(luminance(image.pixels()[i]));
+        const double lr = double(luminance(reference.pixels()[i]));
+        rel_err[i] = std::abs(lx - lr) / (std::abs(lr) + kGuard);
+        e.max_ratio = std::max(e.max_ratio, lx / (std::abs(lr) + kGuard));
         const DVec3 d = x - r;
         sum_x += x;
         sum_r += r;
@@ -34,6 +44,10 @@ ImageError compare_images(const Image& image, const Image& reference) {
     e.rel_mse = rel / count;
     e.rmse = std::sqrt(sq / count);
     e.mean_abs = abs_sum / count;
+    // Nearest rank: the ⌈0.999 n⌉-th smallest.
+    const size_t rank = std::min(n - 1, size_t(std::ceil(0.999 * double(n))) - 1);
+    std::nth_element(rel_err.begin(), rel_err.begin() + std::ptrdiff_t(rank), rel_err.end());
+    e.rel_err_p999 = rel_err[rank];
     for (int c = 0; c < 3; ++c)
         e.mean_ratio[c] =
             sum_r[c] != 0.0 ? sum_x[c] / sum_r[c] : (sum_x[c] == 0.0 ? 1.0 : INFINITY);

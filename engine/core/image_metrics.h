@@ -1,6 +1,8 @@
 #pragma once
 // Error of an image against a reference (DESIGN.md "Units and conventions"):
-// relMSE = mean((x − r)² / (r² + 10⁻²)), RMSE, mean absolute error, and the ratio of means.
+// relMSE = mean((x − r)² / (r² + 10⁻²)), RMSE, mean absolute error, and the ratio of means; and
+// the spikes a mean hides (issue 15, "No spikes"): over pixels, with x and r the luminances, the
+// 99.9th percentile of |x − r| / (r + 10⁻²) and the largest x / (r + 10⁻²).
 #include "engine/core/image.h"
 
 namespace mvpl {
@@ -9,7 +11,9 @@ struct ImageError {
     double rel_mse = 0.0;
     double rmse = 0.0;
     double mean_abs = 0.0;
-    DVec3 mean_ratio{1.0};  // per channel mean(x) / mean(r)
+    DVec3 mean_ratio{1.0};      // per channel mean(x) / mean(r)
+    double rel_err_p999 = 0.0;  // 99.9th percentile (nearest rank) of |x − r| / (r + 10⁻²)
+    double max_ratio = 0.0;     // max x / (r + 10⁻²)
 };
 
 // Both images must have the same size (throws UsageError otherwise).

@@ -3,14 +3,17 @@
 #include <algorithm>
 #include <cmath>
 
+#include "engine/light/virtual_sphere.h"
 #include "engine/trace/interaction.h"
+#include "shaders/shared/virtual_sphere.h"
 
 namespace mvpl::light {
 namespace {
 
 // The VPL's own factor towards the receiver: spot(axis·ω), max(0, n_j·ω) or
-// f_j(ω_in, ω)·max(0, n_j·ω) (vpl.h), ω the unit direction from the VPL to the receiver.
-Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w) {
+// f_j(ω_in, ω)·max(0, n_j·ω) (vpl.h), ω the unit direction from the VPL to the receiver; f_j's
+// lobe integrated over the virtual sphere of spread s² = spread2 (virtual_sphere.h).
+Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w, float spread2) {
     const Vpl& v = *pv.vpl;
     switch (v.type) {
         case VplType::Point:
@@ -26,7 +29,12 @@ Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w) {
         case VplType::Surface: {
             const float cos_j = glm::dot(v.normal, w);
             if (!(cos_j > 0.0f)) return Rgb(0.0f);
-            return pv.bsdf->eval(pv.wi_local, pv.frame.to_local(w)) * cos_j;
+            const Vec3 w_local = pv.frame.to_local(w);
+            if (spread2 > 0.0f && !v.closure.is_lambertian()) {
+                const material::Bsdf widened(widen_closure(v.closure, spread2));
+                return widened.eval(pv.wi_local, w_local) * cos_j;
+            }
+            return pv.bsdf->eval(pv.wi_local, w_local) * cos_j;
         }
         case VplType::Directional:
             break;
@@ -73,12 +81,13 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
 }
 
 Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const PreparedVpl& pv,
-                     float d_min2) {
+                     float d_min2, float vsl_r2) {
     const trace::ShadingPoint& sp = receiver.sp;
     const Vpl& v = *pv.vpl;
     Vec3 to_light;  // unit, receiver → VPL
     float inv_d2 = 1.0f;
     Rgb factor(1.0f);
+    float spread2 = 0.0f;  // of the virtual sphere, for both lobes (virtual_sphere.h)
     if (v.type == VplType::Directional) {
         to_light = -v.normal;
     } else {
@@ -87,13 +96,17 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
         if (!(dist2 > 0.0f)) return Rgb(0.0f);
         to_light = d / std::sqrt(dist2);
         inv_d2 = 1.0f / std::max(dist2, d_min2);
-        factor = emitter_factor(pv, -to_light);
+        if (is_spherical(v.type)) spread2 = shared::vsl_spread2(vsl_r2, dist2);
+        factor = emitter_factor(pv, -to_light, spread2);
     }
     if (is_black(factor)) return Rgb(0.0f);
     if (!(glm::dot(to_light, sp.ng) > 0.0f)) return Rgb(0.0f);  // below the geometric surface
     const Vec3 wi = sp.frame.to_local(to_light);
     if (!(wi.z > 0.0f)) return Rgb(0.0f);  // cos θ' = max(0, n'·(−ω))
-    const Rgb f = sp.bsdf.eval(receiver.wo, wi);
+    const Rgb f =
+        spread2 > 0.0f && !sp.bsdf.params().is_lambertian()
+            ? material::Bsdf(widen_closure(sp.bsdf.params(), spread2)).eval(receiver.wo, wi)
+            : sp.bsdf.eval(receiver.wo, wi);
     if (is_black(f)) return Rgb(0.0f);
     const Rgb c = v.power * f * factor * (wi.z * inv_d2);
     if (is_black(c)) return Rgb(0.0f);

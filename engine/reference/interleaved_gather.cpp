@@ -75,6 +75,8 @@ Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
     const uint64_t classes = uint64_t(k) * uint64_t(k);
     const SubpixelSchedule& schedule = options.subpixel;
     const uint64_t first = options.first_vpl;
+    const float vsl_radius = options.vsl_radius * scene.bounds().diagonal();
+    const float vsl_r2 = vsl_radius * vsl_radius;
     std::vector<DVec3> sum(size_t(width) * size_t(height), DVec3(0.0));
     std::vector<Texel> texels(sum.size());
     for (size_t i = 0; i < vpls.size();) {
@@ -109,8 +111,8 @@ Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
                     // The first VPL of the position whose index since begin() is c mod K².
                     size_t v = i + size_t((c + classes - (first + i) % classes) % classes);
                     for (; v < end; v += classes) {
-                        t.shaded +=
-                            DVec3(light::vpl_contribution(accel, *receiver, vpls[v], d_min2));
+                        t.shaded += DVec3(
+                            light::vpl_contribution(accel, *receiver, vpls[v], d_min2, vsl_r2));
                     }
                     t.shaded *= double(classes);
                 }

@@ -26,6 +26,7 @@ struct Gather {
     double scale;
     float d_min2;
     bool show_emitters;
+    float vsl_r2;
 };
 
 // The pixel (x, y): per sub-pixel position a camera ray, the emitted radiance if the position is
@@ -61,8 +62,8 @@ Rgb shade_pixel(const Gather& g, int x, int y) {
             DVec3 part(0.0);
             for (size_t k = i; k < end; ++k) {
                 if (g.vpls[k].vpl->path_length > chained.max_vpl_length) continue;
-                part +=
-                    DVec3(light::vpl_contribution(g.accel, *chained.receiver, g.vpls[k], g.d_min2));
+                part += DVec3(light::vpl_contribution(g.accel, *chained.receiver, g.vpls[k],
+                                                      g.d_min2, g.vsl_r2));
             }
             sum += part * DVec3(chained.throughput);
         }
@@ -82,13 +83,15 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
     for (const light::Vpl& v : vpls.vpls)
         prepared.push_back(light::prepare_vpl(v));
     const float d_min = options.clamp * scene.bounds().diagonal();
+    const float vsl_radius = options.vsl_radius * scene.bounds().diagonal();
     const Gather g{scene,
                    accel,
                    prepared,
                    options,
                    vpls.scale,
                    d_min * d_min,
-                   options.max_depth < 0 || options.max_depth >= 1};
+                   options.max_depth < 0 || options.max_depth >= 1,
+                   vsl_radius * vsl_radius};
     // Interleaved: the pixels shade the emission alone (an empty list after all of them, so
     // that it is averaged over the same positions) and the filtered VPL sum is added.
     // As the GPU renderer: not where specular chains are traced (render/vpl_renderer.h).
@@ -97,7 +100,8 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
     const std::vector<light::PreparedVpl> none;
     GatherOptions emission_only = options;
     emission_only.first_vpl = options.first_vpl + prepared.size();
-    const Gather ge{scene, accel, none, emission_only, vpls.scale, g.d_min2, g.show_emitters};
+    const Gather ge{scene,    accel,           none,    emission_only, vpls.scale,
+                    g.d_min2, g.show_emitters, g.vsl_r2};
     Image image(options.width, options.height);
     Progress progress("vpl gather", options.height, options.quiet);
     parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {

@@ -16,6 +16,7 @@
 
 #include "engine/core/image.h"
 #include "engine/light/specular_chain.h"
+#include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
@@ -26,6 +27,9 @@ struct GatherOptions {
     int width = 256;
     int height = 256;
     float clamp = light::kDefaultClamp;  // d_min as a fraction of the scene's diagonal
+    // Radius of the virtual spherical lights, a fraction of the scene's diagonal, as
+    // RenderOptions::vsl_radius (light/virtual_sphere.h); 0: point VPLs.
+    float vsl_radius = light::kDefaultVslRadius;
     // Mitsuba's max_depth; it only decides whether emitters seen directly are shown (≥ 1 or < 0).
     // Which VPLs exist for that depth is the sampler's business (LightTracer).
     int max_depth = 6;

@@ -25,11 +25,15 @@ std::string trim(std::string_view s) {
     return std::string(s.substr(a, b - a + 1));
 }
 
+// `//@if a|b|!c`: a or b enabled, or c not.
 bool any_enabled(const std::string& names, const std::vector<std::string>& enabled) {
     std::istringstream in(names);
     std::string name;
     while (std::getline(in, name, '|')) {
-        if (std::find(enabled.begin(), enabled.end(), trim(name)) != enabled.end()) return true;
+        std::string n = trim(name);
+        const bool negated = n.starts_with("!");
+        if (negated) n = trim(std::string_view(n).substr(1));
+        if ((std::find(enabled.begin(), enabled.end(), n) != enabled.end()) != negated) return true;
     }
     return false;
 }
@@ -40,6 +44,7 @@ std::vector<std::string> enabled_names(const ShaderFeatures& f) {
         if (f.vpl_types[size_t(i)]) out.emplace_back(kVplTypeNames[i]);
     if (f.thin_walls) out.emplace_back("thin_walls");
     if (f.specular_chains) out.emplace_back("specular_chains");
+    if (f.glossy()) out.emplace_back("glossy");
     return out;
 }
 

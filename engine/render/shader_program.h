@@ -26,6 +26,14 @@ struct ShaderFeatures {
     bool specular_chains = false;
 
     bool has(light::VplType t) const { return vpl_types[size_t(t)]; }
+    // Some closure type with a microfacet lobe: area and surface VPLs are shaded as virtual
+    // spherical lights (shaders/shared/virtual_sphere.h); a diffuse-only scene's shader has no
+    // such code.
+    bool glossy() const {
+        for (size_t i = 1; i < closure_types.size(); ++i)
+            if (closure_types[i]) return true;
+        return false;
+    }
     bool has_directional() const { return has(light::VplType::Directional); }
     // Every VPL and closure type: for callers that shade VPLs of unknown origin (tests).
     static ShaderFeatures all();

@@ -132,6 +132,7 @@ void ShadingPass::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
     push.camera_position[1] = batch.camera_position.y;
     push.camera_position[2] = batch.camera_position.z;
     push.d_min2 = batch.d_min * batch.d_min;
+    push.vsl_r2 = batch.vsl_radius * batch.vsl_radius;
     push.texel_angle = 2.0f / float(shadows->width());
     push.vpl_count = m_count;
     push.flags = (batch.add_emission ? kAddEmission : 0u) | (batch.shadows ? kShadows : 0u);

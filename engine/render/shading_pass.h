@@ -25,6 +25,7 @@ namespace mvpl::render {
 struct ShadingBatch {
     Vec3 camera_position{0.0f};
     float d_min = 0.0f;         // clamping distance of the geometric term (world units)
+    float vsl_radius = 0.0f;    // of the virtual spherical lights (world units); 0: point VPLs
     bool add_emission = false;  // add the G-buffer's emitted radiance (once per image)
     // From ShadowPass: the cube array and the directional maps; nullptr: unshadowed.
     const gpu::Image* shadows = nullptr;

@@ -263,6 +263,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     ShadingBatch batch;
     batch.camera_position = m.view_camera.position();
     batch.d_min = options.clamp * m.geometry.bounds().diagonal();
+    batch.vsl_radius = options.vsl_radius * m.geometry.bounds().diagonal();
     batch.shadows = options.shadows ? &m.shadow->cubes() : nullptr;
     batch.ortho_shadows = options.shadows ? &m.shadow->ortho_maps() : nullptr;
     // Emitted radiance is summed per G-buffer (EmissionSum) and added by resolve(), unscaled, so

@@ -17,6 +17,7 @@
 #include "engine/core/image.h"
 #include "engine/core/subpixel.h"
 #include "engine/light/chain_options.h"
+#include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 
@@ -40,6 +41,9 @@ struct RenderOptions {
     uint32_t batch = 32;  // VPLs per shadow/shading batch
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.
     float clamp = light::kDefaultClamp;
+    // Radius of the virtual spherical lights that area and surface VPLs become, as a fraction of
+    // the scene diagonal (light/virtual_sphere.h); 0: point VPLs (--no-vsl).
+    float vsl_radius = light::kDefaultVslRadius;
     bool shadows = true;  // false: every VPL unshadowed (tests, debugging)
     // Each cube face draws only the triangle clusters it can see (shadow_clusters.h); false: every
     // triangle into every face (the A/B of mvpl bench --sweep).

@@ -13,6 +13,17 @@
 #include "shared/chain_record.h"
 //@endif
 //@insert closures
+//@if glossy
+#include "shared/virtual_sphere.h"
+
+// light::widen_closure (engine/light/virtual_sphere.cpp): the lobe integrated over a virtual
+// sphere of spread s² = spread2.
+Closure widen_closure(Closure c, float spread2) {
+    Closure w = c;
+    w.roughness = sqrt(vsl_alpha(roughness_to_alpha(c.roughness), spread2));
+    return w;
+}
+//@endif
 
 layout(local_size_x = 8, local_size_y = 8) in;
 
@@ -274,6 +285,12 @@ void main() {
         if (cos_r <= 0.0) continue;
         float emitter = 1.0;  // the VPL's own factor: spot falloff or max(0, n_j·ω)
         vec3 f_vpl = vec3(1.0);
+//@if glossy
+        // Area and surface VPLs are virtual spherical lights: both lobes widened (light::
+        // vpl_contribution; shared/virtual_sphere.h).
+        const float spread2 =
+            v.type == kVplArea || v.type == kVplSurface ? vsl_spread2(pc.vsl_r2, d2) : 0.0;
+//@endif
 //@if spot
         if (v.type == kVplSpot) emitter = spot_falloff(v, dot(v.normal, w));
 //@endif
@@ -284,11 +301,25 @@ void main() {
         if (v.type == kVplSurface) {
             const Closure c = Closure(v.closure_type, v.base_color, v.metallic, v.specular_color,
                                       v.specular, v.roughness, v.ior);
+//@if glossy
+            f_vpl = closure_eval(spread2 > 0.0 && c.type != 0u ? widen_closure(c, spread2) : c,
+                                 v.shading_normal, v.wi, w);
+//@endif
+//@if !glossy
             f_vpl = closure_eval(c, v.shading_normal, v.wi, w);
+//@endif
         }
 //@endif
         if (emitter <= 0.0 || max_component(f_vpl) <= 0.0) continue;
+//@if glossy
+        const vec3 f_r = closure_eval(spread2 > 0.0 && receiver.type != 0u
+                                          ? widen_closure(receiver, spread2)
+                                          : receiver,
+                                      n, wo, -w);
+//@endif
+//@if !glossy
         const vec3 f_r = closure_eval(receiver, n, wo, -w);
+//@endif
         if (max_component(f_r) <= 0.0) continue;
         const float vis =
             (pc.flags & kShadows) != 0u

@@ -63,6 +63,12 @@ struct ShadingPush {
     // stores the sum instead of adding it (the filter adds it to the accumulation).
     uint interleave;
     uint vpl_offset;  // the batch's first VPL index since begin(), mod K²
+    // r², the squared radius of the virtual spherical lights that area and surface VPLs become
+    // (shaders/shared/virtual_sphere.h); 0: point VPLs.
+    float vsl_r2;
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 // The geometry-aware filter of interleaved sampling (engine/render/interleave_filter.cpp;
@@ -92,7 +98,8 @@ static_assert(sizeof(OrthoPush) == 64);
 MVPL_STD430_MEMBER(ShadingPush, camera_position);
 MVPL_STD430_MEMBER(ShadingPush, size);
 MVPL_STD430_MEMBER(ShadingPush, interleave);
-static_assert(sizeof(ShadingPush) == 48);
+MVPL_STD430_MEMBER(ShadingPush, vsl_r2);
+static_assert(sizeof(ShadingPush) == 64);
 MVPL_STD430_MEMBER(InterleavePush, size);
 static_assert(sizeof(InterleavePush) == 16);
 #endif

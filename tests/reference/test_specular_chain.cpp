@@ -52,6 +52,7 @@ GatherOptions chain_gather(int size, int max_depth, float max_roughness) {
     GatherOptions g;
     g.width = g.height = size;
     g.clamp = 0.0f;
+    g.vsl_radius = 0.0f;  // point VPLs: unbiased (virtual spheres blur glossy lobes)
     g.max_depth = max_depth;
     g.chains.max_roughness = max_roughness;
     g.chains.max_depth = max_depth;

@@ -2,6 +2,9 @@
 
 #include "engine/material/graph_eval.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include <glm/glm.hpp>
 
 #include "engine/material/bsdf.h"
@@ -82,8 +85,29 @@ bool segment_hits_mesh(const scene::Mesh& mesh, const Vec3& a, const Vec3& b) {
     return false;
 }
 
+namespace {
+
+// The virtual sphere's lobe (light/virtual_sphere.h), written out from its formula: the GGX α
+// (perceptual roughness squared) widened to √(α² + r²/(4 max(d², r²))), at most 1.
+material::ClosureParams sphere_lobe(material::ClosureParams c, float radius, float d2) {
+    if (radius <= 0.0f || c.is_lambertian()) return c;
+    const float roughness = std::clamp(c.roughness, 0.0f, 1.0f);
+    const float alpha = std::max(roughness * roughness, 1e-4f);
+    const float widened = std::min(
+        1.0f, std::sqrt(alpha * alpha + radius * radius / (4.0f * std::max(d2, radius * radius))));
+    c.roughness = std::sqrt(widened);
+    return c;
+}
+
+}  // namespace
+
 Rgb cpu_contribution(const light::Vpl& vpl, const Vec3& p, const Vec3& n,
-                     const material::ClosureParams& receiver, const Vec3& camera, float d_min) {
+                     const material::ClosureParams& receiver_closure, const Vec3& camera,
+                     float d_min, float vsl_radius) {
+    const bool sphere = vpl.type == light::VplType::Area || vpl.type == light::VplType::Surface;
+    const float vpl_d2 = glm::dot(p - vpl.position, p - vpl.position);
+    const material::ClosureParams receiver =
+        sphere ? sphere_lobe(receiver_closure, vsl_radius, vpl_d2) : receiver_closure;
     const material::Bsdf f_r(receiver);
     const Frame frame(n);
     const Vec3 wo = frame.to_local(glm::normalize(camera - p));
@@ -110,7 +134,7 @@ Rgb cpu_contribution(const light::Vpl& vpl, const Vec3& p, const Vec3& n,
             break;
         case light::VplType::Surface: {
             const Frame vpl_frame(vpl.shading_normal);
-            const material::Bsdf f_j(vpl.closure);
+            const material::Bsdf f_j(sphere_lobe(vpl.closure, vsl_radius, d2));
             value *= f_j.eval(vpl_frame.to_local(vpl.wi), vpl_frame.to_local(w)) *
                      std::max(0.0f, glm::dot(vpl.normal, w));
             break;

@@ -119,12 +119,16 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
     options.shadow_resolution = 32;
     options.batch = 3;      // two batches: accumulation across batches is part of the test
     options.clamp = 0.05f;  // d_min = 0.05 · diagonal ≈ 0.28: active for the nearby pixels
+    // Virtual spherical lights of radius 0.1 · diagonal ≈ 0.57, comparable to the VPLs' heights:
+    // the surface and area VPLs' lobes are widened for every pixel.
+    options.vsl_radius = 0.1f;
     const Image image = renderer.render({vpls}, options);
 
     // Each batch at its own sub-pixel position: the CPU formulas at the same positions.
     const SubpixelSchedule schedule = subpixel_schedule(options);
     ASSERT_NE(schedule.position_of(0), schedule.position_of(3)) << "the batches are jittered";
     const float d_min = options.clamp * std::sqrt(32.0f);  // the floor's diagonal
+    const float vsl_radius = options.vsl_radius * std::sqrt(32.0f);
     const material::ClosureParams receiver = testing::closure_of(glossy);
     int compared = 0;
     int lit = 0;
@@ -139,7 +143,7 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
                     testing::cast_camera_ray(scene, kSize, kSize, x, y, at);
                 if (!hit) continue;
                 expected += testing::cpu_contribution(vpls[i], hit->p, hit->ng, receiver,
-                                                      scene.camera.position(), d_min);
+                                                      scene.camera.position(), d_min, vsl_radius);
             }
             ++compared;
             if (max_component(expected) > 1e-4f) ++lit;

@@ -28,6 +28,7 @@ Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::
     o.shadow_resolution = uint32_t(settings.shadow_res);
     o.batch = uint32_t(settings.batch);
     o.clamp = settings.clamp;
+    o.vsl_radius = settings.vsl_radius;
     o.shadows = settings.shadows;
     o.jitter = settings.jitter;
     o.chains.max_roughness = settings.chain_roughness;
@@ -43,6 +44,7 @@ Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
     reference::GatherOptions o;
     o.width = o.height = settings.res;
     o.clamp = settings.clamp;
+    o.vsl_radius = settings.vsl_radius;
     o.subpixel = {settings.jitter, uint64_t(settings.batch)};
     o.chains.max_roughness = settings.chain_roughness;
     o.chains.max_depth = settings.chain_max_depth;

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/core/image.h"
+#include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 
@@ -22,6 +23,8 @@ struct VplRenderSettings {
     int res = 64;          // square image
     int shadow_res = 128;  // cube face side
     float clamp = 0.05f;   // fraction of the scene diagonal; 0: off
+    // Virtual spherical lights (light/virtual_sphere.h), fraction of the diagonal; 0: off.
+    float vsl_radius = light::kDefaultVslRadius;
     bool shadows = true;
     int batch = 32;
     bool jitter = true;  // a sub-pixel position per batch, the same in both renderers

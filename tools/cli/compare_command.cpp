@@ -36,6 +36,7 @@ int run_compare(const Args& args) {
         compare_images(block_average(image, block), block_average(reference, block));
     std::printf("relMSE %.6g\nRMSE %.6g\nmean_abs %.6g\nmean_ratio %.6f %.6f %.6f\n", e.rel_mse,
                 e.rmse, e.mean_abs, e.mean_ratio.x, e.mean_ratio.y, e.mean_ratio.z);
+    std::printf("rel_err_p999 %.6g\nmax_ratio %.6g\n", e.rel_err_p999, e.max_ratio);
     return 0;
 }
 

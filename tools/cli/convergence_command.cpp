@@ -177,6 +177,7 @@ int run_convergence(const Args& args) {
     settings.width = reference.width();
     settings.height = reference.height();
     settings.clamp = renderer_args.clamp;
+    settings.vsl_radius = renderer_args.vsl();
     render::RenderOptions render_options;
     renderer_args.apply(render_options);
     render_options.chains.max_depth = run.max_depth;

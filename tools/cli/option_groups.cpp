@@ -42,6 +42,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_resolution = uint32_t(shadow_res);
     o.batch = uint32_t(batch);
     o.clamp = clamp;
+    o.vsl_radius = vsl();
     o.shadow_culling = !no_shadow_culling;
     o.shadow_proxy = !no_shadow_proxy;
     o.jitter = !no_jitter;
@@ -57,6 +58,11 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_int("--batch", &args.batch, "VPLs per shadow/shading batch");
     parser.add_float("--clamp", &args.clamp,
                      "clamping distance as a fraction of the scene diagonal (0 = off)");
+    parser.add_float("--vsl-radius", &args.vsl_radius,
+                     "radius of the virtual spherical lights that surface and area VPLs become, "
+                     "as a fraction of the scene diagonal: glossy lobes are integrated over it");
+    parser.add_flag("--no-vsl", &args.no_vsl,
+                    "shade surface and area VPLs as points (glossy lobes evaluated along one ray)");
     parser.add_flag("--no-shadow-culling", &args.no_shadow_culling,
                     "draw every triangle into every shadow face (default: only the clusters a "
                     "face can see)");
@@ -88,6 +94,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
             out_of_range(parser, "--shadow-res", "4..4096");
         if (args.batch < 1 || args.batch > 256) out_of_range(parser, "--batch", "1..256");
         if (!(args.clamp >= 0.0f && args.clamp <= 1.0f)) out_of_range(parser, "--clamp", "[0, 1]");
+        if (!(args.vsl_radius >= 0.0f && args.vsl_radius <= 1.0f))
+            out_of_range(parser, "--vsl-radius", "[0, 1]");
         if (!(args.chain_roughness >= 0.0f && args.chain_roughness <= 1.0f))
             out_of_range(parser, "--chain-roughness", "[0, 1]");
         if (args.indirect_shadow_res != 0 &&

@@ -15,13 +15,16 @@
 
 namespace mvpl::cli {
 
-// --shadow-res, --batch, --clamp, --no-jitter, --no-shadow-culling, --no-shadow-proxy,
+// --shadow-res, --batch, --clamp, --vsl-radius, --no-vsl, --no-jitter, --no-shadow-culling,
+// --no-shadow-proxy,
 // --no-hemicube, --no-vpl-culling, --interleave, --indirect-shadow-res: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
     int batch = int(render::RenderOptions{}.batch);
     float clamp = render::RenderOptions{}.clamp;
+    float vsl_radius = render::RenderOptions{}.vsl_radius;
+    bool no_vsl = false;
     bool no_jitter = !render::RenderOptions{}.jitter;
     bool no_shadow_culling = false;
     bool no_shadow_proxy = false;
@@ -37,6 +40,8 @@ struct RendererArgs {
     int interleave = kDefaultInterleave;
     int indirect_shadow_res = 0;
     static constexpr int kDefaultInterleave = 2;
+    // The radius of the virtual spherical lights (scene diagonals), 0 with --no-vsl.
+    float vsl() const { return no_vsl ? 0.0f : vsl_radius; }
 
     // Copies them into `o` (the chains' max depth is the command's to set).
     void apply(render::RenderOptions& o) const;

@@ -101,6 +101,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     s.width = a.width;
     s.height = a.height;
     s.clamp = a.renderer.clamp;
+    s.vsl_radius = a.renderer.vsl();
     job.settings = s;
     const int max_depth = s.tracer.max_depth;
     render::RenderOptions& ro = job.render;
@@ -118,6 +119,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     g.width = a.width;
     g.height = a.height;
     g.clamp = a.renderer.clamp;
+    g.vsl_radius = a.renderer.vsl();
     g.max_depth = max_depth;
     g.quiet = a.quiet;
     g.subpixel = render::subpixel_schedule(ro);  // the GPU's sub-pixel positions

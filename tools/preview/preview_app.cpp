@@ -145,6 +145,7 @@ std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler)
     s.height = int(m_window_height ? m_window_height : uint32_t(m_options.height));
     s.clamp = clamp();
     s.specular_chains = chain_options();  // the target follows the chains the image traces
+    s.vsl_radius = m_options.levers.vsl_radius;
     return std::make_unique<VplHistory>(
         sampler::make_vpl_stream(sampler, m_session.scene(), m_session.accel(), m_session.lights(),
                                  m_controller.camera(), s),
