@@ -56,6 +56,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.indirect_shadow_resolution = uint32_t(c.indirect_shadow_resolution);
     ro.chains.max_roughness = c.chain_roughness;
     ro.chains.max_depth = c.max_depth;
+    ro.vsl_radius = c.vsl_radius;
     return ro;
 }
 
@@ -204,6 +205,7 @@ int run_bench(const Args& args) {
     config.indirect_shadow_resolution = renderer_args.indirect_shadow_res;
     config.chain_roughness = renderer_args.no_chains ? -1.0f : renderer_args.chain_roughness;
     config.max_depth = mc.tracer.max_depth;
+    config.vsl_radius = renderer_args.vsl();
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     std::ofstream json_out;

@@ -45,6 +45,13 @@ std::string chain_bound(float roughness) {
     return buf;
 }
 
+std::string vsl_radius(float radius) {
+    if (!(radius > 0.0f)) return "0 (point VPLs)";
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3g", double(radius));
+    return buf;
+}
+
 std::string render_json(const RenderResult& r, const std::string& indent) {
     const std::string i = indent + "  ";
     std::string s = "{\n";
@@ -95,7 +102,8 @@ std::string bench_levers(const BenchConfig& c) {
            (c.indirect_shadow_resolution > 0
                 ? std::to_string(std::min(c.indirect_shadow_resolution, c.shadow_resolution)) + "²"
                 : "as emitters'") +
-           ", chains " + (c.chain_roughness >= 0.0f ? chain_bound(c.chain_roughness) : "off");
+           ", chains " + (c.chain_roughness >= 0.0f ? chain_bound(c.chain_roughness) : "off") +
+           ", VSL radius " + vsl_radius(c.vsl_radius);
 }
 
 double BenchReport::paths_per_s() const {

@@ -24,6 +24,7 @@ struct BenchConfig {
     // light paths' --max-depth, which bounds them.
     float chain_roughness = -1.0f;
     int max_depth = -1;
+    float vsl_radius = 0.0f;  // render::RenderOptions::vsl_radius (0: point VPLs)
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".
