@@ -39,6 +39,8 @@ std::pair<double, double> mean_and_variance(const std::vector<double>& v) {
 struct ChainMean {
     Rgb mean{0.0f};
     Rgb sigma{0.0f};
+    int ends = 0;      // chains that reached the wall (with `end` given)
+    int straight = 0;  // of which within 2.6 mm of `end`
 };
 ChainMean chain_mean(const scene::Scene& s, const trace::Accel& accel, int size, int x, int y,
                      int n, const std::optional<Vec3>& end) {
@@ -48,14 +50,18 @@ ChainMean chain_mean(const scene::Scene& s, const trace::Accel& accel, int size,
         scene::generate_camera_ray(s.camera, size, size, Vec2(float(x) + 0.5f, float(y) + 0.5f));
     Rng rng{uint64_t(x), uint64_t(y)};
     double sum[3] = {0, 0, 0}, sum2[3] = {0, 0, 0};
+    ChainMean out;
     for (int i = 0; i < n; ++i) {
         const light::ChainedReceiver c = light::make_chained_receiver(
             s, accel, trace::Ray{cr.origin, cr.direction}, rng, options);
         EXPECT_TRUE(c.continued);
         if (!c.receiver) continue;  // reflected off the glass, out of the open box
         if (end) {
-            // Straight through a thin sheet: α = 10⁻⁴ rad over a distance of 1.3.
-            EXPECT_LT(glm::length(c.receiver->sp.p - *end), 1e-3f);
+            // Straight through a thin sheet: a facet tilted by θ_h < 10⁻³ rad (a share
+            // 1 − α² / (α² + 10⁻⁶) = 99 % of them at α = 10⁻⁴; GGX's tails are heavy) moves the
+            // end by < 2θ_h · 1.3 m.
+            ++out.ends;
+            out.straight += glm::length(c.receiver->sp.p - *end) < 2.6e-3f;
             EXPECT_EQ(c.bounces, 1u);
         }
         for (int k = 0; k < 3; ++k) {
@@ -63,7 +69,6 @@ ChainMean chain_mean(const scene::Scene& s, const trace::Accel& accel, int size,
             sum2[k] += double(c.throughput[k]) * c.throughput[k];
         }
     }
-    ChainMean out;
     for (int k = 0; k < 3; ++k) {
         const double mean = sum[k] / n;
         out.mean[k] = float(mean);
@@ -110,6 +115,10 @@ TEST(GlassSlab, ChainsThroughSmoothGlassCarryTheFresnelTransmittance) {
                     end = direct.receiver->sp.p;
                 }
                 const ChainMean m = chain_mean(s, accel, kSize, x, y, kN, end);
+                // 99 % expected; 95 % is > 10σ of a binomial of 4000 below it.
+                if (end) {
+                    EXPECT_GT(m.straight, int(0.95 * m.ends)) << x << "," << y;
+                }
                 const float f = material::fresnel_schlick(0.04f, 1.0f, cos_theta);
                 for (int k = 0; k < 3; ++k) {
                     const float expected = thickness == 0.0f
@@ -118,6 +127,14 @@ TEST(GlassSlab, ChainsThroughSmoothGlassCarryTheFresnelTransmittance) {
                     EXPECT_NEAR(m.mean[k], expected, 4.0f * m.sigma[k] + 1e-4f)
                         << "thickness " << thickness << " pixel " << x << "," << y << " channel "
                         << k;
+                }
+                if (checked == 0) {
+                    std::printf(
+                        "thickness %.1f, pixel %d,%d: chain mean %.4f (σ %.4f), "
+                        "closed form %.4f (green)\n",
+                        double(thickness), x, y, double(m.mean[1]), double(m.sigma[1]),
+                        double(thickness == 0.0f ? tint[1] * (1.0f - f)
+                                                 : sqr(tint[1] * (1.0f - f)) / (1.0f - f * f)));
                 }
                 ++checked;
             }
