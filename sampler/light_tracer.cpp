@@ -86,10 +86,16 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
         const Vec3 wi = sp.frame.to_local(wi_world);
         const float cos_geometric = glm::dot(wi_world, sp.ng);
         // The back of a one-sided material (ng not flipped) is black: the path ends, as in the
-        // path tracer; so does light that the shading normal puts below the surface.
-        if (!(wi.z > 0.0f) || !(cos_geometric > 0.0f)) break;
+        // path tracer; so does light that the shading normal puts on the other side than the
+        // geometry. Transmissive closures are seen from both sides (material/bsdf.h).
+        const bool front = wi.z > 0.0f;
+        if (!(front || sp.bsdf.transmits()) || !trace::same_side(wi_world, sp.ng, wi.z)) break;
         beta *= wi.z / cos_geometric;  // shading cosine at arrival (header comment)
 
+        // A VPL reflects towards the side it was lit from, as the GPU shades it: its closure
+        // keeps no transmission (the light a surface transmits is followed by the path instead),
+        // and none is left on the back of a transmissive surface, where the GPU could not tell
+        // its sides apart. (On smooth glass it is a near-mirror's VPL: the GPU's glossy term.)
         light::Vpl vpl;
         vpl.type = light::VplType::Surface;
         vpl.position = sp.p;
@@ -98,18 +104,21 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
         vpl.wi = wi_world;
         vpl.power = beta;
         vpl.closure = sp.bsdf.params();
+        vpl.closure.transmission = Rgb(0.0f);
         vpl.path_length = uint32_t(length);
-        if (usable(vpl.power)) out.push_back(vpl);
+        if (front && usable(vpl.power)) out.push_back(vpl);
         if (length == max_length) break;
 
         const Vec2 u_bsdf = next_2d(u);
         const float u_lobe = u.next();
         const float u_rr = u.next();
-        const std::optional<material::BsdfSample> bs = sp.bsdf.sample(wi, u_bsdf, u_lobe);
-        if (!bs || !(bs->wi.z > 0.0f)) break;
+        const std::optional<material::BsdfSample> bs =
+            sp.bsdf.sample(wi, u_bsdf, u_lobe, material::Transport::Importance);
+        if (!bs) break;
         const Vec3 wo_world = sp.frame.to_world(bs->wi);
+        // On the geometric side its shading side says, or it would leak through the surface.
+        if (!trace::same_side(wo_world, sp.ng, bs->wi.z)) break;
         const float cos_out = glm::dot(wo_world, sp.ng);
-        if (!(cos_out > 0.0f)) break;  // below the geometric surface: it would leak through
         beta *= bs->weight * (cos_out / bs->wi.z);  // f·|n_g·ω_out|/pdf
         if (!is_finite(beta)) break;
 

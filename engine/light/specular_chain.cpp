@@ -9,6 +9,9 @@ namespace mvpl::light {
 
 bool continues_chain(const material::Bsdf& bsdf, const Vec3& wo, const ChainOptions& options) {
     if (!(options.max_roughness >= 0.0f)) return false;
+    // VPL shadow maps cannot light through a surface: one that mostly transmits is continued
+    // whatever its roughness.
+    if (bsdf.transmission_share(wo) >= 0.5f) return true;
     const material::ClosureParams& closure = bsdf.params();
     if (material::closure_type(closure) == material::ClosureType::Lambertian) return false;
     return closure.roughness <= options.max_roughness && bsdf.specular_probability(wo) >= 0.5f;
@@ -19,7 +22,10 @@ bool scene_may_chain(const scene::Scene& scene, const ChainOptions& options) {
     const std::vector<bool> drawn = scene.drawn_materials();
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const scene::Material& m = scene.materials[i];
-        if (!drawn[i] || (m.metallic <= 0.0f && m.specular <= 0.0f)) continue;
+        if (!drawn[i]) continue;
+        if (m.metallic < 1.0f && (m.transmission > 0.0f || m.transmission_texture.valid()))
+            return true;
+        if (m.metallic <= 0.0f && m.specular <= 0.0f) continue;
         if (m.roughness <= options.max_roughness || m.metallic_roughness_texture.valid())
             return true;
     }
@@ -38,12 +44,15 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
         // vertex's as seen directly, the later ones' through the chain's throughput.
         Rgb seen(0.0f);
         const std::optional<Receiver> vertex =
-            make_receiver(scene, accel, ray, bounce == 0 ? emitted : &seen, bounce == 0);
+            make_receiver(scene, accel, ray, bounce == 0 ? emitted : &seen, bounce == 0, true);
         if (bounce > 0) out.chain_emitted += out.throughput * seen;
         if (!vertex) return out;  // left the scene, or seen from below its shading surface
         const trace::ShadingPoint& sp = vertex->sp;
         const Vec3& wo = vertex->wo;
         if (!continues_chain(sp.bsdf, wo, options)) {
+            // The inside of a solid or the back of a thin transmissive surface that is not
+            // continued: VPLs light only the shading side.
+            if (!(wo.z > 0.0f)) return out;
             // A VPL of path_length ℓ lights this vertex through depth + 1 + ℓ segments.
             if (!unlimited && options.max_depth - depth - 1 < 0) return out;
             out.receiver = vertex;
@@ -59,8 +68,9 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
         const auto bs = sp.bsdf.sample(wo, u, rng.next_float());
         if (!bs) return out;
         const Vec3 wi_world = sp.frame.to_world(bs->wi);
-        // A direction below the geometric surface would leak through it (as the path tracer).
-        if (glm::dot(wi_world, sp.ng) <= 0.0f) return out;
+        // A direction on the other geometric side than its shading side would leak through the
+        // surface (as the path tracer).
+        if (!trace::same_side(wi_world, sp.ng, bs->wi.z)) return out;
         out.throughput *= bs->weight;
         if (is_black(out.throughput)) return out;
         ray = trace::spawn_ray(sp.p, sp.ng, wi_world);

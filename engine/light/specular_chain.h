@@ -30,14 +30,17 @@
 namespace mvpl::light {
 
 // Whether a surface with this BSDF, seen from wo (local), is continued rather than lit by VPLs:
-// smooth enough, and its specular lobe carries at least half of what it reflects towards wo
+// one whose transmission carries at least half of what it scatters (KHR_materials_transmission:
+// VPLs cannot light through a surface), whatever its roughness; otherwise smooth enough, and its
+// specular lobe carries at least half of what it reflects towards wo
 // (Bsdf::specular_probability). A glossy coat over a diffuse base (a plastic) mostly is not:
 // sampling its whole BSDF would light the base through one chain sample per sub-pixel position
 // instead of through every VPL (measured on assets/glossy: speckled plastics at 256 VPLs), so it
 // keeps VPL light but near grazing, where its Fresnel reflection dominates.
 bool continues_chain(const material::Bsdf& bsdf, const Vec3& wo, const ChainOptions& options);
 // Whether some drawn material of the scene may be continued: a specular lobe (metallic or
-// specular factor above 0) and a roughness factor at most the bound, or a roughness texture.
+// specular factor above 0) and a roughness factor at most the bound, or a roughness texture; or
+// a transmission factor or texture (not fully metallic).
 bool scene_may_chain(const scene::Scene& scene, const ChainOptions& options);
 
 struct ChainedReceiver {

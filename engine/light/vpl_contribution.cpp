@@ -56,7 +56,8 @@ PreparedVpl prepare_vpl(const Vpl& vpl) {
 }
 
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
-                                      const trace::Ray& ray, Rgb* emitted, bool from_camera) {
+                                      const trace::Ray& ray, Rgb* emitted, bool from_camera,
+                                      bool transmissive_back) {
     const std::optional<trace::Hit> hit =
         from_camera ? accel.intersect_camera(ray) : accel.intersect(ray);
     if (!hit) {
@@ -76,7 +77,8 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
     }
     Receiver r{trace::make_shading_point(accel.materials(), si), Vec3(0.0f, 0.0f, 1.0f)};
     r.wo = r.sp.frame.to_local(-glm::normalize(ray.direction));
-    if (!(r.wo.z > 0.0f)) return std::nullopt;  // seen from below the shading surface: black
+    // Seen from below the shading surface: black, but where a chain may pass through.
+    if (!(r.wo.z > 0.0f) && !(transmissive_back && r.sp.bsdf.transmits())) return std::nullopt;
     return r;
 }
 

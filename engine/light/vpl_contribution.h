@@ -33,10 +33,11 @@ struct Receiver {
 // `emitted` (optional) receives the emitted radiance seen there (front face only), or the
 // environment's where the ray leaves the scene. A camera ray (`from_camera`) passes through the
 // back faces of one-sided materials (Accel::intersect_camera); a ray continued from a surface
-// (light/specular_chain.h) does not.
+// (light/specular_chain.h) does not. `transmissive_back`: a transmissive surface seen from below
+// is returned too (wo.z < 0), for the specular chains to continue through it.
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
                                       const trace::Ray& ray, Rgb* emitted = nullptr,
-                                      bool from_camera = true);
+                                      bool from_camera = true, bool transmissive_back = false);
 
 // One VPL's contribution to one receiver (vpl.h), Embree visibility included; d_min2 = d_min².
 // vsl_r2 = r², the squared radius of the virtual spherical lights that area and surface VPLs

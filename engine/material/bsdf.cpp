@@ -4,6 +4,7 @@
 #include "engine/material/conductor.h"
 #include "engine/material/lambertian.h"
 #include "engine/material/microfacet.h"
+#include "engine/material/transmission.h"
 
 namespace mvpl::material {
 
@@ -16,84 +17,206 @@ constexpr float kMaxLobeProbability = 0.9f;
 
 }  // namespace
 
+// wo turned above the surface (`flip` = −1 mirrors it and every wi through the plane), and the
+// indices of refraction on its side and the other.
+struct Bsdf::Oriented {
+    Vec3 wo;
+    float flip = 1.0f;
+    Interface side;
+};
+
 Bsdf::Bsdf(const ClosureParams& params) : m_params(params) {
     const ClosureParams p = clamp_to_valid_ranges(params);
     m_base_color = p.base_color;
     m_metallic = p.metallic;
     m_alpha = roughness_to_alpha(p.roughness);
     m_layer = dielectric_layer(p.specular_color, p.specular, p.ior);
-    m_lambertian = p.is_lambertian();
-    // The conductor always reflects (its F90 is 1); the dielectric layer only when F90 > 0.
-    m_has_specular = !m_lambertian && (m_metallic > 0.0f || m_layer.f90 > 0.0f);
+    m_transmits = p.transmits();
+    m_transmission = m_transmits ? (1.0f - m_metallic) * p.transmission : Rgb(0.0f);
+    // ior 0 (F0 = 1, allowed by KHR_materials_ior) has no refracted direction: thin.
+    m_thin = p.thin_walled || !(p.ior > 0.0f);
+    m_ior = p.ior;
+    m_lambertian = p.is_lambertian() && !m_transmits;
+    // The conductor always reflects (its F90 is 1); the dielectric layer only when F90 > 0; the
+    // transmission lobe whenever it is there.
+    m_has_specular = !m_lambertian && (m_metallic > 0.0f || m_layer.f90 > 0.0f || m_transmits);
     // The base is visible unless the material is all metal, black, or fully covered by a layer
     // with F0 = F90 = 1.
     m_has_diffuse = m_metallic < 1.0f && max_component(m_base_color) > 0.0f &&
                     (m_lambertian || m_layer.f0_max < 1.0f);
 }
 
-Rgb Bsdf::eval(const Vec3& wo, const Vec3& wi) const {
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return Rgb(0.0f);
-    if (m_lambertian) return lambertian_eval(m_base_color, wo, wi);
+std::optional<Bsdf::Oriented> Bsdf::orient(const Vec3& wo) const {
+    Oriented o;
+    if (wo.z > 0.0f) {
+        o.wo = wo;
+        if (m_transmits && !m_thin) o.side = Interface{1.0f, m_ior};
+        return o;
+    }
+    if (!m_transmits || !(wo.z < 0.0f)) return std::nullopt;
+    o.wo = mirror_z(wo);
+    o.flip = -1.0f;
+    if (!m_thin) o.side = Interface{m_ior, 1.0f};  // inside the solid
+    return o;
+}
 
-    // f = (1 − m)·(w_d·base/π + F_d·DV) + m·F_c·DV, the microfacet term D·V shared by both layers.
-    Rgb f(0.0f);
-    if (m_has_diffuse) {
-        f += (1.0f - m_metallic) * dielectric_diffuse_weight(m_layer, wo.z, wi.z) *
-             lambertian_eval(m_base_color, wo, wi);
-    }
-    if (m_has_specular) {
-        if (const std::optional<MicrofacetReflection> r = ggx_reflection(wo, wi, m_alpha)) {
-            const Rgb fresnel = (1.0f - m_metallic) * dielectric_fresnel(m_layer, r->cos_oh) +
-                                m_metallic * conductor_fresnel(m_base_color, r->cos_oh);
-            f += fresnel * r->dv;
+float Bsdf::macro_fresnel(float cos_theta, const Oriented& o) const {
+    // dielectric_max_fresnel outside (dielectric_diffuse.h's w_d); inside a solid, total internal
+    // reflection keeps the base's light in: the same Schlick of max(F0) with the interface's
+    // cosine, so that the diffuse base never adds to what the reflection already returns.
+    if (o.side.eta_o <= o.side.eta_t) return dielectric_max_fresnel(m_layer, cos_theta);
+    return max_component(interface_fresnel(m_layer, cos_theta, o.side));
+}
+
+Rgb Bsdf::reflection_fresnel(float cos_oh, const Oriented& o) const {
+    return (1.0f - m_metallic) * interface_fresnel(m_layer, cos_oh, o.side) +
+           m_metallic * conductor_fresnel(m_base_color, cos_oh);
+}
+
+float Bsdf::reflect_probability(float cos_oh, const Oriented& o) const {
+    if (!m_transmits) return 1.0f;
+    // Each in proportion to its weight at this facet: reflection F, transmission T·(1 − F).
+    const Rgb f = interface_fresnel(m_layer, cos_oh, o.side);
+    const float e_reflect = luminance(reflection_fresnel(cos_oh, o));
+    const float e_transmit = luminance(m_transmission * (Rgb(1.0f) - f));
+    const float total = e_reflect + e_transmit;
+    return total > 0.0f ? e_reflect / total : 1.0f;
+}
+
+Rgb Bsdf::eval(const Vec3& wo, const Vec3& wi, Transport mode) const {
+    const std::optional<Oriented> o = orient(wo);
+    if (!o) return Rgb(0.0f);
+    return eval_oriented(*o, o->flip > 0.0f ? wi : mirror_z(wi), mode);
+}
+
+Rgb Bsdf::eval_oriented(const Oriented& o, const Vec3& wi, Transport mode) const {
+    const Vec3& wo = o.wo;
+    if (wi.z > 0.0f) {
+        if (m_lambertian) return lambertian_eval(m_base_color, wo, wi);
+        // f = (1 − m)·(w_d·base/π + F_d·DV) + m·F_c·DV, the microfacet term D·V shared by both
+        // layers.
+        Rgb f(0.0f);
+        if (m_has_diffuse) {
+            const float w_d = (1.0f - macro_fresnel(wo.z, o)) * (1.0f - macro_fresnel(wi.z, o));
+            f += (1.0f - m_metallic) * w_d * lambertian_eval(m_base_color, wo, wi);
         }
+        if (m_has_specular) {
+            if (const std::optional<MicrofacetReflection> r = ggx_reflection(wo, wi, m_alpha))
+                f += reflection_fresnel(r->cos_oh, o) * r->dv;
+        }
+        return f;
     }
+    if (!m_transmits || !(wi.z < 0.0f)) return Rgb(0.0f);
+    const std::optional<MicrofacetTransmission> t = ggx_transmission(wo, wi, m_alpha, o.side);
+    if (!t) return Rgb(0.0f);
+    const Rgb fresnel = interface_fresnel(m_layer, t->cos_oh, o.side, t->cos_ih);
+    Rgb f = m_transmission * (Rgb(1.0f) - fresnel) * t->dv;
+    // Walter et al.'s η_o² is radiance's; the adjoint has η_i² (Veach 1997, eq. 5.19).
+    if (mode == Transport::Importance && !o.side.thin()) f *= sqr(o.side.eta_t / o.side.eta_o);
     return f;
 }
 
 float Bsdf::specular_probability(const Vec3& wo) const {
+    const std::optional<Oriented> o = orient(wo);
+    return o ? specular_probability(*o) : 0.0f;
+}
+
+float Bsdf::specular_probability(const Oriented& o) const {
     if (!m_has_specular) return 0.0f;
     if (!m_has_diffuse) return 1.0f;
-    // Expected share of each lobe in the reflected energy, estimated with the Fresnel of the
-    // macro-surface at wo: the dielectric layer reflects ~F_d(cos θo), the base returns what the
-    // layer transmits times its albedo, the conductor reflects ~F_c(cos θo).
-    const float c = std::clamp(wo.z, 0.0f, 1.0f);
-    const float e_specular = (1.0f - m_metallic) * luminance(dielectric_fresnel(m_layer, c)) +
-                             m_metallic * luminance(conductor_fresnel(m_base_color, c));
+    // Expected share of each lobe in the scattered energy, estimated with the Fresnel of the
+    // macro-surface at wo: the dielectric layer reflects ~F_d(cos θo) and transmits the rest of
+    // the transmission share, the base returns what the layer transmits times its albedo, the
+    // conductor reflects ~F_c(cos θo).
+    const float c = std::clamp(o.wo.z, 0.0f, 1.0f);
+    const Rgb f = interface_fresnel(m_layer, c, o.side);
+    const float e_specular = (1.0f - m_metallic) * luminance(f) +
+                             m_metallic * luminance(conductor_fresnel(m_base_color, c)) +
+                             luminance(m_transmission) * (1.0f - max_component(f));
     const float e_diffuse =
-        (1.0f - m_metallic) * (1.0f - dielectric_max_fresnel(m_layer, c)) * luminance(m_base_color);
+        (1.0f - m_metallic) * (1.0f - macro_fresnel(c, o)) * luminance(m_base_color);
     const float total = e_specular + e_diffuse;
     const float p = total > 0.0f ? e_specular / total : 0.5f;
     return std::clamp(p, kMinLobeProbability, kMaxLobeProbability);
 }
 
-float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
-    if (wo.z <= 0.0f || wi.z <= 0.0f) return 0.0f;
-    if (m_lambertian) return lambertian_pdf(wo, wi);
-    // The full mixture density, whichever lobe a sample came from (needed for MIS).
-    const float p = specular_probability(wo);
-    float density = 0.0f;
-    if (p > 0.0f) density += p * ggx_reflection_pdf(wo, wi, m_alpha);
-    if (p < 1.0f) density += (1.0f - p) * lambertian_pdf(wo, wi);
-    return density;
+float Bsdf::transmission_share(const Vec3& wo) const {
+    if (!m_transmits) return 0.0f;
+    const std::optional<Oriented> o = orient(wo);
+    if (!o) return 0.0f;
+    const float c = std::clamp(o->wo.z, 0.0f, 1.0f);
+    const Rgb f = interface_fresnel(m_layer, c, o->side);
+    const float e_transmit = luminance(m_transmission) * (1.0f - max_component(f));
+    const float e_reflect = (1.0f - m_metallic) * luminance(f) +
+                            m_metallic * luminance(conductor_fresnel(m_base_color, c));
+    const float e_diffuse =
+        (1.0f - m_metallic) * (1.0f - macro_fresnel(c, *o)) * luminance(m_base_color);
+    const float total = e_transmit + e_reflect + e_diffuse;
+    return total > 0.0f ? e_transmit / total : 0.0f;
 }
 
-std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, const Vec2& u, float u_lobe) const {
-    if (wo.z <= 0.0f) return std::nullopt;
+float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
+    const std::optional<Oriented> o = orient(wo);
+    if (!o) return 0.0f;
+    return pdf_oriented(*o, o->flip > 0.0f ? wi : mirror_z(wi));
+}
+
+float Bsdf::pdf_oriented(const Oriented& o, const Vec3& wi) const {
+    const Vec3& wo = o.wo;
+    if (m_lambertian) return wi.z > 0.0f ? lambertian_pdf(wo, wi) : 0.0f;
+    // The full mixture density, whichever lobe a sample came from (needed for MIS).
+    const float p = specular_probability(o);
+    if (wi.z > 0.0f) {
+        float density = 0.0f;
+        if (p > 0.0f) {
+            if (const std::optional<Vec3> h = reflection_half_vector(wo, wi)) {
+                density += p * ggx_reflection_pdf(wo, wi, m_alpha) *
+                           reflect_probability(glm::dot(wo, *h), o);
+            }
+        }
+        if (p < 1.0f) density += (1.0f - p) * lambertian_pdf(wo, wi);
+        return density;
+    }
+    if (!m_transmits || !(wi.z < 0.0f) || !(p > 0.0f)) return 0.0f;
+    const std::optional<Vec3> h = transmission_half_vector(wo, wi, o.side);
+    if (!h) return 0.0f;
+    return p * ggx_transmission_pdf(wo, wi, m_alpha, o.side) *
+           (1.0f - reflect_probability(glm::dot(wo, *h), o));
+}
+
+std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, const Vec2& u, float u_lobe,
+                                       Transport mode) const {
+    const std::optional<Oriented> o = orient(wo);
+    if (!o) return std::nullopt;
+    const float p = m_lambertian ? 0.0f : specular_probability(*o);
     Vec3 wi;
-    if (m_lambertian || u_lobe >= specular_probability(wo)) {
+    bool transmitted = false;
+    if (u_lobe >= p) {
         wi = sample_cosine_hemisphere(u);
     } else {
-        wi = reflect_about(wo, ggx_sample_visible_normal(wo, m_alpha, u));
+        const Vec3 h = ggx_sample_visible_normal(o->wo, m_alpha, u);
+        // u_lobe / p is uniform in [0, 1) given that this lobe was picked: it picks reflection or
+        // transmission at the facet.
+        if (u_lobe / p < reflect_probability(glm::dot(o->wo, h), *o)) {
+            wi = reflect_about(o->wo, h);
+        } else if (o->side.thin()) {
+            wi = mirror_z(reflect_about(o->wo, h));
+            transmitted = true;
+        } else {
+            const std::optional<Vec3> r = refract_about(o->wo, h, o->side);
+            if (!r) return std::nullopt;
+            wi = *r;
+            transmitted = true;
+        }
     }
     // Reflections of visible normals can leave the hemisphere (the single-scattering energy
     // loss), and the cosine warp can return the horizon itself.
-    if (wi.z <= 0.0f) return std::nullopt;
-    const float density = pdf(wo, wi);
+    if (transmitted ? !(wi.z < 0.0f) : !(wi.z > 0.0f)) return std::nullopt;
+    const float density = pdf_oriented(*o, wi);
     if (!(density > 0.0f)) return std::nullopt;
-    const Rgb weight = eval(wo, wi) * (wi.z / density);
+    const Rgb weight = eval_oriented(*o, wi, mode) * (std::abs(wi.z) / density);
     if (!is_finite(weight)) return std::nullopt;
-    return BsdfSample{wi, weight, density};
+    return BsdfSample{o->flip > 0.0f ? wi : mirror_z(wi), weight, density};
 }
 
 }  // namespace mvpl::material

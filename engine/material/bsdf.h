@@ -1,12 +1,26 @@
 #pragma once
-// The glTF metallic-roughness BRDF of a closure, in the local shading frame (z = shading normal).
+// The glTF metallic-roughness BSDF of a closure, in the local shading frame (z = shading normal).
 // Directions point away from the surface. eval returns f (without the cosine); sample returns
 // the direction, f·|cos θi|/pdf as weight, and the pdf in solid angle.
 //
-// f = (1 − metallic) · dielectric_brdf + metallic · metal_brdf (glTF 2.0 Appendix B), with the
-// lobes of dielectric_diffuse.h and conductor.h. Reflection only: wo.z ≤ 0 or wi.z ≤ 0 gives
-// eval 0, pdf 0 and no sample. Parameters are clamped to their glTF ranges on construction
-// (clamp_to_valid_ranges in closure.h); GGX alpha = max(roughness², kMinAlpha) (microfacet.h).
+// f = (1 − metallic) · dielectric_bsdf + metallic · metal_brdf (glTF 2.0 Appendix B), with the
+// lobes of dielectric_diffuse.h and conductor.h, and KHR_materials_transmission's specular BTDF
+// (transmission.h) in the dielectric: ClosureParams::transmission = t · base colour replaces the
+// share t of the diffuse base (whose colour the closure already holds scaled by 1 − t).
+//
+// Sides. An opaque closure reflects only: wo.z ≤ 0 or wi.z ≤ 0 gives eval 0, pdf 0 and no
+// sample. A transmissive one scatters into both hemispheres and is seen from both: a thin-walled
+// surface is the same from below (both directions mirrored through the plane); a solid's frame
+// faces out of the solid (make_shading_point does not flip it), so wo.z < 0 is inside, where the
+// interface refracts with 1/ior and may reflect totally.
+//
+// Smooth transmission is the narrowest GGX lobe the reflection already uses (α ≥ kMinAlpha =
+// 10⁻⁴, microfacet.h), not a delta: eval/pdf/sample stay one consistent code path (MIS and the
+// chains' weights need no special case), and the 10⁻⁴ rad lobe is three orders of magnitude wider
+// than a float half vector's rounding, so eval reproduces the density sample drew from.
+//
+// Parameters are clamped to their glTF ranges on construction (clamp_to_valid_ranges in
+// closure.h); GGX alpha = max(roughness², kMinAlpha) (microfacet.h).
 #include <optional>
 
 #include "engine/core/color.h"
@@ -22,31 +36,59 @@ struct BsdfSample {
     float pdf = 0.0f;
 };
 
+// What a sampled or evaluated pair of directions transports (Veach 1997, §5.2): camera paths
+// carry radiance, light paths importance; refraction scales the two differently by (η_i/η_o)².
+enum class Transport { Radiance, Importance };
+
 class Bsdf {
 public:
     explicit Bsdf(const ClosureParams& params);
 
-    Rgb eval(const Vec3& wo, const Vec3& wi) const;
+    Rgb eval(const Vec3& wo, const Vec3& wi, Transport mode = Transport::Radiance) const;
     float pdf(const Vec3& wo, const Vec3& wi) const;
-    // u_lobe picks the lobe; u samples the direction within it.
-    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe) const;
+    // u_lobe picks the lobe (and reflection or transmission at the sampled facet); u samples the
+    // direction within it.
+    std::optional<BsdfSample> sample(const Vec3& wo, const Vec2& u, float u_lobe,
+                                     Transport mode = Transport::Radiance) const;
 
     const ClosureParams& params() const { return m_params; }
 
-    // Probability with which `sample` picks the specular lobe for this wo (the rest goes to the
-    // cosine-sampled diffuse lobe); pdf() is the mixture p·pdf_spec + (1 − p)·pdf_diffuse.
+    // Probability with which `sample` picks the microfacet lobe (reflection or transmission) for
+    // this wo (the rest goes to the cosine-sampled diffuse lobe); pdf() is the mixture
+    // p·pdf_microfacet + (1 − p)·pdf_diffuse.
     float specular_probability(const Vec3& wo) const;
+    // The expected share of the transmission lobe in what the surface scatters from wo, from the
+    // macro-surface's Fresnel (0 for opaque closures).
+    float transmission_share(const Vec3& wo) const;
+    // The surface transmits (ClosureParams::transmits): seen and scattered from both sides.
+    bool transmits() const { return m_transmits; }
+    bool thin_walled() const { return m_thin; }
 
 private:
+    struct Oriented;  // wo turned above the surface, with the interface's indices
+    std::optional<Oriented> orient(const Vec3& wo) const;
+    float specular_probability(const Oriented& o) const;
+    // Probability of reflecting (rather than transmitting) at facet cosine cos_oh.
+    float reflect_probability(float cos_oh, const Oriented& o) const;
+    Rgb reflection_fresnel(float cos_oh, const Oriented& o) const;
+    // max_value(F) of the macro-surface at cos θ, what weights the diffuse base.
+    float macro_fresnel(float cos_theta, const Oriented& o) const;
+    Rgb eval_oriented(const Oriented& o, const Vec3& wi, Transport mode) const;
+    float pdf_oriented(const Oriented& o, const Vec3& wi) const;
+
     ClosureParams m_params;  // as given
     // Derived from the clamped parameters in the constructor.
     Rgb m_base_color{0.0f};
+    Rgb m_transmission{0.0f};  // (1 − metallic) · t · base colour
     float m_metallic = 0.0f;
     float m_alpha = 1.0f;
+    float m_ior = 1.5f;
     DielectricLayer m_layer;
     bool m_lambertian = true;
     bool m_has_specular = false;  // some lobe with a microfacet term is non-zero
     bool m_has_diffuse = true;    // the Lambertian base is non-zero somewhere
+    bool m_transmits = false;
+    bool m_thin = true;
 };
 
 }  // namespace mvpl::material

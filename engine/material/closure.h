@@ -15,8 +15,19 @@ namespace mvpl::material {
 struct ClosureParams {
     MVPL_CLOSURE_PARAMS(MVPL_CLOSURE_MEMBER)
 
-    // Metallic 0 and no specular layer: a pure Lambertian, shaded by the cheap path.
+    // KHR_materials_transmission, on the CPU only (not in the X-macro: the GPU shades the
+    // reflection of a transmissive surface, whose transmission the specular chains follow on the
+    // CPU): the specular BTDF's tint times its weight, t · base colour (base_color above already
+    // holds the diffuse share (1 − t) · base colour), before the (1 − metallic) of the mix.
+    Rgb transmission{0.0f};
+    // Without KHR_materials_volume (thickness 0) the surface is thin: the transmitted ray keeps
+    // its direction. Otherwise it bounds a solid and refracts with `ior` inside.
+    bool thin_walled = true;
+
+    // Metallic 0 and no specular layer: a pure Lambertian, shaded by the cheap path. (Its
+    // reflection: a transmission lobe is Bsdf's business, not the GPU closure type's.)
     bool is_lambertian() const { return metallic <= 0.0f && specular <= 0.0f; }
+    bool transmits() const { return max_component(transmission) > 0.0f && metallic < 1.0f; }
 };
 
 // The parameters limited to the ranges glTF allows (NaN becomes the lower bound): base_color,
@@ -34,6 +45,7 @@ inline ClosureParams clamp_to_valid_ranges(const ClosureParams& p) {
     c.specular_color = Rgb(non_negative(p.specular_color.r), non_negative(p.specular_color.g),
                            non_negative(p.specular_color.b));
     c.ior = non_negative(p.ior);
+    c.transmission = Rgb(unit(p.transmission.r), unit(p.transmission.g), unit(p.transmission.b));
     return c;
 }
 

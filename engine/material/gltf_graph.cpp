@@ -80,10 +80,19 @@ MaterialGraph graph_from_gltf(const scene::Material& m, const GltfGraphOptions& 
         b.value(m.specular_color_texture, Vec4(m.specular_color, 1.0f), kAllChannels);
     const NodeInput ior = b.scalar(m.ior);
 
-    // KHR_materials_transmission as the reflection lobe: the base is scaled by (1 − t).
+    // KHR_materials_transmission: the closure node's base is scaled by (1 − t) (the reflection,
+    // which the GPU shades too), the graph's transmission output is t · base (the BTDF's tint).
     const NodeInput transmission = b.value(m.transmission_texture, Vec4(m.transmission), 0);
     const bool opaque = b.is_constant(transmission, 0.0f);
     const bool clear = b.is_constant(transmission, 1.0f);
+    if (!opaque) {
+        Node tint;
+        tint.kind = &node_kind("multiply");
+        tint.inputs[0] = base;
+        tint.inputs[1] = transmission;
+        g.transmission = {g.add(tint), kAllChannels};
+        g.thin_walled = !(m.thickness > 0.0f);
+    }
     if (!opaque && !clear) {
         Node mix;
         mix.kind = &node_kind("mix_node");

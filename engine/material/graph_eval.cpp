@@ -55,7 +55,13 @@ ClosureParams evaluate_closure(const MaterialGraph& graph,
     if (graph.closure < 0) return black();
     const Node& n = node_at(graph, graph.closure);
     if (!n.kind->closure) return black();
-    return n.kind->closure(GraphNodeContext(graph, graph.closure, textures, p));
+    ClosureParams c = n.kind->closure(GraphNodeContext(graph, graph.closure, textures, p));
+    if (graph.transmission.node >= 0) {
+        c.transmission = Rgb(Vec3(evaluate_input(graph, graph.transmission, textures, p)));
+        c.thin_walled = graph.thin_walled;
+        c = clamp_to_valid_ranges(c);
+    }
+    return c;
 }
 
 Rgb evaluate_emission(const MaterialGraph& graph, const std::vector<scene::Texture>& textures,

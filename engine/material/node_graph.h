@@ -38,6 +38,11 @@ struct MaterialGraph {
     int closure = -1;   // a closure node; -1 never happens for graphs of graph_from_gltf
     int emission = -1;  // an Emission node or -1 (not emissive)
     int normal = -1;    // a normal node (NormalMap, BumpMap) or -1: the interpolated normal
+    // KHR_materials_transmission on the CPU (ClosureParams::transmission): a value whose rgb is
+    // t · base colour, node −1 when opaque. Not an output the GLSL is generated from (kinds()
+    // leaves it out): the GPU shades the reflection only.
+    NodeInput transmission;
+    bool thin_walled = true;  // KHR_materials_volume's thickness is 0
     bool double_sided = false;
     // glTF alpha: the base colour's alpha (factor · texture A · COLOR_0 A) where alpha_mode is
     // not Opaque; unused (node −1) otherwise. Mask cuts the surface where alpha < alpha_cutoff;
@@ -68,10 +73,11 @@ struct GltfGraphOptions {
 // metallic 1 → GGX conductor, constant metallic 0 → dielectric over diffuse (or rough dielectric
 // for KHR_materials_transmission = 1), otherwise the metal-rough mix.
 //
-// KHR_materials_transmission: the transmitted lobe is not modelled (no refraction in the VPL
-// renderer nor in the path tracer): a transmission factor t scales the diffuse base by (1 − t),
-// so the surface keeps its reflection lobe and the transmitted energy is lost. A fully
-// transmissive material becomes the rough dielectric's reflection lobe.
+// KHR_materials_transmission: a transmission factor t scales the diffuse base by (1 − t) in the
+// closure node (what the GPU shades: the reflection), and the graph's `transmission` output is
+// t · base colour, the specular BTDF's tint and weight that the CPU's Bsdf adds (the path tracer,
+// the light tracer, the specular chains). A fully transmissive material's closure node is the
+// rough dielectric's reflection lobe.
 MaterialGraph graph_from_gltf(const scene::Material& material,
                               const GltfGraphOptions& options = {});
 

@@ -37,6 +37,12 @@ public:
     // The graph has an emission node: the material's triangles are area lights.
     bool is_emissive(int material) const { return graph(material).emission >= 0; }
     bool double_sided(int material) const { return graph(material).double_sided; }
+    // KHR_materials_transmission with KHR_materials_volume: the surface bounds a solid, so its
+    // frame keeps facing out whichever side a ray hits (trace::make_shading_point).
+    bool solid(int material) const {
+        const MaterialGraph& g = graph(material);
+        return g.transmission.node >= 0 && !g.thin_walled;
+    }
     // glTF alphaMode MASK: whether the material cuts its surface at p (alpha < alphaCutoff);
     // BLEND as hashed transparency: whether a hit with the uniform number u ∈ [0, 1) (a hash of
     // the ray, so that a hit is deterministic) passes through it (u ≥ alpha).

@@ -72,13 +72,14 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
 
         const trace::ShadingPoint sp = trace::make_shading_point(m_accel.materials(), si);
         const Vec3 wo = sp.frame.to_local(wo_world);
-        if (wo.z <= 0.0f) break;  // seen from below the shading surface: black
+        // Seen from below the shading surface: black, unless it transmits (bsdf.h, "Sides").
+        if (!(wo.z > 0.0f) && !sp.bsdf.transmits()) break;
 
         // Next-event estimation: one light sample, the path gets one more segment.
         if (const auto ls = m_lights.sample_li(sp.p, rng.next_float(), next_2d(rng))) {
             const Vec3 wi = sp.frame.to_local(ls->wi);
             const Rgb f = sp.bsdf.eval(wo, wi);
-            if (!is_black(f) && glm::dot(ls->wi, sp.ng) > 0.0f) {
+            if (!is_black(f) && trace::same_side(ls->wi, sp.ng, wi.z)) {
                 const trace::Ray shadow = std::isinf(ls->distance)
                                               ? trace::spawn_ray(sp.p, sp.ng, ls->wi)
                                               : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n);
@@ -93,8 +94,9 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
         const auto bs = sp.bsdf.sample(wo, next_2d(rng), rng.next_float());
         if (!bs) break;
         const Vec3 wi_world = sp.frame.to_world(bs->wi);
-        // A direction below the geometric surface would leak through it.
-        if (glm::dot(wi_world, sp.ng) <= 0.0f) break;
+        // A direction on the other geometric side than its shading side would leak through the
+        // surface (or miss the transmission that should have carried it).
+        if (!trace::same_side(wi_world, sp.ng, bs->wi.z)) break;
         throughput *= bs->weight;
         prev_bsdf_pdf = bs->pdf;
         prev_p = sp.p;

@@ -27,8 +27,13 @@ constexpr uint32_t kGlbChunkJson = 0x4E4F534A;  // "JSON"
 constexpr uint32_t kGlbChunkBin = 0x004E4942;   // "BIN\0"
 
 const char* const kSupportedExtensions[] = {
-    "KHR_materials_emissive_strength", "KHR_materials_specular", "KHR_materials_ior",
-    "KHR_texture_transform",           "KHR_lights_punctual",    "KHR_materials_transmission",
+    "KHR_materials_emissive_strength",
+    "KHR_materials_specular",
+    "KHR_materials_ior",
+    "KHR_texture_transform",
+    "KHR_lights_punctual",
+    "KHR_materials_transmission",
+    "KHR_materials_volume",
 };
 
 // Reads a whole regular file; `error` says why not in a few words. Devices and FIFOs are refused

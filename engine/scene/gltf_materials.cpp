@@ -211,6 +211,15 @@ void MaterialReader::read_extensions(Material& out) const {
             texture(find_member(*ext, "transmissionTexture"), ColorSpace::Linear,
                     "extensions." + name + "transmissionTexture");
     }
+    if (const tinygltf::Value* ext =
+            find_extension(m_doc, extensions, "KHR_materials_volume", m_name)) {
+        // Only the thickness factor matters here (thin-walled or solid); attenuation is not
+        // modelled (clear glass) and the thickness texture only scales a non-zero factor.
+        const std::string where = prefix + "KHR_materials_volume.thicknessFactor";
+        out.thickness = float(check_non_negative(
+            m_doc, read_number(m_doc, find_member(*ext, "thicknessFactor"), 0.0, where), kMaxFactor,
+            where));
+    }
 }
 
 }  // namespace

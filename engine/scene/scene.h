@@ -44,10 +44,13 @@ struct Material {
     TextureRef specular_color_texture;  // RGB, sRGB-decoded
     // KHR_materials_ior.
     float ior = 1.5f;
-    // KHR_materials_transmission (factor · texture R). Not refracted: material::graph_from_gltf
-    // keeps the reflection lobe and scales the diffuse base by (1 − transmission).
+    // KHR_materials_transmission (factor · texture R): the share t of the dielectric base that is
+    // the specular BTDF (tinted by the base colour) instead of the diffuse lobe.
     float transmission = 0.0f;
     TextureRef transmission_texture;
+    // KHR_materials_volume thicknessFactor: 0 is thin-walled (the transmitted ray keeps its
+    // direction), > 0 a solid that refracts at each interface (its value is not used further).
+    float thickness = 0.0f;
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::Opaque;
     float alpha_cutoff = 0.5f;  // Mask only

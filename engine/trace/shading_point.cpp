@@ -4,7 +4,9 @@ namespace mvpl::trace {
 
 ShadingPoint make_shading_point(const material::SceneMaterials& materials,
                                 const SurfaceInteraction& si) {
-    const bool flip = !si.front_face && materials.double_sided(si.material);
+    // A solid's side is its inside (Bsdf refracts with 1/ior there), never flipped away.
+    const bool flip =
+        !si.front_face && materials.double_sided(si.material) && !materials.solid(si.material);
     const float side = flip ? -1.0f : 1.0f;
     const Vec3 ng = side * si.ng;
     const Vec3 ns = side * si.ns;

@@ -138,12 +138,19 @@ TEST(MaterialGraph, PicksTheNarrowestClosureNode) {
     EXPECT_EQ(g.nodes[size_t(g.closure)].kind, &node_kind("rough_dielectric"));
     // The reflection lobe alone: a black base.
     EXPECT_EQ(evaluate_closure(g, {}, SurfacePoint{}).base_color, Rgb(0.0f));
+    // The transmission (CPU only): t · base colour, thin without KHR_materials_volume.
+    EXPECT_EQ(evaluate_closure(g, {}, SurfacePoint{}).transmission, m.base_color);
+    EXPECT_TRUE(evaluate_closure(g, {}, SurfacePoint{}).thin_walled);
+    m.thickness = 0.1f;
+    EXPECT_FALSE(evaluate_closure(graph_from_gltf(m), {}, SurfacePoint{}).thin_walled);
+    m.thickness = 0.0f;
     m.transmission = 0.25f;
     m.base_color = Rgb(0.8f);
     g = graph_from_gltf(m);
     const std::vector<const NodeKind*> kinds = g.kinds();
     EXPECT_TRUE(std::count(kinds.begin(), kinds.end(), &node_kind("mix_node")) == 1);
     EXPECT_NEAR(evaluate_closure(g, {}, SurfacePoint{}).base_color.r, 0.6f, 1e-6f);
+    EXPECT_NEAR(evaluate_closure(g, {}, SurfacePoint{}).transmission.r, 0.2f, 1e-6f);
 }
 
 // COLOR_0 (issue 12): the base colour, alpha included, times the vertex colour in graphs of

@@ -119,6 +119,22 @@ TEST_F(SceneRange, FactorsUpToTheLimitLoadAndBeyondAreRefused) {
                          "materials[0].extensions.KHR_materials_ior.ior is 1e+300"));
 }
 
+// KHR_materials_volume (issue 15, transmission): its thickness factor decides thin-walled (0, the
+// default) or solid; a negative one is refused with its path.
+TEST_F(SceneRange, VolumeThicknessIsReadAndANegativeOneRefused) {
+    const Scene thin = load_scene(triangle("", R"({"extensions": {"KHR_materials_transmission":
+                                               {"transmissionFactor": 1}}})"));
+    EXPECT_EQ(thin.materials[0].transmission, 1.0f);
+    EXPECT_EQ(thin.materials[0].thickness, 0.0f);
+    const Scene solid = load_scene(triangle("", R"({"extensions": {"KHR_materials_transmission":
+                                               {"transmissionFactor": 1}, "KHR_materials_volume":
+                                               {"thicknessFactor": 0.25}}})"));
+    EXPECT_EQ(solid.materials[0].thickness, 0.25f);
+    EXPECT_TRUE(contains(refusal(triangle("", R"({"extensions": {"KHR_materials_volume":
+                                               {"thicknessFactor": -1}}})")),
+                         "materials[0].extensions.KHR_materials_volume.thicknessFactor"));
+}
+
 TEST_F(SceneRange, TextureRotationIsReducedToOneTurn) {
     const std::string texture =
         R"("images": [{"uri": "data:image/png;base64,iVBORw0KGgoAAAANSUhEUgAAAAEAAAABCAIAAACQd1PeAAAADElEQVR4nGNgZGIGAAAOAAfXb+R4AAAAAElFTkSuQmCC"}],

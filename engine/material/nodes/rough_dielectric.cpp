@@ -1,5 +1,6 @@
 // rough_dielectric: the reflection lobe of a rough dielectric interface, a dielectric layer over a
-// black base (the transmitted lobe is not modelled: graph_from_gltf, KHR_materials_transmission).
+// black base (KHR_materials_transmission = 1: the transmitted lobe is the graph's CPU-only
+// transmission output, graph_from_gltf).
 #include "engine/material/node_graph.h"
 
 namespace mvpl::material::nodes {

@@ -113,13 +113,14 @@ Material plastic(Context& ctx, pugi::xml_node bsdf, bool rough) {
     return m;
 }
 
+// dielectric and roughdielectric: a solid that refracts with int_ior / ext_ior (glTF's
+// transmission with a volume); thindielectric: a thin sheet (glTF's default, thin-walled).
+// specular_transmittance tints the transmitted light as glTF's base colour does.
 Material dielectric(Context& ctx, pugi::xml_node bsdf, const std::string& type) {
-    ctx.warn(bsdf, type +
-                       ": mvpl does not refract; only the reflection off the surface is "
-                       "rendered and the transmitted light is lost");
-    Material m;
+    Material m = diffuse(color_input(ctx, bsdf, "specular_transmittance", Rgb(1.0f)));
     m.metallic = 0.0f;
     m.transmission = 1.0f;
+    m.thickness = type == "thindielectric" ? 0.0f : 1.0f;
     m.specular = 1.0f;
     const ColorInput specular = color_input(ctx, bsdf, "specular_reflectance", Rgb(1.0f));
     m.specular_color = specular.value;
@@ -142,12 +143,13 @@ Material principled(Context& ctx, pugi::xml_node bsdf) {
     const float r = std::sqrt(std::clamp(f0, 0.0f, 0.99f));
     m.ior = (1.0f + r) / (1.0f - r);
     m.specular = 1.0f;
+    // spec_trans: glTF's transmission; Mitsuba's principled is a solid that refracts with eta.
     m.transmission = scalar_input(ctx, bsdf, "spec_trans", 0.0f);
+    m.thickness = 1.0f;
     for (const char* ignored : {"anisotropic", "clearcoat", "sheen", "spec_tint", "flatness"}) {
         if (ctx.property(bsdf, ignored) && scalar_input(ctx, bsdf, ignored, 0.0f) != 0.0f)
             ctx.warn(bsdf, std::string("principled: '") + ignored + "' is not modelled");
     }
-    if (m.transmission > 0.0f) ctx.warn(bsdf, "principled: spec_trans is not refracted");
     return m;
 }
 
