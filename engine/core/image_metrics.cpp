@@ -54,6 +54,18 @@ ImageError compare_images(const Image& image, const Image& reference) {
     return e;
 }
 
+Image crop(const Image& image, int x, int y, int w, int h) {
+    if (x < 0 || y < 0 || w < 1 || h < 1 || x > image.width() - w || y > image.height() - h)
+        throw UsageError("the region does not lie inside the " + std::to_string(image.width()) +
+                         "x" + std::to_string(image.height()) + " image");
+    Image out(w, h);
+    for (int j = 0; j < h; ++j) {
+        for (int i = 0; i < w; ++i)
+            out.at(i, j) = image.at(x + i, y + j);
+    }
+    return out;
+}
+
 Image block_average(const Image& image, int block) {
     if (block <= 1) return image;
     const int w = image.width() / block;

@@ -21,5 +21,7 @@ ImageError compare_images(const Image& image, const Image& reference);
 // Box-downsampling by K×K blocks (the image is cropped to a multiple of K), for comparing
 // renderings whose pixel filters differ.
 Image block_average(const Image& image, int block);
+// The w × h pixels from (x, y); the rectangle must lie inside the image (UsageError otherwise).
+Image crop(const Image& image, int x, int y, int w, int h);
 
 }  // namespace mvpl

@@ -51,8 +51,10 @@ struct ChainedReceiver {
     // The longest VPL path (segments) that may light the receiver under max_depth; UINT32_MAX
     // when unlimited.
     uint32_t max_vpl_length = UINT32_MAX;
-    // Emitted radiance met after the first vertex (emitters, the environment), weighted by the
-    // throughput to it; the first vertex's own goes to make_chained_receiver's `emitted`.
+    // Emitted radiance met after the first vertex (emitters, the environment), and the punctual
+    // lights' radiance reflected at each glossy vertex (a BSDF sample never finds a delta light),
+    // weighted by the throughput to it; the first vertex's own emission goes to
+    // make_chained_receiver's `emitted`.
     Rgb chain_emitted{0.0f};
 };
 

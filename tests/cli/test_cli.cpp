@@ -74,6 +74,16 @@ TEST(Cli, ReferenceWritesExrAndPng) {
     const auto cmp = run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr));
     ASSERT_EQ(cmp.exit_code, 0) << cmp.err;
     EXPECT_NE(cmp.out.find("relMSE 0\n"), std::string::npos) << cmp.out;
+    const auto region =
+        run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr) + " --region 4,2,8,6");
+    ASSERT_EQ(region.exit_code, 0) << region.err;
+    EXPECT_NE(region.out.find("relMSE 0\n"), std::string::npos) << region.out;
+    expect_one_line_error(
+        run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr) + " --region 20,0,8,8"),
+        "region");
+    expect_one_line_error(
+        run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr) + " --region 1,2,3"),
+        "X,Y,W,H");
     expect_one_line_error(
         run_mvpl("compare " + shell_quote(exr) + " " +
                  shell_quote(MVPL_ASSETS_DIR "/cornell-box/ref-cbox-d6-4096.exr")),

@@ -143,5 +143,23 @@ TEST(ImageMetrics, BlockAverage) {
     EXPECT_FLOAT_EQ(b.at(1, 0).r, 2.5f);
 }
 
+// `mvpl compare --region`: the rectangle's pixels, row by row, and nothing outside the image.
+TEST(ImageMetrics, CropTakesTheRectangle) {
+    Image a(4, 3);
+    for (int y = 0; y < 3; ++y) {
+        for (int x = 0; x < 4; ++x)
+            a.at(x, y) = Rgb(float(10 * y + x));
+    }
+    const Image c = crop(a, 1, 1, 2, 2);
+    ASSERT_EQ(c.width(), 2);
+    ASSERT_EQ(c.height(), 2);
+    EXPECT_FLOAT_EQ(c.at(0, 0).r, 11.0f);
+    EXPECT_FLOAT_EQ(c.at(1, 1).r, 22.0f);
+    EXPECT_EQ(crop(a, 0, 0, 4, 3).at(3, 2).r, 23.0f);
+    EXPECT_THROW(crop(a, 3, 0, 2, 1), UsageError);
+    EXPECT_THROW(crop(a, 0, 0, 0, 1), UsageError);
+    EXPECT_THROW(crop(a, -1, 0, 1, 1), UsageError);
+}
+
 }  // namespace
 }  // namespace mvpl
