@@ -267,14 +267,13 @@ Material read(Context& ctx, pugi::xml_node bsdf, int depth) {
         m = inner(ctx, bsdf, depth);
         const pugi::xml_node opacity = ctx.property(bsdf, "opacity");
         if (opacity && std::string(opacity.name()) == "texture") {
-            // The opacity as the base colour texture's alpha (white RGB: the factor keeps the
-            // colour); a BSDF with its own base texture would need both in one.
-            if (m.base_color_texture.valid())
-                ctx.fail(opacity, "a textured mask over a textured BSDF is not supported");
+            // Mitsuba reads the opacity's mean channel; as the opacity texture's A, beside any
+            // texture of the nested BSDF (scene::Material::opacity_texture).
             const TextureRef o = texture_ref(ctx, opacity, true);
-            m.base_color_texture = derived_texture(ctx, opacity, o, [](const Vec4& v) {
+            m.opacity_texture = derived_texture(ctx, opacity, o, [](const Vec4& v) {
                 return Vec4(1.0f, 1.0f, 1.0f, std::clamp((v.r + v.g + v.b) / 3.0f, 0.0f, 1.0f));
             });
+            m.base_alpha = 1.0f;
         } else {
             m.base_alpha = scalar_input(ctx, bsdf, "opacity", 0.5f);
         }
