@@ -13,10 +13,11 @@
 //
 // with cos θ' = max(0, n'·(−ω)), f_r the receiver's BRDF and f_j the VPL's own closure evaluated
 // with its shading normal (seed eq. 5); 0 where −ω points below the receiver's geometric surface,
-// whatever a bump or normal map makes n' face (light::vpl_contribution, the GPU's shading pass). `power` holds the path throughput divided by all sampling
-// densities, NOT by the number of light paths (or chain steps): that factor is the VplSet's
-// `scale`, carried beside the VPLs, so that a sampler run progressively never needs to know its
-// final length. An image is scale · Σ contributions (+ the emission seen directly, unscaled).
+// whatever a bump or normal map makes n' face (light::vpl_contribution, the GPU's shading pass).
+// `power` holds the path throughput divided by all sampling densities, NOT by the number of light
+// paths (or chain steps): that factor is the VplSet's `scale`, carried beside the VPLs, so that a
+// sampler run progressively never needs to know its final length. An image is
+// scale · Σ contributions (+ the emission seen directly, unscaled).
 #include <cstdint>
 #include <vector>
 
