@@ -12,13 +12,15 @@
 //   Directional: power · V · f_r(ω_o, −axis) · cos θ'            (V from an orthographic map)
 //
 // with cos θ' = max(0, n'·(−ω)), f_r the receiver's BRDF and f_j the VPL's own closure evaluated
-// with its shading normal (seed eq. 5). For Area and Surface VPLs, virtual spherical lights of
-// radius r (light/virtual_sphere.h; r = 0 with --no-vsl): the GGX lobes of f_r and f_j are
-// evaluated with α widened to √(α² + r²/(4 max(d², r²))), their integral over the sphere in
-// closed form. `power` holds the path throughput divided by all sampling
-// densities, NOT by the number of light paths (or chain steps): that factor is the VplSet's
-// `scale`, carried beside the VPLs, so that a sampler run progressively never needs to know its
-// final length. An image is scale · Σ contributions (+ the emission seen directly, unscaled).
+// with its shading normal (seed eq. 5); 0 where −ω points below the receiver's geometric surface,
+// whatever a bump or normal map makes n' face (light::vpl_contribution, the GPU's shading pass).
+// For Area and Surface VPLs, virtual spherical lights of radius r (light/virtual_sphere.h; r = 0
+// with --no-vsl): the GGX lobes of f_r and f_j are evaluated with α widened to
+// √(α² + r²/(4 max(d², r²))), their integral over the sphere in closed form. `power` holds the
+// path throughput divided by all sampling densities, NOT by the number of light paths (or chain
+// steps): that factor is the VplSet's `scale`, carried beside the VPLs, so that a sampler run
+// progressively never needs to know its final length. An image is scale · Σ contributions (+ the
+// emission seen directly, unscaled).
 #include <cstdint>
 #include <vector>
 

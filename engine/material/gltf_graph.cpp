@@ -58,7 +58,10 @@ MaterialGraph graph_from_gltf(const scene::Material& m, const GltfGraphOptions& 
     g.alpha_mode = m.alpha_mode;
     g.alpha_cutoff = m.alpha_cutoff;
     // Before the transmission mix below, which overwrites the alpha channel.
-    if (m.alpha_mode != scene::AlphaMode::Opaque) g.alpha = {base.node, 3};
+    if (m.alpha_mode != scene::AlphaMode::Opaque) {
+        g.alpha = m.opacity_texture.valid() ? b.value(m.opacity_texture, Vec4(m.base_alpha), 3)
+                                            : NodeInput{base.node, 3};
+    }
     // metallicRoughnessTexture: roughness in G, metallic in B; one texture node serves both.
     NodeInput metallic;
     NodeInput roughness;

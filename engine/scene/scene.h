@@ -33,6 +33,9 @@ struct Material {
     // uv unit, bends the shading normal where there is no normal texture.
     TextureRef bump_texture;
     float bump_scale = 1.0f;
+    // An opacity map (Mitsuba's mask; glTF has none): where set, the alpha is base_alpha times its
+    // A channel, and the base colour texture's A is not read (Mitsuba's reflectance has none).
+    TextureRef opacity_texture;
     // Emitted radiance = emissive · emissive_strength (KHR_materials_emissive_strength) · texture.
     Rgb emissive{0.0f};
     float emissive_strength = 1.0f;

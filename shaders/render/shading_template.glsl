@@ -266,7 +266,9 @@ void main() {
         if (v.type == kVplDirectional) {
             const vec3 to_light = -v.normal;
             const float cos_r = max(0.0, dot(n, to_light));
-            if (cos_r <= 0.0) continue;
+            // light::vpl_contribution: light from below the geometric surface never reaches it,
+            // though a bump- or normal-mapped n may face it.
+            if (cos_r <= 0.0 || !(dot(ng, to_light) > 0.0)) continue;
             const vec3 f_r = closure_eval(receiver, n, wo, to_light);
             if (max_component(f_r) <= 0.0) continue;
             const float vis =
@@ -282,7 +284,8 @@ void main() {
         const float d = sqrt(d2);
         const vec3 w = r / d;  // VPL → receiver
         const float cos_r = max(0.0, dot(n, -w));
-        if (cos_r <= 0.0) continue;
+        // As for directional VPLs: none from below the geometric surface, whatever n says.
+        if (cos_r <= 0.0 || !(dot(ng, -w) > 0.0)) continue;
         float emitter = 1.0;  // the VPL's own factor: spot falloff or max(0, n_j·ω)
         vec3 f_vpl = vec3(1.0);
 //@if glossy

@@ -206,5 +206,42 @@ TEST_F(ShadingTest, EmittedRadianceIsAddedOnceWhateverTheNumberOfBatches) {
     }
 }
 
+// A shading normal tilted away from the geometric one (a bump or normal map, or interpolated
+// vertex normals) can face a VPL that lies below the surface's geometric plane. Its light cannot
+// reach the upper side (light::vpl_contribution returns 0 there, whatever the visibility test
+// says, and so does the path tracer), so the GPU must add nothing either: the shadow cube sees the
+// plane's underside at the receiver's own depth and would call it lit. Here the plane's vertex
+// normals lean 60° towards +x and a point VPL sits 0.5 below the plane beyond its +x edge, where
+// every receiver's tilted normal faces it (n·l > 0) and the geometric normal does not (ng·l < 0):
+// the image must be black. The same VPL mirrored above the plane must light it (the test can see
+// light through the tilted normals).
+TEST_F(ShadingTest, AVplBelowTheGeometricSurfaceLightsNothingWhateverTheShadingNormal) {
+    scene::Scene scene = floor_scene(test::diffuse_material(Rgb(0.8f)));
+    const float tilt = glm::radians(60.0f);
+    scene.meshes[0].normals.assign(4, Vec3(std::sin(tilt), std::cos(tilt), 0.0f));
+    VplRenderer renderer(context(), scene);
+    RenderOptions options;
+    options.width = options.height = kSize;
+    options.shadow_resolution = 64;
+    options.clamp = 0.0f;
+    for (const float height : {-0.5f, 0.5f}) {
+        light::Vpl vpl;
+        vpl.type = light::VplType::Point;
+        vpl.position = Vec3(4.0f, height, 0.0f);
+        vpl.power = Rgb(20.0f);
+        const Image image = renderer.render({{vpl}}, options);
+        int lit = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x)
+                lit += max_component(image.at(x, y)) > 0.0f;
+        }
+        if (height < 0.0f) {
+            EXPECT_EQ(lit, 0) << "pixels lit from below the plane";
+        } else {
+            EXPECT_GT(lit, kSize * kSize / 4);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace mvpl::render

@@ -73,6 +73,51 @@ float ior_input(Context& ctx, pugi::xml_node bsdf, const std::string& name, floa
     return v;
 }
 
+// roughconductor's alpha_u and alpha_v where either is a texture: rendered isotropic with their
+// mean (as roughness_of does for constants), texel by texel into the metallic-roughness texture
+// (G = √α, as textured_roughness). Two textures must share size, sampler and uv transform, so
+// that the mean of their lookups is the lookup of their mean. False when neither is a texture.
+bool textured_anisotropic_roughness(Context& ctx, pugi::xml_node bsdf, Material& m) {
+    const pugi::xml_node pu = ctx.property(bsdf, "alpha_u"), pv = ctx.property(bsdf, "alpha_v");
+    const auto textured = [](pugi::xml_node p) { return p && std::string(p.name()) == "texture"; };
+    if (!textured(pu) && !textured(pv)) return false;
+    const std::string distribution = ctx.get_string(bsdf, "distribution", "beckmann");
+    if (distribution != "beckmann" && distribution != "ggx")
+        ctx.fail(ctx.property(bsdf, "distribution"),
+                 "distribution '" + distribution + "' is not supported (beckmann, ggx)");
+    const pugi::xml_node first = textured(pu) ? pu : pv, second = textured(pu) ? pv : pu;
+    const auto alpha = [](const Vec4& v) { return std::max(0.0f, (v.r + v.g + v.b) / 3.0f); };
+    const TextureRef a = texture_ref(ctx, first, true);
+    std::vector<float> other;  // the other α at each texel of the first texture
+    if (textured(second)) {
+        const TextureRef b = texture_ref(ctx, second, true);
+        const Texture& ta = ctx.scene().textures[size_t(a.texture)];
+        const Texture& tb = ctx.scene().textures[size_t(b.texture)];
+        if (tb.width != ta.width || tb.height != ta.height || tb.filter != ta.filter ||
+            tb.wrap_s != ta.wrap_s || tb.wrap_t != ta.wrap_t || b.scale != a.scale ||
+            b.offset != a.offset || b.rotation != a.rotation)
+            ctx.fail(second,
+                     "textured alpha_u and alpha_v of different sizes, filters or uv transforms "
+                     "are not supported");
+        for (const Vec4& v : tb.texels)
+            other.push_back(alpha(v));
+    } else {
+        const float constant = scalar_input(ctx, bsdf, textured(pu) ? "alpha_v" : "alpha_u", 0.1f);
+        other.assign(ctx.scene().textures[size_t(a.texture)].texels.size(), constant);
+    }
+    std::vector<Vec4> texels = ctx.scene().textures[size_t(a.texture)].texels;
+    for (size_t i = 0; i < texels.size(); ++i)
+        texels[i] =
+            Vec4(1.0f, std::sqrt(std::min(0.5f * (alpha(texels[i]) + other[i]), 1.0f)), 1.0f, 1.0f);
+    m.metallic_roughness_texture = derived_texture(ctx, first, a, [](const Vec4& v) { return v; });
+    ctx.scene().textures[size_t(m.metallic_roughness_texture.texture)].texels = std::move(texels);
+    m.roughness = 1.0f;
+    ctx.warn(bsdf,
+             "textured anisotropic roughness (alpha_u, alpha_v) is rendered isotropic "
+             "with their mean");
+    return true;
+}
+
 Material conductor(Context& ctx, pugi::xml_node bsdf, bool rough) {
     const float outside = ior_input(ctx, bsdf, "ext_eta", 1.0f);
     ComplexIor ior{Rgb(0.0f), Rgb(1.0f)};
@@ -94,6 +139,7 @@ Material conductor(Context& ctx, pugi::xml_node bsdf, bool rough) {
     m.base_color = conductor_f0(ior, outside) * specular.value;
     m.base_color_texture = specular.texture;
     m.metallic = 1.0f;
+    if (rough && textured_anisotropic_roughness(ctx, bsdf, m)) return m;
     m.roughness = rough ? roughness_of(ctx, bsdf, 0.1f) : 0.0f;
     if (rough) textured_roughness(ctx, bsdf, m);
     return m;
@@ -223,14 +269,13 @@ Material read(Context& ctx, pugi::xml_node bsdf, int depth) {
         m = inner(ctx, bsdf, depth);
         const pugi::xml_node opacity = ctx.property(bsdf, "opacity");
         if (opacity && std::string(opacity.name()) == "texture") {
-            // The opacity as the base colour texture's alpha (white RGB: the factor keeps the
-            // colour); a BSDF with its own base texture would need both in one.
-            if (m.base_color_texture.valid())
-                ctx.fail(opacity, "a textured mask over a textured BSDF is not supported");
+            // Mitsuba reads the opacity's mean channel; as the opacity texture's A, beside any
+            // texture of the nested BSDF (scene::Material::opacity_texture).
             const TextureRef o = texture_ref(ctx, opacity, true);
-            m.base_color_texture = derived_texture(ctx, opacity, o, [](const Vec4& v) {
+            m.opacity_texture = derived_texture(ctx, opacity, o, [](const Vec4& v) {
                 return Vec4(1.0f, 1.0f, 1.0f, std::clamp((v.r + v.g + v.b) / 3.0f, 0.0f, 1.0f));
             });
+            m.base_alpha = 1.0f;
         } else {
             m.base_alpha = scalar_input(ctx, bsdf, "opacity", 0.5f);
         }

@@ -22,15 +22,31 @@ Wrap wrap_mode(Context& ctx, pugi::xml_node texture) {
              "wrap_mode '" + mode + "' is not supported (repeat, mirror, clamp)");
 }
 
-// to_uv as KHR_texture_transform's scale and offset: uv' = diag(a, d) uv + t. A rotation or
-// shear has no such form here and is refused.
+// to_uv as KHR_texture_transform (TextureRef::transform): uv' = t + R(θ) · diag(sx, sy) · uv with
+// R's rows [cos θ, sin θ; −sin θ, cos θ]. Mitsuba applies the 4×4's rows and columns 0, 1 and 3 to
+// (u, v, 1) (Transform4::extract); its linear part A = [a b; c d] has that form exactly when A's
+// columns are orthogonal: (a, c) = sx (cos θ, −sin θ) and (b, d) = sy (sin θ, cos θ), sy < 0 for a
+// mirror. A shear (columns not orthogonal, beyond float rounding) or a projective bottom row has no
+// such form and is refused.
 void apply_to_uv(Context& ctx, pugi::xml_node texture, TextureRef& ref) {
     const pugi::xml_node t = ctx.property(texture, "to_uv");
     if (!t) return;
     const DMat4 m = object_transform(ctx, texture, "to_uv");
-    if (std::abs(m[1][0]) > 1e-9 || std::abs(m[0][1]) > 1e-9)
-        ctx.fail(t, "to_uv with rotation or shear is not supported (scale and translate are)");
-    ref.scale = Vec2(float(m[0][0]), float(m[1][1]));
+    if (m[0][3] != 0.0 || m[1][3] != 0.0 || m[3][3] != 1.0)
+        ctx.fail(t,
+                 "to_uv with a projective part is not supported (scale, rotate and translate are)");
+    const double a = m[0][0], c = m[0][1], b = m[1][0], d = m[1][1];
+    const double len0 = std::hypot(a, c), len1 = std::hypot(b, d);
+    if (std::abs(a * b + c * d) > 1e-6 * len0 * len1)
+        ctx.fail(t, "to_uv with shear is not supported (scale, rotate and translate are)");
+    double theta = 0.0, sx = a, sy = d;
+    if (b != 0.0 || c != 0.0) {
+        theta = len0 > 0.0 ? std::atan2(-c, a) : std::atan2(b, d);
+        sx = len0;
+        sy = b * std::sin(theta) + d * std::cos(theta);
+    }
+    ref.scale = Vec2(float(sx), float(sy));
+    ref.rotation = float(theta);
     ref.offset = Vec2(float(m[3][0]), float(m[3][1]));
 }
 

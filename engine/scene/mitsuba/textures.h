@@ -1,7 +1,7 @@
 #pragma once
 // Mitsuba's textures where a BSDF takes one: `bitmap` (filter_type, wrap_mode, raw, to_uv) and
 // `checkerboard` (baked into a 2×2 nearest-filtered repeating texture, exact for any uv) become
-// Scene::textures, referenced with to_uv's scale and offset as KHR_texture_transform.
+// Scene::textures, referenced with to_uv's scale, rotation and offset as KHR_texture_transform.
 #include <pugixml.hpp>
 
 #include <functional>

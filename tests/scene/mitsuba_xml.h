@@ -1,0 +1,27 @@
+#pragma once
+// Scenes for the Mitsuba loader's tests, written as XML files into a temporary folder.
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace mvpl::scene::testing {
+
+inline std::filesystem::path mitsuba_temp_dir() {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / "mvpl_mitsuba_loader";
+    std::filesystem::create_directories(dir);
+    return dir;
+}
+
+// `text` as the file `name` in the temporary folder; its path.
+inline std::filesystem::path write_file(const std::string& name, const std::string& text) {
+    const std::filesystem::path p = mitsuba_temp_dir() / name;
+    std::ofstream(p) << text;
+    return p;
+}
+
+inline std::string scene_xml(const std::string& body, const std::string& version = "3.0.0") {
+    return "<scene version=\"" + version + "\">\n" + body + "\n</scene>\n";
+}
+
+}  // namespace mvpl::scene::testing
