@@ -144,8 +144,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
-    // indirect faces of half the side.
-    ASSERT_EQ(j["sweep"].size(), 21u);
+    // indirect faces of half the side, imperfect shadow maps.
+    ASSERT_EQ(j["sweep"].size(), 22u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -171,6 +171,15 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     // Indirect faces as emitters' (16² in this run) by default; switched: half of that.
     EXPECT_EQ(j["render"]["indirect_shadow_resolution"].get<int>(), 16);
     EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(), 8);
+    // Imperfect shadow maps off by default; switched on, the indirect VPLs' cubes are theirs and
+    // the emitters' stay rasterised (fewer triangles drawn, but some).
+    EXPECT_FALSE(j["render"]["ism"].get<bool>());
+    EXPECT_EQ(j["render"]["ism_vpls"].get<int>(), 0);
+    EXPECT_TRUE(j["sweep"][21]["ism"].get<bool>());
+    EXPECT_GT(j["sweep"][21]["ism_vpls"].get<int>(), 0);
+    EXPECT_LT(j["sweep"][21]["shadow_triangles_per_vpl"].get<double>(),
+              j["render"]["shadow_triangles_per_vpl"].get<double>());
+    EXPECT_GT(j["sweep"][21]["shadow_triangles_per_vpl"].get<double>(), 0.0);
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());

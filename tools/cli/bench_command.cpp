@@ -53,6 +53,9 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.hemicube = c.hemicube;
     ro.vpl_culling = c.vpl_culling;
     ro.indirect_shadow_resolution = uint32_t(c.indirect_shadow_resolution);
+    ro.ism = c.ism;
+    ro.ism_resolution = uint32_t(c.ism_resolution);
+    ro.ism_points = uint32_t(c.ism_points);
     return ro;
 }
 
@@ -113,6 +116,7 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.shadow_triangles = t.shadow_triangles;
     s.shadow_texels = t.shadow_texels;
     s.culled_vpls = t.culled_vpls;
+    s.ism_vpls = t.ism_vpls;
     s.g_buffers = t.g_buffers;
     if (ranks.size() > 1) {
         // GPU time and work summed over the ranks, so that per VPL they are the job's cost.
@@ -177,7 +181,7 @@ int run_bench(const Args& args) {
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
                     "each lever of issue 14 switched (shadow culling, proxy, hemicubes, VPL "
-                    "culling, interleave, indirect faces of half the side)");
+                    "culling, interleave, indirect faces of half the side, imperfect shadow maps)");
     parser.add_flag("--no-shadows", &no_shadows,
                     "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
                     "measure what visibility costs)");
@@ -197,6 +201,9 @@ int run_bench(const Args& args) {
     config.hemicube = !renderer_args.no_hemicube;
     config.vpl_culling = !renderer_args.no_vpl_culling;
     config.indirect_shadow_resolution = renderer_args.indirect_shadow_res;
+    config.ism = renderer_args.ism;
+    config.ism_resolution = renderer_args.ism_res;
+    config.ism_points = renderer_args.ism_points;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     std::ofstream json_out;
@@ -236,6 +243,9 @@ int run_bench(const Args& args) {
         c = config;
         c.indirect_shadow_resolution =
             config.indirect_shadow_resolution == 0 ? std::max(config.shadow_resolution / 2, 4) : 0;
+        sweep_configs.push_back(c);
+        c = config;
+        c.ism = !config.ism;
         sweep_configs.push_back(c);
     }
 

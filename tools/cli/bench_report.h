@@ -20,6 +20,9 @@ struct BenchConfig {
     bool hemicube = true;        // render::RenderOptions::hemicube
     bool vpl_culling = true;     // render::RenderOptions::vpl_culling
     int indirect_shadow_resolution = 0;  // render::RenderOptions::indirect_shadow_resolution
+    bool ism = false;                    // render::RenderOptions::ism
+    int ism_resolution = 32;             // render::RenderOptions::ism_resolution
+    int ism_points = 32768;              // render::RenderOptions::ism_points
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".
@@ -35,6 +38,7 @@ struct RenderSample {
     uint64_t shadow_triangles = 0;  // drawn into cube faces
     uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
     uint64_t culled_vpls = 0;       // VPLs that could not reach the view
+    uint64_t ism_vpls = 0;          // VPLs whose cubes were imperfect shadow maps
     uint32_t g_buffers = 0;         // one per sub-pixel position
 };
 
