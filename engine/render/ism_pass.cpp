@@ -81,8 +81,7 @@ void IsmPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> vpls,
     const IsmPush push{uint32_t(m_point_count), uint32_t(vpls.size()), m_resolution, kFillLevels};
     if (m_point_count > 0) {
         cmd.dispatch(*m_splat, {&m_points, &m_vpls, &m_depths}, gpu::push_bytes(push),
-                     uint32_t((m_point_count + kSplatGroup - 1) / kSplatGroup),
-                     uint32_t(vpls.size()));
+                     uint32_t((m_point_count + kSplatGroup - 1) / kSplatGroup));
         cmd.barrier();
     }
     cmd.dispatch(*m_resolve, {&m_depths, &m_vpls, &cubes}, gpu::push_bytes(push), 6,
