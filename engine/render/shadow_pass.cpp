@@ -102,13 +102,15 @@ ShadowPass::Casters ShadowPass::upload(gpu::Context& context, const ShadowCluste
 ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
                        const ShadowClusters& clusters, uint32_t resolution, uint32_t max_batch,
                        bool culling, const ShadowClusters* proxy, bool hemicube,
-                       uint32_t indirect_resolution, uint32_t ism_resolution, uint32_t ism_points)
+                       uint32_t indirect_resolution, uint32_t ism_resolution, uint32_t ism_points,
+                       bool ism_emitters)
     : m_geometry(&geometry),
       m_full(upload(context, clusters, "shadow casters")),
       m_proxy(proxy ? upload(context, *proxy, "shadow proxy") : Casters{}),
       m_culling(culling),
       m_hemicube(hemicube),
       m_indirect_resolution(indirect_resolution),
+      m_ism_emitters(ism_emitters),
       m_cubes(context,
               {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
                gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
@@ -197,7 +199,8 @@ void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline&
 ShadowPass::~ShadowPass() = default;
 
 bool ShadowPass::uses_ism(const light::Vpl& vpl) const {
-    return m_ism && vpl.path_length > 0 && vpl.type != light::VplType::Directional;
+    return m_ism && (vpl.path_length > 0 || m_ism_emitters) &&
+           vpl.type != light::VplType::Directional;
 }
 
 uint32_t ShadowPass::face_resolution(const light::Vpl& vpl) const {

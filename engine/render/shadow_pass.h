@@ -59,12 +59,13 @@ public:
     // and columns of their layers (0, or not below resolution: the same as emitters');
     // ism_resolution: the face side of the imperfect maps of path length ≥ 1 (0: none; else a
     // power of two ≤ kMaxIsmResolution, and it takes precedence over indirect_resolution),
-    // splatted from ism_points points sampled over `clusters`.
+    // splatted from ism_points points sampled over `clusters`; ism_emitters: emitter VPLs (not
+    // directional ones) too (an experiment: docs/results.md, "Imperfect shadow maps").
     ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
                uint32_t resolution, uint32_t max_batch, bool culling = true,
                const ShadowClusters* proxy = nullptr, bool hemicube = true,
                uint32_t indirect_resolution = 0, uint32_t ism_resolution = 0,
-               uint32_t ism_points = IsmPass::kDefaultPoints);
+               uint32_t ism_points = IsmPass::kDefaultPoints, bool ism_emitters = false);
     ~ShadowPass();
     ShadowPass(const ShadowPass&) = delete;
     ShadowPass& operator=(const ShadowPass&) = delete;
@@ -117,7 +118,8 @@ private:
     uint64_t m_triangles_drawn = 0;
     uint64_t m_texels_drawn = 0;
     uint64_t m_ism_vpls = 0;
-    std::unique_ptr<IsmPass> m_ism;       // null without imperfect maps
+    std::unique_ptr<IsmPass> m_ism;  // null without imperfect maps
+    bool m_ism_emitters = false;
     std::vector<light::Vpl> m_ism_batch;  // scratch: this batch's VPLs with imperfect maps
     std::vector<uint32_t> m_ism_slots;    // and their cubes
     gpu::Image m_cubes;

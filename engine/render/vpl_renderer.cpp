@@ -162,11 +162,11 @@ struct VplRenderer::Impl {
             o.shadow_proxy != built_for.shadow_proxy || o.hemicube != built_for.hemicube ||
             o.indirect_shadow_resolution != built_for.indirect_shadow_resolution ||
             o.ism != built_for.ism || o.ism_resolution != built_for.ism_resolution ||
-            o.ism_points != built_for.ism_points) {
+            o.ism_points != built_for.ism_points || o.ism_emitters != built_for.ism_emitters) {
             shadow = std::make_unique<ShadowPass>(
                 *context, geometry, clusters, o.shadow_resolution, o.batch, o.shadow_culling,
                 o.shadow_proxy ? proxy.get() : nullptr, o.hemicube, o.indirect_shadow_resolution,
-                o.ism ? o.ism_resolution : 0, o.ism_points);
+                o.ism ? o.ism_resolution : 0, o.ism_points, o.ism_emitters);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();

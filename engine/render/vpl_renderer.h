@@ -45,6 +45,9 @@ struct RenderOptions {
     bool ism = false;
     uint32_t ism_resolution = 32;
     uint32_t ism_points = 32768;
+    // Emitter VPLs (path length 0) get imperfect maps too: an experiment (their shadows are the
+    // sharpest; docs/results.md), off.
+    bool ism_emitters = false;
     uint32_t batch = 32;  // VPLs per shadow/shading batch
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.
     float clamp = light::kDefaultClamp;

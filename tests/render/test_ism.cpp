@@ -108,6 +108,10 @@ TEST_F(IsmTest, EmitterVplsKeepTheirCubes) {
     // The flag does change the indirect VPLs' shadows.
     EXPECT_GT(differing_pixels(renderer.render(vpls, o, &timings), mixed_full), 0u);
     EXPECT_EQ(timings.ism_vpls, vpls.vpls.size() - direct.vpls.size());
+    // The experiment that gives emitters imperfect maps too does change them.
+    o.ism_emitters = true;
+    EXPECT_GT(differing_pixels(renderer.render(direct, o, &timings), full), 0u);
+    EXPECT_EQ(timings.ism_vpls, direct.vpls.size());
 }
 
 // Against the oracle's exact visibility, on the Cornell box at 64², 32² imperfect faces.

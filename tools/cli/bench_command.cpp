@@ -56,6 +56,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.ism = c.ism;
     ro.ism_resolution = uint32_t(c.ism_resolution);
     ro.ism_points = uint32_t(c.ism_points);
+    ro.ism_emitters = c.ism_emitters;
     return ro;
 }
 
@@ -204,6 +205,7 @@ int run_bench(const Args& args) {
     config.ism = renderer_args.ism;
     config.ism_resolution = renderer_args.ism_res;
     config.ism_points = renderer_args.ism_points;
+    config.ism_emitters = renderer_args.ism_emitters;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     std::ofstream json_out;

@@ -59,6 +59,7 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"ism\": " + (r.config.ism ? "true" : "false") + ",\n";
     s += i + "\"ism_resolution\": " + std::to_string(r.config.ism_resolution) + ",\n";
     s += i + "\"ism_points\": " + std::to_string(r.config.ism_points) + ",\n";
+    s += i + "\"ism_emitters\": " + (r.config.ism_emitters ? "true" : "false") + ",\n";
     s += i + "\"ism_vpls\": " + std::to_string(r.median.ism_vpls) + ",\n";
     s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
     s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
@@ -89,7 +90,8 @@ std::string bench_levers(const BenchConfig& c) {
                 ? std::to_string(std::min(c.indirect_shadow_resolution, c.shadow_resolution)) + "²"
                 : "as emitters'") +
            (c.ism ? ", ISM " + std::to_string(c.ism_resolution) + "² × " +
-                        std::to_string(c.ism_points) + " points"
+                        std::to_string(c.ism_points) + " points" +
+                        (c.ism_emitters ? ", emitters too" : "")
                   : ", ISM off");
 }
 

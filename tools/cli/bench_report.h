@@ -23,6 +23,7 @@ struct BenchConfig {
     bool ism = false;                    // render::RenderOptions::ism
     int ism_resolution = 32;             // render::RenderOptions::ism_resolution
     int ism_points = 32768;              // render::RenderOptions::ism_points
+    bool ism_emitters = false;           // render::RenderOptions::ism_emitters
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".

@@ -53,6 +53,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.ism = ism;
     o.ism_resolution = uint32_t(ism_res);
     o.ism_points = uint32_t(ism_points);
+    o.ism_emitters = ism_emitters;
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -82,6 +83,9 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                    "side of an imperfect shadow map's cube face: 4, 8, 16, 32 or 64");
     parser.add_int("--ism-points", &args.ism_points,
                    "scene points of the imperfect shadow maps (sampled by area once)");
+    parser.add_flag("--ism-emitters", &args.ism_emitters,
+                    "with --ism, emitter VPLs get imperfect shadow maps too (an experiment: "
+                    "their shadows are the sharpest)");
     parser.add_int("--interleave", &args.interleave,
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
                    "then a geometry-aware K×K filter (1 = off)");

@@ -17,7 +17,7 @@ namespace mvpl::cli {
 
 // --shadow-res, --batch, --clamp, --no-jitter, --no-shadow-culling, --no-shadow-proxy,
 // --no-hemicube, --no-vpl-culling, --interleave, --indirect-shadow-res, --ism, --ism-res,
-// --ism-points: the GPU
+// --ism-points, --ism-emitters: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
@@ -41,6 +41,7 @@ struct RendererArgs {
     bool ism = false;
     int ism_res = int(render::RenderOptions{}.ism_resolution);
     int ism_points = int(render::RenderOptions{}.ism_points);
+    bool ism_emitters = false;
     static constexpr int kDefaultInterleave = 2;
 
     // Copies them into `o` (the chains' max depth is the command's to set).
