@@ -1,6 +1,7 @@
 #include "engine/render/ism_points.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include "engine/core/rng.h"
 #include "engine/core/sampling.h"
@@ -25,6 +26,10 @@ std::vector<IsmPoint> sample_ism_points(const ShadowClusters& casters, uint32_t 
     if (triangles == 0 || !(cdf.back() > 0.0)) return points;
     points.reserve(count);
     Rng rng(seed, 0x15a7);
+    // Discs of twice the radius that gives each point its share of the area: random discs of
+    // total area 4 × the surface's leave e^−4 ≈ 2 % of it uncovered (at 1×, e^−1 = 37 %: the
+    // points behind showed through, two-room scene).
+    const float radius = 2.0f * float(std::sqrt(cdf.back() / (kPi * double(count))));
     for (uint32_t i = 0; i < count; ++i) {
         const double target = (double(i) + double(rng.next_float())) / double(count) * cdf.back();
         size_t t = size_t(std::upper_bound(cdf.begin() + 1, cdf.end(), target) - cdf.begin()) - 1;
@@ -40,6 +45,7 @@ std::vector<IsmPoint> sample_ism_points(const ShadowClusters& casters, uint32_t 
         IsmPoint q{};
         store(q.position, x);
         store(q.normal, n);
+        q.radius = radius;
         points.push_back(q);
     }
     return points;

@@ -15,7 +15,8 @@ using shared::IsmPoint;
 
 // `count` points (none if the casters have no area), the i-th in the i-th of `count` equal
 // slices of the total area in triangle order (stratified, so that no triangle of area A gets
-// fewer than ⌊count · A / total⌋ − 1 points), with a seed of its own so that the set is the same
+// fewer than ⌊count · A / total⌋ − 1 points), each a disc of the radius that gives it 1/count of
+// the area (IsmPoint::radius), with a seed of its own so that the set is the same
 // on every run.
 std::vector<IsmPoint> sample_ism_points(const ShadowClusters& casters, uint32_t count,
                                         uint64_t seed = 0);

@@ -15,9 +15,9 @@ const uint kMaxIsmResolution = 64u;
 // A scene point, sampled uniformly by area once per scene (ism_points.h).
 struct IsmPoint {
     vec3 position;
-    float pad0;
-    vec3 normal;  // the triangle's geometric normal (unit)
-    float pad1;
+    float radius;  // of the disc it stands for: √(area / (π · points))
+    vec3 normal;   // the triangle's geometric normal (unit)
+    float pad;
 };
 
 // A VPL whose cube the batch draws as an imperfect map.
