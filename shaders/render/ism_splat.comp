@@ -23,7 +23,7 @@ layout(push_constant) uniform IsmPushBlock { IsmPush pc; };
 // into every texel of its face whose centre ray meets the disc, up to kMaxSplatReach texels from
 // its own: a point-sized splat let the points behind a near wall through the gaps between the
 // wall's (two-room scene). Pull-push fills what remains.
-const float kMaxSplatReach = 4.0;
+const float kMaxSplatReach = 2.0;
 
 void main() {
     const uint point = gl_GlobalInvocationID.x;
