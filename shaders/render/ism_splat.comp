@@ -2,8 +2,9 @@
 #extension GL_GOOGLE_include_directive : require
 // Imperfect shadow maps, splat (Ritschel et al. 2008, section 3; engine/render/ism_pass.h): one
 // invocation per scene point writes, for every VPL of the batch, the point's distance into the
-// texel of the VPL's cube that holds its direction, keeping the nearest by atomicMin on the float's bits (positive
-// floats order as their bits do). The cost is points × VPLs, whatever the triangle count.
+// texels of the VPL's cube that its disc covers, keeping the nearest by atomicMin on the float's
+// bits (positive floats order as their bits do). The cost is points × VPLs, whatever the
+// triangle count.
 layout(local_size_x = 64) in;
 #include "shared/ism.h"
 layout(std430, set = 0, binding = 0) readonly buffer Points { IsmPoint points[]; };
@@ -15,14 +16,15 @@ layout(push_constant) uniform IsmPushBlock { IsmPush pc; };
 // surface in its texel: the distance along the texel's centre direction w_c to the point's
 // tangent plane, n·(x − p)/(n·w_c), which is the value the shading pass's receiver-plane test
 // (shading_template.glsl, visibility()) computes for a receiver on that surface. A distance
-// pushed back by a slope bias instead let light through one-plane walls met at grazing angles
-// (two-room scene: mean 2.5× the reference). Where w_c runs nearly parallel to the plane, or
-// the plane distance strays from the point's own (both as the shading pass rejects them), the
-// point's distance d.
-// Each point is a disc of radius IsmPoint::radius (its share of the area, ism_points.h), splatted
-// into every texel of its face whose centre ray meets the disc, up to kMaxSplatReach texels from
-// its own: a point-sized splat let the points behind a near wall through the gaps between the
-// wall's (two-room scene). Pull-push fills what remains.
+// pushed back by a slope bias instead let light through one-plane walls (two-room scene: mean
+// 2.2× the reference; docs/results.md, "Imperfect shadow maps"). Where w_c runs nearly parallel
+// to the plane, or the plane distance strays from the point's own (both as the shading pass
+// rejects them), the point's distance d.
+//
+// Each point is a disc of radius IsmPoint::radius (twice its share of the area, ism_points.h),
+// splatted into every texel of its face whose centre ray meets the disc, up to kMaxSplatReach
+// texels from its own: a point-sized splat let the points behind a near wall through the gaps
+// between the wall's (two-room scene). Pull-push fills what remains.
 const float kMaxSplatReach = 2.0;
 
 void main() {
@@ -31,7 +33,7 @@ void main() {
     const IsmPoint q = points[point];
     const float res = float(pc.resolution);
     // One point against every VPL of the batch: the VPL index is the same in every lane, and
-    // lavapipe pays per workgroup (a dispatch per point and VPL ran 2–3× slower).
+    // lavapipe pays per workgroup (a dispatch per point and VPL ran 10 % slower).
     for (uint v = 0u; v < pc.vpls; ++v) {
         const IsmVpl vpl = vpls[v];
         const vec3 r = q.position - vpl.position;
@@ -40,8 +42,8 @@ void main() {
         if (vpl.hemisphere != 0u && dot(vpl.normal, r) <= 0.0) continue;
         const vec3 w = r / d;
         // The texel of direction w as the shading pass finds it (shading_template.glsl,
-        // cube_texel: Vulkan's cube face selection, faces +X −X +Y −Y +Z −Z), without branches:
-        // lavapipe runs every side of a divergent one.
+        // cube_texel: Vulkan's cube face selection, faces +X −X +Y −Y +Z −Z), without
+        // branches: lavapipe runs every side of a divergent one.
         const vec3 a = abs(w);
         const bool x_major = a.x >= a.y && a.x >= a.z;
         const bool y_major = !x_major && a.y >= a.z;
