@@ -102,13 +102,15 @@ ShadowPass::Casters ShadowPass::upload(gpu::Context& context, const ShadowCluste
 ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
                        const ShadowClusters& clusters, uint32_t resolution, uint32_t max_batch,
                        bool culling, const ShadowClusters* proxy, bool hemicube,
-                       uint32_t indirect_resolution)
+                       uint32_t indirect_resolution, uint32_t ism_resolution, uint32_t ism_points,
+                       bool ism_emitters)
     : m_geometry(&geometry),
       m_full(upload(context, clusters, "shadow casters")),
       m_proxy(proxy ? upload(context, *proxy, "shadow proxy") : Casters{}),
       m_culling(culling),
       m_hemicube(hemicube),
       m_indirect_resolution(indirect_resolution),
+      m_ism_emitters(ism_emitters),
       m_cubes(context,
               {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
                gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
@@ -140,7 +142,17 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
     for (const GeometryDraw& draw : geometry.draws()) {
         if (draw.material < masked.size() && masked[draw.material]) m_masked_draws.push_back(draw);
     }
-    if (m_masked_draws.empty()) return;
+    if (m_masked_draws.empty()) {
+        // The imperfect faces fit in the cube layers: the largest power of two not above either.
+        uint32_t side = 0;
+        for (uint32_t p = 1; p <= std::min(ism_resolution, resolution); p *= 2)
+            side = p;
+        if (side >= 2) {
+            m_ism = std::make_unique<IsmPass>(context, sample_ism_points(clusters, ism_points),
+                                              side, max_batch);
+        }
+        return;
+    }
     const ShadowAlphaSources code =
         generate_shadow_alpha_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
     const std::vector<uint32_t> frag_spirv = gpu::compile_glsl_cached(
@@ -186,7 +198,13 @@ void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline&
 
 ShadowPass::~ShadowPass() = default;
 
+bool ShadowPass::uses_ism(const light::Vpl& vpl) const {
+    return m_ism && (vpl.path_length > 0 || m_ism_emitters) &&
+           vpl.type != light::VplType::Directional;
+}
+
 uint32_t ShadowPass::face_resolution(const light::Vpl& vpl) const {
+    if (uses_ism(vpl)) return std::min(m_ism->resolution(), resolution());
     if (vpl.path_length == 0 || m_indirect_resolution == 0) return resolution();
     return std::min(m_indirect_resolution, resolution());
 }
@@ -207,10 +225,17 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
         m_masked_set = gpu::write_image_set(cmd, *m_masked_pipeline, images);
         m_masked_ortho_set = gpu::write_image_set(cmd, *m_masked_ortho_pipeline, images);
     }
+    m_ism_batch.clear();
+    m_ism_slots.clear();
     for (uint32_t i = 0; i < batch.size(); ++i) {
         const light::Vpl& vpl = batch[i];
         ++m_vpl_seed;  // each VPL its own hashed-transparency pattern (glTF BLEND)
         if (!skip.empty() && skip[i]) continue;
+        if (uses_ism(vpl)) {
+            m_ism_batch.push_back(vpl);
+            m_ism_slots.push_back(i);
+            continue;
+        }
         if (vpl.type == light::VplType::Directional) {
             if (ortho_depth_in_use) cmd.barrier();
             ortho_depth_in_use = true;
@@ -262,6 +287,11 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
             }
             gpu::end_rendering(cmd);
         }
+    }
+    // Other layers than the rasterised cubes': no barrier between the two.
+    if (!m_ism_batch.empty()) {
+        m_ism->record(cmd, m_ism_batch, m_ism_slots, m_near, m_cubes);
+        m_ism_vpls += m_ism_batch.size();
     }
 }
 

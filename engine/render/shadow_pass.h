@@ -9,6 +9,11 @@
 // directions; the texels keep stale values that are never read).
 // Vulkan-free to include.
 //
+// Imperfect shadow maps (ism_pass.h, opt-in): VPLs of path length ≥ 1 that are not directional
+// get their cubes from splatted scene points instead, ism_resolution² per face, in the same
+// array; emitter VPLs keep rasterised cubes. Not for scenes with masked or blended materials
+// (the points carry no alpha): those rasterise every cube.
+//
 // Directional VPLs get no cube but an orthographic map instead: layer i of an R32F 2D array
 // holds, for batch[i], the distance along the direction of travel from the map's near plane
 // (directional_frame.h) to the first surface.
@@ -26,6 +31,7 @@
 #include "engine/gpu/graphics_pipeline.h"
 #include "engine/gpu/image.h"
 #include "engine/light/vpl.h"
+#include "engine/render/ism_pass.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shadow_clusters.h"
 
@@ -50,11 +56,16 @@ public:
     // Surface VPLs draw only the texels of each face that their lit hemisphere can reach
     // (hemicube.h), false: every face that is not wholly behind them, in full;
     // indirect_resolution: the face side of VPLs with path length ≥ 1, drawn into the first rows
-    // and columns of their layers (0, or not below resolution: the same as emitters').
+    // and columns of their layers (0, or not below resolution: the same as emitters');
+    // ism_resolution: the face side of the imperfect maps of path length ≥ 1 (0: none; else a
+    // power of two ≤ kMaxIsmResolution, and it takes precedence over indirect_resolution),
+    // splatted from ism_points points sampled over `clusters`; ism_emitters: emitter VPLs (not
+    // directional ones) too (an experiment: docs/results.md, "Imperfect shadow maps").
     ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
                uint32_t resolution, uint32_t max_batch, bool culling = true,
                const ShadowClusters* proxy = nullptr, bool hemicube = true,
-               uint32_t indirect_resolution = 0);
+               uint32_t indirect_resolution = 0, uint32_t ism_resolution = 0,
+               uint32_t ism_points = IsmPass::kDefaultPoints, bool ism_emitters = false);
     ~ShadowPass();
     ShadowPass(const ShadowPass&) = delete;
     ShadowPass& operator=(const ShadowPass&) = delete;
@@ -70,7 +81,8 @@ public:
     // so that the view is always a 2D array).
     const gpu::Image& ortho_maps() const { return m_ortho; }
     uint32_t resolution() const { return m_cubes.width(); }
-    // The face side that vpl's cube uses (indirect_resolution for path length ≥ 1).
+    // The face side that vpl's cube uses (indirect_resolution or the imperfect maps' for path
+    // length ≥ 1).
     uint32_t face_resolution(const light::Vpl& vpl) const;
     uint32_t max_batch() const { return m_cubes.layers() / 6; }
     // Surfaces closer than this to a VPL do not shadow (the near plane), relative to the scene.
@@ -79,6 +91,11 @@ public:
     uint64_t triangles_drawn() const { return m_triangles_drawn; }
     // Cube-face texels cleared and drawn since construction (the hemicubes' effect).
     uint64_t texels_drawn() const { return m_texels_drawn; }
+    // Whether VPL gets an imperfect map, and how many did since construction.
+    bool uses_ism(const light::Vpl& vpl) const;
+    uint64_t ism_vpls() const { return m_ism_vpls; }
+    // The imperfect maps' points (0 without them).
+    size_t ism_points() const { return m_ism ? m_ism->point_count() : 0; }
 
 private:
     void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
@@ -100,6 +117,11 @@ private:
     std::vector<gpu::IndexRange> m_ranges;  // scratch, per face
     uint64_t m_triangles_drawn = 0;
     uint64_t m_texels_drawn = 0;
+    uint64_t m_ism_vpls = 0;
+    std::unique_ptr<IsmPass> m_ism;  // null without imperfect maps
+    bool m_ism_emitters = false;
+    std::vector<light::Vpl> m_ism_batch;  // scratch: this batch's VPLs with imperfect maps
+    std::vector<uint32_t> m_ism_slots;    // and their cubes
     gpu::Image m_cubes;
     gpu::Image m_depth;  // six layers, reused by every cube
     gpu::Image m_ortho;

@@ -160,10 +160,13 @@ struct VplRenderer::Impl {
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
             o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
             o.shadow_proxy != built_for.shadow_proxy || o.hemicube != built_for.hemicube ||
-            o.indirect_shadow_resolution != built_for.indirect_shadow_resolution) {
+            o.indirect_shadow_resolution != built_for.indirect_shadow_resolution ||
+            o.ism != built_for.ism || o.ism_resolution != built_for.ism_resolution ||
+            o.ism_points != built_for.ism_points || o.ism_emitters != built_for.ism_emitters) {
             shadow = std::make_unique<ShadowPass>(
                 *context, geometry, clusters, o.shadow_resolution, o.batch, o.shadow_culling,
-                o.shadow_proxy ? proxy.get() : nullptr, o.hemicube, o.indirect_shadow_resolution);
+                o.shadow_proxy ? proxy.get() : nullptr, o.hemicube, o.indirect_shadow_resolution,
+                o.ism ? o.ism_resolution : 0, o.ism_points, o.ism_emitters);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();
@@ -272,6 +275,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     batch.chains = m.chains ? &m.chains->records() : nullptr;
     const uint64_t drawn_before = m.shadow->triangles_drawn();
     const uint64_t texels_before = m.shadow->texels_drawn();
+    const uint64_t ism_before = m.shadow->ism_vpls();
     std::vector<light::Vpl> kept;
     std::vector<bool> skip;
     std::vector<uint32_t> resolutions;
@@ -329,6 +333,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
     m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
     m.timings.shadow_texels += m.shadow->texels_drawn() - texels_before;
+    m.timings.ism_vpls += m.shadow->ism_vpls() - ism_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
 }
 

@@ -40,8 +40,9 @@ void expect_rel(double actual, double expected, const char* what) {
 void expect_positive_numbers(const json& j, const std::string& where) {
     if (j.is_object()) {
         for (const auto& [key, value] : j.items()) {
-            if (key == "culled_vpls" || key == "chain_ms" || key == "chain_rays" ||
-                key == "chain_roughness") {
+            // Counts that are 0 where a lever is off, and the chains' bound.
+            if (key == "culled_vpls" || key == "ism_vpls" || key == "chain_ms" ||
+                key == "chain_rays" || key == "chain_roughness") {
                 EXPECT_GE(value.get<double>(), 0.0) << where;
                 continue;
             }
@@ -145,8 +146,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
-    // indirect faces of half the side, specular chains.
-    ASSERT_EQ(j["sweep"].size(), 22u);
+    // indirect faces of half the side, specular chains, imperfect shadow maps.
+    ASSERT_EQ(j["sweep"].size(), 23u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -178,6 +179,15 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_FALSE(j["sweep"][21]["chains"].get<bool>());
     EXPECT_EQ(j["render"]["chain_rays"].get<int64_t>(), 0);
     EXPECT_EQ(j["sweep"][21]["chain_rays"].get<int64_t>(), 0);
+    // Imperfect shadow maps off by default; switched on, the indirect VPLs' cubes are theirs and
+    // the emitters' stay rasterised (fewer triangles drawn, but some).
+    EXPECT_FALSE(j["render"]["ism"].get<bool>());
+    EXPECT_EQ(j["render"]["ism_vpls"].get<int>(), 0);
+    EXPECT_TRUE(j["sweep"][22]["ism"].get<bool>());
+    EXPECT_GT(j["sweep"][22]["ism_vpls"].get<int>(), 0);
+    EXPECT_LT(j["sweep"][22]["shadow_triangles_per_vpl"].get<double>(),
+              j["render"]["shadow_triangles_per_vpl"].get<double>());
+    EXPECT_GT(j["sweep"][22]["shadow_triangles_per_vpl"].get<double>(), 0.0);
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());

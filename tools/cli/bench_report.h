@@ -24,7 +24,11 @@ struct BenchConfig {
     // light paths' --max-depth, which bounds them.
     float chain_roughness = -1.0f;
     int max_depth = -1;
-    float vsl_radius = 0.0f;  // render::RenderOptions::vsl_radius (0: point VPLs)
+    float vsl_radius = 0.0f;    // render::RenderOptions::vsl_radius (0: point VPLs)
+    bool ism = false;           // render::RenderOptions::ism
+    int ism_resolution = 32;    // render::RenderOptions::ism_resolution
+    int ism_points = 32768;     // render::RenderOptions::ism_points
+    bool ism_emitters = false;  // render::RenderOptions::ism_emitters
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".
@@ -40,6 +44,7 @@ struct RenderSample {
     uint64_t shadow_triangles = 0;  // drawn into cube faces
     uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
     uint64_t culled_vpls = 0;       // VPLs that could not reach the view
+    uint64_t ism_vpls = 0;          // VPLs whose cubes were imperfect shadow maps
     uint32_t g_buffers = 0;         // one per sub-pixel position
     double chain_ms = 0.0;          // host time tracing specular chains (within wall_s)
     uint64_t chain_rays = 0;

@@ -51,6 +51,10 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.vpl_culling = !no_vpl_culling;
     o.interleave = uint32_t(interleave);
     o.indirect_shadow_resolution = uint32_t(indirect_shadow_res);
+    o.ism = ism;
+    o.ism_resolution = uint32_t(ism_res);
+    o.ism_points = uint32_t(ism_points);
+    o.ism_emitters = ism_emitters;
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -78,6 +82,16 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_int("--indirect-shadow-res", &args.indirect_shadow_res,
                    "side of the shadow cube faces of indirect (surface) VPLs, at most --shadow-res "
                    "(0: --shadow-res)");
+    parser.add_flag("--ism", &args.ism,
+                    "imperfect shadow maps for indirect VPLs: scene points splatted into small "
+                    "cube faces, many VPLs per pass (emitter VPLs keep full faces)");
+    parser.add_int("--ism-res", &args.ism_res,
+                   "side of an imperfect shadow map's cube face: 4, 8, 16, 32 or 64");
+    parser.add_int("--ism-points", &args.ism_points,
+                   "scene points of the imperfect shadow maps (sampled by area once)");
+    parser.add_flag("--ism-emitters", &args.ism_emitters,
+                    "with --ism, emitter VPLs get imperfect shadow maps too (an experiment: "
+                    "their shadows are the sharpest)");
     parser.add_int("--interleave", &args.interleave,
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
                    "then a geometry-aware K×K filter (1 = off)");
@@ -101,6 +115,10 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
         if (args.indirect_shadow_res != 0 &&
             (args.indirect_shadow_res < 4 || args.indirect_shadow_res > 4096))
             out_of_range(parser, "--indirect-shadow-res", "0 or 4..4096");
+        if (args.ism_res < 4 || args.ism_res > 64 || (args.ism_res & (args.ism_res - 1)) != 0)
+            out_of_range(parser, "--ism-res", "4, 8, 16, 32 or 64");
+        if (args.ism_points < 1 || args.ism_points > (1 << 24))
+            out_of_range(parser, "--ism-points", "1..2^24");
         if (args.interleave < 1 || args.interleave > 8)
             out_of_range(parser, "--interleave", "1..8");
     });

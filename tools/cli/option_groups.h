@@ -16,8 +16,8 @@
 namespace mvpl::cli {
 
 // --shadow-res, --batch, --clamp, --vsl-radius, --no-vsl, --no-jitter, --no-shadow-culling,
-// --no-shadow-proxy,
-// --no-hemicube, --no-vpl-culling, --interleave, --indirect-shadow-res: the GPU
+// --no-shadow-proxy, --no-hemicube, --no-vpl-culling, --interleave, --indirect-shadow-res, --ism,
+// --ism-res, --ism-points, --ism-emitters: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
@@ -39,6 +39,11 @@ struct RendererArgs {
     // one-plane wall (mean +0.5 %, relMSE +24 % at equal VPL count).
     int interleave = kDefaultInterleave;
     int indirect_shadow_res = 0;
+    // Imperfect shadow maps for indirect VPLs: opt-in (docs/results.md, "Imperfect shadow maps").
+    bool ism = false;
+    int ism_res = int(render::RenderOptions{}.ism_resolution);
+    int ism_points = int(render::RenderOptions{}.ism_points);
+    bool ism_emitters = false;
     static constexpr int kDefaultInterleave = 2;
     // The radius of the virtual spherical lights (scene diagonals), 0 with --no-vsl.
     float vsl() const { return no_vsl ? 0.0f : vsl_radius; }
