@@ -20,20 +20,12 @@
 #include "engine/trace/accel.h"
 #include "sampler/monte_carlo_sampler.h"
 #include "tests/support/glass_slab.h"
+#include "tests/support/oracle_against_tracer.h"
 
 namespace mvpl::reference {
 namespace {
 
 // The mean of v and the variance of that mean.
-std::pair<double, double> mean_and_variance(const std::vector<double>& v) {
-    double mean = 0.0, var = 0.0;
-    for (double x : v)
-        mean += x / double(v.size());
-    for (double x : v)
-        var += (x - mean) * (x - mean) / double(v.size() - 1);
-    return {mean, var / double(v.size())};
-}
-
 // Chains through pixel (x, y)'s centre: the mean of kN chains' throughput (0 where a chain
 // ends without a receiver) and that mean's standard deviation, per channel.
 struct ChainMean {
@@ -155,64 +147,37 @@ TEST(GlassSlab, ChainsThroughSmoothGlassCarryTheFresnelTransmittance) {
 //
 // The solid slab (thickness 0.1, refracting) at max depth 4: its two interfaces add a vertex.
 void expect_wall_through_glass_matches_the_path_tracer(float thickness) {
-    constexpr int kSize = 20;
-    constexpr int kRuns = 8;
-    const int kMaxDepth = thickness > 0.0f ? 4 : 3;
     const scene::Scene s = test::make_glass_slab(Rgb(0.95f, 0.85f, 0.7f), thickness);
-    const trace::Accel accel(s);
-    const light::LightSampler lights(s);
-    auto sheet_mean = [&](const Image& image) {
-        double sum = 0.0;
-        int n = 0;
-        for (int y = 0; y < kSize; ++y) {
-            for (int x = 0; x < kSize; ++x) {
-                if (!test::through_glass_sheet(s.camera, kSize, x, y, 0.05f)) continue;
-                sum += luminance(image.at(x, y));
-                ++n;
+    test::OracleAgainstTracer setup;
+    setup.runs = 8;
+    setup.max_depth = thickness > 0.0f ? 4 : 3;
+    setup.paths = 512;
+    setup.spp = 32;
+    setup.chain_roughness = light::kDefaultChainRoughness;
+    const int size = setup.size;
+    const test::OracleTracerMeans m =
+        test::compare_oracle_with_tracer(s, setup, [&](const Image& image) {
+            double sum = 0.0;
+            int n = 0;
+            for (int y = 0; y < size; ++y) {
+                for (int x = 0; x < size; ++x) {
+                    if (!test::through_glass_sheet(s.camera, size, x, y, 0.05f)) continue;
+                    sum += luminance(image.at(x, y));
+                    ++n;
+                }
             }
-        }
-        return sum / std::max(n, 1);
-    };
-    std::vector<double> vpl, pt;
-    double plain = 0.0;
-    for (int run = 0; run < kRuns; ++run) {
-        sampler::MonteCarloOptions mc;
-        mc.paths = 512;
-        mc.seed = uint64_t(run + 1);
-        mc.tracer.max_depth = kMaxDepth;
-        const light::VplSet vpls = sampler::MonteCarloSampler(s, accel, lights).generate(mc);
-        GatherOptions g;
-        g.width = g.height = kSize;
-        g.clamp = 0.0f;
-        g.max_depth = kMaxDepth;
-        g.chains.max_roughness = light::kDefaultChainRoughness;
-        g.chains.max_depth = kMaxDepth;
-        g.chain_seed = uint64_t(run + 1);
-        vpl.push_back(sheet_mean(gather_vpls(s, accel, vpls, g)));
-        if (run == 0) {
-            GatherOptions off = g;
-            off.chains.max_roughness = -1.0f;
-            plain = sheet_mean(gather_vpls(s, accel, vpls, off));
-        }
-        PathTracerOptions o;
-        o.width = o.height = kSize;
-        o.spp = 32;
-        o.max_depth = kMaxDepth;
-        o.seed = uint64_t(run + 1);
-        o.quiet = true;
-        pt.push_back(sheet_mean(PathTracer(s, accel, lights).render(o)));
-    }
-    const auto [vpl_mean, vpl_var] = mean_and_variance(vpl);
-    const auto [pt_mean, pt_var] = mean_and_variance(pt);
-    const double sigma = std::sqrt(vpl_var + pt_var);
+            return sum / std::max(n, 1);
+        });
+    const double sigma = m.sigma();
     std::printf(
         "wall through glass (thickness %.1f): oracle %.5f, path tracer %.5f, sigma %.5f, "
         "without chains %.5f\n",
-        double(thickness), vpl_mean, pt_mean, sigma, plain);
-    EXPECT_LT(std::abs(vpl_mean - pt_mean), 4.0 * sigma)
-        << "oracle " << vpl_mean << ", path tracer " << pt_mean << ", sigma " << sigma;
-    EXPECT_GT(pt_mean, 0.05);
-    EXPECT_LT(plain, 0.3 * pt_mean) << "without chains the glass should show no wall";
+        double(thickness), m.oracle.mean, m.tracer.mean, sigma, m.without_chains);
+    EXPECT_LT(std::abs(m.oracle.mean - m.tracer.mean), 4.0 * sigma)
+        << "oracle " << m.oracle.mean << ", path tracer " << m.tracer.mean << ", sigma " << sigma;
+    EXPECT_GT(m.tracer.mean, 0.05);
+    EXPECT_LT(m.without_chains, 0.3 * m.tracer.mean)
+        << "without chains the glass should show no wall";
 }
 
 TEST(GlassSlab, TheWallThroughAThinSheetMatchesThePathTracer) {

@@ -20,6 +20,7 @@
 #include "engine/trace/accel.h"
 #include "sampler/monte_carlo_sampler.h"
 #include "tests/support/mirror_box.h"
+#include "tests/support/oracle_against_tracer.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl::reference {
@@ -64,16 +65,6 @@ double sphere_pixels_mean(const scene::Scene& s, const Image& image, int size) {
         }
     }
     return sum / std::max(n, 1);
-}
-
-// The mean of independent runs and the variance of that mean.
-std::pair<double, double> stats(const std::vector<double>& v) {
-    double mean = 0.0, var = 0.0;
-    for (double x : v)
-        mean += x / double(v.size());
-    for (double x : v)
-        var += (x - mean) * (x - mean) / double(v.size() - 1);
-    return {mean, var / double(v.size())};
 }
 
 GatherOptions chain_gather(int size, int max_depth, float max_roughness) {
@@ -142,45 +133,21 @@ TEST(SpecularChain, AMirrorSphereUnderTheSkyReflectsFresnelTimesTheSky) {
 // path tracer's, converged (the same at 32768). That is the glossy VPL term of issue 15's item 2
 // (virtual spherical lights), not the chain.
 TEST(SpecularChain, AMirrorSphereInAColouredBoxMatchesThePathTracer) {
-    constexpr int kSize = 20;
-    constexpr int kRuns = 4;
-    constexpr int kMaxDepth = 3;
     const scene::Scene s = test::make_mirror_box();
-    const trace::Accel accel(s);
-    const light::LightSampler lights(s);
-
-    auto sphere_mean = [&](const Image& image) { return sphere_pixels_mean(s, image, kSize); };
-    std::vector<double> vpl, pt;
-    double plain = 0.0;
-    for (int run = 0; run < kRuns; ++run) {
-        sampler::MonteCarloOptions mc;
-        mc.paths = 4096;
-        mc.seed = uint64_t(run + 1);
-        mc.tracer.max_depth = kMaxDepth;
-        const light::VplSet vpls = sampler::MonteCarloSampler(s, accel, lights).generate(mc);
-        GatherOptions g = chain_gather(kSize, kMaxDepth, 0.1f);
-        g.chain_seed = uint64_t(run + 1);
-        vpl.push_back(sphere_mean(gather_vpls(s, accel, vpls, g)));
-        if (run == 0)
-            plain = sphere_mean(gather_vpls(s, accel, vpls, chain_gather(kSize, kMaxDepth, -1.0f)));
-        PathTracerOptions o;
-        o.width = o.height = kSize;
-        o.spp = 256;
-        o.max_depth = kMaxDepth;
-        o.seed = uint64_t(run + 1);
-        o.quiet = true;
-        pt.push_back(sphere_mean(PathTracer(s, accel, lights).render(o)));
-    }
-    const auto [vpl_mean, vpl_var] = stats(vpl);
-    const auto [pt_mean, pt_var] = stats(pt);
-    const double sigma = std::sqrt(vpl_var + pt_var);
-    RecordProperty("vpl_over_pt", std::to_string(vpl_mean / pt_mean));
+    test::OracleAgainstTracer setup;
+    setup.max_depth = 3;
+    setup.chain_roughness = 0.1f;
+    const test::OracleTracerMeans m = test::compare_oracle_with_tracer(
+        s, setup, [&](const Image& image) { return sphere_pixels_mean(s, image, setup.size); });
+    const double sigma = m.sigma();
+    RecordProperty("vpl_over_pt", std::to_string(m.oracle.mean / m.tracer.mean));
     std::printf("sphere: oracle %.5f, path tracer %.5f, sigma %.5f, oracle without chains %.5f\n",
-                vpl_mean, pt_mean, sigma, plain);
-    EXPECT_LT(std::abs(vpl_mean - pt_mean), 4.0 * sigma)
-        << "oracle " << vpl_mean << ", path tracer " << pt_mean << ", sigma " << sigma;
-    EXPECT_GT(pt_mean, 0.05);
-    EXPECT_LT(plain, 0.5 * pt_mean) << "without chains the mirror should be nearly black";
+                m.oracle.mean, m.tracer.mean, sigma, m.without_chains);
+    EXPECT_LT(std::abs(m.oracle.mean - m.tracer.mean), 4.0 * sigma)
+        << "oracle " << m.oracle.mean << ", path tracer " << m.tracer.mean << ", sigma " << sigma;
+    EXPECT_GT(m.tracer.mean, 0.05);
+    EXPECT_LT(m.without_chains, 0.5 * m.tracer.mean)
+        << "without chains the mirror should be nearly black";
 }
 
 // A BSDF sample never finds a punctual light, and a chained vertex is not lit by VPLs: the
@@ -191,9 +158,6 @@ TEST(SpecularChain, AMirrorSphereInAColouredBoxMatchesThePathTracer) {
 // σ 0.0048; without the point light's term the oracle's sphere loses the highlight (0.1516, 55σ
 // below).
 TEST(SpecularChain, AGlossySphereReflectsAPointLight) {
-    constexpr int kSize = 20;
-    constexpr int kRuns = 4;
-    constexpr int kMaxDepth = 2;
     scene::Scene s = test::make_mirror_box();
     s.materials[3].roughness = 0.15f;
     scene::Light point;
@@ -201,38 +165,21 @@ TEST(SpecularChain, AGlossySphereReflectsAPointLight) {
     point.position = Vec3(0.6f, 0.5f, 0.9f);
     point.intensity = Rgb(3.0f);
     s.lights.push_back(point);
-    const trace::Accel accel(s);
-    const light::LightSampler lights(s);
-    std::vector<double> vpl, pt;
-    for (int run = 0; run < kRuns; ++run) {
-        sampler::MonteCarloOptions mc;
-        mc.paths = 2048;
-        mc.seed = uint64_t(run + 1);
-        mc.tracer.max_depth = kMaxDepth;
-        const light::VplSet vpls = sampler::MonteCarloSampler(s, accel, lights).generate(mc);
-        GatherOptions g = chain_gather(kSize, kMaxDepth, 0.2f);
-        g.chain_seed = uint64_t(run + 1);
-        // 64 sub-pixel positions, rotated per run: the highlights are smaller than a pixel, and
-        // the runs' spread must see the quadrature's error over the pixel as well.
-        g.subpixel.rotation = subpixel_rotation(uint64_t(run + 1));
-        vpl.push_back(sphere_pixels_mean(s, gather_vpls(s, accel, vpls, g), kSize));
-        PathTracerOptions o;
-        o.width = o.height = kSize;
-        o.spp = 256;
-        o.max_depth = kMaxDepth;
-        o.seed = uint64_t(run + 1);
-        o.quiet = true;
-        pt.push_back(sphere_pixels_mean(s, PathTracer(s, accel, lights).render(o), kSize));
-    }
-    const auto [vpl_mean, vpl_var] = stats(vpl);
-    const auto [pt_mean, pt_var] = stats(pt);
-    const double sigma = std::sqrt(vpl_var + pt_var);
-    std::printf("glossy sphere, point light: oracle %.5f, path tracer %.5f, sigma %.5f\n", vpl_mean,
-                pt_mean, sigma);
+    test::OracleAgainstTracer setup;
+    setup.max_depth = 2;
+    // 64 sub-pixel positions, rotated per run: the highlights are smaller than a pixel, and the
+    // runs' spread must see the quadrature's error over the pixel as well.
+    setup.paths = 2048;
+    setup.rotate_subpixel = true;
+    const test::OracleTracerMeans m = test::compare_oracle_with_tracer(
+        s, setup, [&](const Image& image) { return sphere_pixels_mean(s, image, setup.size); });
+    const double sigma = m.sigma();
+    std::printf("glossy sphere, point light: oracle %.5f, path tracer %.5f, sigma %.5f\n",
+                m.oracle.mean, m.tracer.mean, sigma);
     // 4σ of the difference of two independent means (as the mirror test above).
-    EXPECT_LT(std::abs(vpl_mean - pt_mean), 4.0 * sigma)
-        << "oracle " << vpl_mean << ", path tracer " << pt_mean << ", sigma " << sigma;
-    EXPECT_GT(pt_mean, 0.02);
+    EXPECT_LT(std::abs(m.oracle.mean - m.tracer.mean), 4.0 * sigma)
+        << "oracle " << m.oracle.mean << ", path tracer " << m.tracer.mean << ", sigma " << sigma;
+    EXPECT_GT(m.tracer.mean, 0.02);
 }
 
 }  // namespace
