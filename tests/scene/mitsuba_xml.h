@@ -1,14 +1,18 @@
 #pragma once
 // Scenes for the Mitsuba loader's tests, written as XML files into a temporary folder.
+#include <unistd.h>
+
 #include <filesystem>
 #include <fstream>
 #include <string>
 
 namespace mvpl::scene::testing {
 
+// One folder per process: ctest runs each test as its own process, in parallel, and two tests
+// writing the same file name into one folder would read each other's scenes.
 inline std::filesystem::path mitsuba_temp_dir() {
-    const std::filesystem::path dir =
-        std::filesystem::temp_directory_path() / "mvpl_mitsuba_loader";
+    const std::filesystem::path dir = std::filesystem::temp_directory_path() /
+                                      ("mvpl_mitsuba_loader_" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     return dir;
 }

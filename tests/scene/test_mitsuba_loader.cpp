@@ -12,26 +12,21 @@
 #include "engine/core/error.h"
 #include "engine/core/image.h"
 #include "engine/scene/scene_loader.h"
+#include "tests/scene/mitsuba_xml.h"
 
 namespace mvpl::scene {
 namespace {
 
 namespace fs = std::filesystem;
 
+using testing::scene_xml;
+
 fs::path temp_dir() {
-    const fs::path dir = fs::temp_directory_path() / "mvpl_mitsuba_loader";
-    fs::create_directories(dir);
-    return dir;
+    return testing::mitsuba_temp_dir();
 }
 
 fs::path write(const std::string& name, const std::string& text) {
-    const fs::path p = temp_dir() / name;
-    std::ofstream(p) << text;
-    return p;
-}
-
-std::string scene_xml(const std::string& body, const std::string& version = "3.0.0") {
-    return "<scene version=\"" + version + "\">\n" + body + "\n</scene>\n";
+    return testing::write_file(name, text);
 }
 
 // A rectangle (corners (±1, ±1, 0)) under `transform`; the world position of its corner (1, 1).
