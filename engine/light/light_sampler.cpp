@@ -208,10 +208,16 @@ std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick
         return is_black(s.li) ? std::nullopt : std::optional<LightSample>(s);
     }
 
-    const scene::Light& light = m_scene.lights[e.light];
+    std::optional<LightSample> punctual = punctual_li(m_scene.lights[e.light], ref);
+    if (punctual) punctual->pdf = pick;
+    return punctual;
+}
+
+std::optional<LightSample> punctual_li(const scene::Light& light, const Vec3& ref) {
+    LightSample s;
     s.is_delta = true;
-    s.pdf = pick;
-    if (e.type == EmitterType::Directional) {
+    s.pdf = 1.0f;
+    if (light.type == scene::LightType::Directional) {
         s.wi = -light.direction;
         s.distance = std::numeric_limits<float>::infinity();
         s.li = light.intensity;
@@ -224,7 +230,7 @@ std::optional<LightSample> LightSampler::sample_li(const Vec3& ref, float u_pick
     s.distance = std::sqrt(dist2);
     s.wi = d / s.distance;
     s.li = light.intensity / dist2;
-    if (e.type == EmitterType::Spot)
+    if (light.type == scene::LightType::Spot)
         s.li *= spot_attenuation(light, glm::dot(light.direction, -s.wi));
     if (is_black(s.li)) return std::nullopt;
     return s;

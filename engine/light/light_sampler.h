@@ -108,4 +108,10 @@ private:
 // from the light to the receiver.
 float spot_attenuation(const scene::Light& light, float cos_angle);
 
+// What a punctual light sends to `ref`: li = intensity / d² (spot falloff included) or a
+// directional light's irradiance, wi towards the light, its distance (infinite for directional)
+// and position; is_delta, pdf 1. None where the light sits at ref, or a point or spot light
+// sends nothing there.
+std::optional<LightSample> punctual_li(const scene::Light& light, const Vec3& ref);
+
 }  // namespace mvpl::light

@@ -21,12 +21,45 @@
 namespace mvpl::render {
 namespace {
 
-using SpecularChainsTest = gpu::testing::GpuTest;
+struct OracleAndGpu {
+    Image oracle;
+    Image gpu;
+};
+
+class SpecularChainsTest : public gpu::testing::GpuTest {
+protected:
+    // The GPU image against the oracle's with chains, within the bound below; without chains the
+    // GPU image must be far from it (> 4 × the bound). Returns the two images with chains.
+    OracleAndGpu expect_gpu_equals_oracle_with_chains(const scene::Scene& s,
+                                                      const light::VplSet& vpls,
+                                                      const test::VplRenderSettings& settings,
+                                                      const char* what);
+};
 
 // The bound of tests/render/test_vpl_pipeline.cpp: GPU and oracle differ only where the shadow
 // cube's nearest texel decides visibility differently from Embree, a band of about 1.25 texel
 // angles (2/res each) around each shadow boundary: relMSE ≤ 1.25 · 2/res. The chains themselves
 // are the same paths on both sides (light::chain_rng), so they add nothing.
+OracleAndGpu SpecularChainsTest::expect_gpu_equals_oracle_with_chains(
+    const scene::Scene& s, const light::VplSet& vpls, const test::VplRenderSettings& settings,
+    const char* what) {
+    OracleAndGpu out{test::oracle_render(s, vpls, settings),
+                     test::gpu_render(context(), s, vpls, settings)};
+    const double bound = 1.25 * 2.0 / 256.0;  // the shadow-map band above, 256² faces
+    const double error = compare_images(out.gpu, out.oracle).rel_mse;
+    EXPECT_LT(error, bound) << what;
+    RecordProperty(std::string("relmse_") + what, std::to_string(error));
+    std::printf("GPU vs oracle with chains (%s): relMSE %.3g (bound %.3g)\n", what, error, bound);
+
+    test::VplRenderSettings plain = settings;
+    plain.chain_roughness = -1.0f;
+    const double without =
+        compare_images(test::gpu_render(context(), s, vpls, plain), out.oracle).rel_mse;
+    EXPECT_GT(without, 4.0 * bound) << what;
+    RecordProperty(std::string("relmse_without_chains_") + what, std::to_string(without));
+    return out;
+}
+
 TEST_F(SpecularChainsTest, TheGpuEqualsTheOracleOnAMirrorSphere) {
     const scene::Scene s = test::make_mirror_box();
     const light::VplSet vpls = test::monte_carlo_vpls(s, 256, 4, 5);
@@ -34,20 +67,7 @@ TEST_F(SpecularChainsTest, TheGpuEqualsTheOracleOnAMirrorSphere) {
     settings.chain_roughness = light::kDefaultChainRoughness;
     settings.chain_max_depth = 4;
     settings.chain_seed = 9;
-    const Image oracle = test::oracle_render(s, vpls, settings);
-    const Image gpu = test::gpu_render(context(), s, vpls, settings);
-    const double bound = 1.25 * 2.0 / 256.0;
-    const double error = compare_images(gpu, oracle).rel_mse;
-    EXPECT_LT(error, bound);
-    RecordProperty("relmse", std::to_string(error));
-    std::printf("GPU vs oracle with chains: relMSE %.3g (bound %.3g)\n", error, bound);
-
-    test::VplRenderSettings plain = settings;
-    plain.chain_roughness = -1.0f;
-    const double without =
-        compare_images(test::gpu_render(context(), s, vpls, plain), oracle).rel_mse;
-    EXPECT_GT(without, 4.0 * bound);
-    RecordProperty("relmse_without_chains", std::to_string(without));
+    const auto [oracle, gpu] = expect_gpu_equals_oracle_with_chains(s, vpls, settings, "mirror");
 
     // Interleaving is not applied where chains are traced (its filter would average the chains'
     // different ends), on the GPU and in the oracle alike: asked for, the images are the same.
@@ -68,20 +88,7 @@ TEST_F(SpecularChainsTest, TheGpuEqualsTheOracleThroughAGlassSheet) {
     settings.chain_roughness = light::kDefaultChainRoughness;
     settings.chain_max_depth = 3;
     settings.chain_seed = 3;
-    const Image oracle = test::oracle_render(s, vpls, settings);
-    const Image gpu = test::gpu_render(context(), s, vpls, settings);
-    const double bound = 1.25 * 2.0 / 256.0;
-    const double error = compare_images(gpu, oracle).rel_mse;
-    EXPECT_LT(error, bound);
-    RecordProperty("relmse", std::to_string(error));
-    std::printf("GPU vs oracle through glass: relMSE %.3g (bound %.3g)\n", error, bound);
-
-    test::VplRenderSettings plain = settings;
-    plain.chain_roughness = -1.0f;
-    const double without =
-        compare_images(test::gpu_render(context(), s, vpls, plain), oracle).rel_mse;
-    EXPECT_GT(without, 4.0 * bound);
-    RecordProperty("relmse_without_chains", std::to_string(without));
+    expect_gpu_equals_oracle_with_chains(s, vpls, settings, "glass");
 }
 
 // Leave out what a scene does not need: the Cornell box (diffuse) with chains asked for gets a
