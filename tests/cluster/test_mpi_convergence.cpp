@@ -203,10 +203,12 @@ TEST_F(MpiConvergence, FailingRankStopsEveryRank) {
                    "'; exit \\$c\"";
         };
         const std::string good = rank(kScene), bad = rank(path("missing.gltf"));
-        const Outcome r = run(std::string(MVPL_MPIRUN) + " -np 1 " + (failing == 0 ? bad : good) +
-                              " : -np 1 " + (failing == 0 ? good : bad));
+        // Without mpirun's abort on a non-zero exit, which raced with the surviving rank's own
+        // exit (test_mpi_render.cpp): every rank has to stop by itself; mpirun then exits 0.
+        const Outcome r =
+            run(std::string(MVPL_MPIRUN) + " --mca orte_abort_on_non_zero_status 0 -np 1 " +
+                (failing == 0 ? bad : good) + " : -np 1 " + (failing == 0 ? good : bad));
         EXPECT_NE(r.exit_code, 124) << "a rank hung";
-        EXPECT_EQ(r.exit_code, 2) << r.err;
         EXPECT_EQ(slurp(codes), "2\n2\n");
         size_t lines = 0;
         for (size_t at = r.err.find("mvpl: "); at != std::string::npos;

@@ -166,9 +166,13 @@ TEST_F(MpiRender, OtherCommandsAreRefusedAlike) {
 
 // `mpirun -np 1 A : -np 1 B` starts rank 0 with A and rank 1 with B: one of them names a scene
 // that does not exist. Each rank appends its exit code to a file.
+// By default mpirun kills the other ranks as soon as one exits non-zero, which raced with the
+// surviving rank's own exit: its code was written or not (one CI run in a few). Without that,
+// every rank has to stop by itself, which is the property tested; mpirun then exits 0.
+const std::string kKeepRanks = " --mca orte_abort_on_non_zero_status 0";
+
 void expect_all_exit_2(const Outcome& r, const std::string& codes_file) {
     EXPECT_NE(r.exit_code, 124) << "a rank hung";
-    EXPECT_EQ(r.exit_code, 2) << r.err;
     const std::string codes = slurp(codes_file);
     EXPECT_EQ(codes, "2\n2\n") << codes;
     // One line from mvpl (mpirun adds its own report of the exit code).
@@ -192,8 +196,9 @@ TEST_F(MpiRender, FailingRankStopsEveryRank) {
         const std::string codes = path("codes" + std::to_string(failing));
         const std::string good = rank_command(kScene, codes);
         const std::string bad = rank_command(path("missing.gltf"), codes);
-        const Outcome r = run(std::string(MVPL_MPIRUN) + " -np 1 " + (failing == 0 ? bad : good) +
-                              " : -np 1 " + (failing == 0 ? good : bad));
+        const Outcome r =
+            run(std::string(MVPL_MPIRUN) + kKeepRanks + " -np 1 " + (failing == 0 ? bad : good) +
+                " : -np 1 " + (failing == 0 ? good : bad));
         SCOPED_TRACE("failing rank " + std::to_string(failing));
         expect_all_exit_2(r, codes);
     }
