@@ -29,6 +29,8 @@
 
 namespace mvpl::light {
 
+class LightSampler;
+
 // Whether a surface with this BSDF, seen from wo (local), is continued rather than lit by VPLs:
 // one whose transmission carries at least half of what it scatters (KHR_materials_transmission:
 // VPLs cannot light through a surface), whatever its roughness; otherwise smooth enough, and its
@@ -59,10 +61,15 @@ struct ChainedReceiver {
 };
 
 // make_receiver, continued through glossy vertices with `rng`'s samples; `emitted` (optional)
-// receives the emitted radiance seen along the chain, weighted by its throughput.
+// receives the emitted radiance seen along the chain, weighted by its throughput. `lights`
+// (optional): the scene's light sampler, for one light sample per glossy vertex towards the
+// emitters a BSDF sample can find too (area lights, the environment), both weighted by the power
+// heuristic; without it they are found by the BSDF samples alone (unbiased, noisier for small
+// emitters in sharp lobes). The GPU renderer's chain layer and the oracle pass the same.
 ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Accel& accel,
                                       const trace::Ray& camera_ray, Rng& rng,
-                                      const ChainOptions& options, Rgb* emitted = nullptr);
+                                      const ChainOptions& options, Rgb* emitted = nullptr,
+                                      const LightSampler* lights = nullptr);
 
 // The generator of a pixel's chain at one sub-pixel position: the same on the CPU oracle and
 // for the GPU renderer's chain layer, so both follow the same paths.

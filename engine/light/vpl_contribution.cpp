@@ -57,7 +57,7 @@ PreparedVpl prepare_vpl(const Vpl& vpl) {
 
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
                                       const trace::Ray& ray, Rgb* emitted, bool from_camera,
-                                      bool transmissive_back) {
+                                      bool transmissive_back, EmitterHit* emitter) {
     const std::optional<trace::Hit> hit =
         from_camera ? accel.intersect_camera(ray) : accel.intersect(ray);
     if (!hit) {
@@ -74,6 +74,7 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
         point.uv1 = si.uv1;
         point.color = si.color;
         *emitted += accel.materials().emission(si.material, point);
+        if (emitter) *emitter = EmitterHit{si.mesh, si.triangle, si.p, si.ng};
     }
     Receiver r{trace::make_shading_point(accel.materials(), si), Vec3(0.0f, 0.0f, 1.0f)};
     r.wo = r.sp.frame.to_local(-glm::normalize(ray.direction));

@@ -35,9 +35,18 @@ struct Receiver {
 // back faces of one-sided materials (Accel::intersect_camera); a ray continued from a surface
 // (light/specular_chain.h) does not. `transmissive_back`: a transmissive surface seen from below
 // is returned too (wo.z < 0), for the specular chains to continue through it.
+// `emitter` (optional) receives where the emitted radiance was found on an emissive surface
+// (mesh −1: on none, e.g. the environment), for weighting it against light sampling.
+struct EmitterHit {
+    int mesh = -1;
+    int triangle = -1;
+    Vec3 p{0.0f};
+    Vec3 ng{0.0f};  // the front face's geometric normal
+};
 std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Accel& accel,
                                       const trace::Ray& ray, Rgb* emitted = nullptr,
-                                      bool from_camera = true, bool transmissive_back = false);
+                                      bool from_camera = true, bool transmissive_back = false,
+                                      EmitterHit* emitter = nullptr);
 
 // One VPL's contribution to one receiver (vpl.h), Embree visibility included; d_min2 = d_min².
 // vsl_r2 = r², the squared radius of the virtual spherical lights that area and surface VPLs

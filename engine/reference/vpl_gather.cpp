@@ -7,6 +7,7 @@
 #include "engine/core/parallel.h"
 #include "engine/core/progress.h"
 #include "engine/core/timer.h"
+#include "engine/light/light_sampler.h"
 #include "engine/light/vpl_contribution.h"
 #include "engine/reference/interleaved_gather.h"
 #include "engine/scene/camera.h"
@@ -27,6 +28,7 @@ struct Gather {
     float d_min2;
     bool show_emitters;
     float vsl_r2;
+    const light::LightSampler* lights;  // for the chains' light samples (specular_chain.h)
 };
 
 // The pixel (x, y): per sub-pixel position a camera ray, the emitted radiance if the position is
@@ -56,7 +58,7 @@ Rgb shade_pixel(const Gather& g, int x, int y) {
         Rng rng = light::chain_rng(g.options.chain_seed,
                                    uint64_t(y) * uint64_t(g.options.width) + uint64_t(x), p);
         const light::ChainedReceiver chained = light::make_chained_receiver(
-            g.scene, g.accel, ray, rng, g.options.chains, emission ? &emitted : nullptr);
+            g.scene, g.accel, ray, rng, g.options.chains, emission ? &emitted : nullptr, g.lights);
         if (emission) emitted += chained.chain_emitted;
         if (chained.receiver) {
             DVec3 part(0.0);
@@ -84,6 +86,8 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
         prepared.push_back(light::prepare_vpl(v));
     const float d_min = options.clamp * scene.bounds().diagonal();
     const float vsl_radius = options.vsl_radius * scene.bounds().diagonal();
+    std::optional<light::LightSampler> lights;
+    if (light::scene_may_chain(scene, options.chains)) lights.emplace(scene);
     const Gather g{scene,
                    accel,
                    prepared,
@@ -91,7 +95,8 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
                    vpls.scale,
                    d_min * d_min,
                    options.max_depth < 0 || options.max_depth >= 1,
-                   vsl_radius * vsl_radius};
+                   vsl_radius * vsl_radius,
+                   lights ? &*lights : nullptr};
     // Interleaved: the pixels shade the emission alone (an empty list after all of them, so
     // that it is averaged over the same positions) and the filtered VPL sum is added.
     // As the GPU renderer: not where specular chains are traced (render/vpl_renderer.h).
@@ -100,8 +105,8 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
     const std::vector<light::PreparedVpl> none;
     GatherOptions emission_only = options;
     emission_only.first_vpl = options.first_vpl + prepared.size();
-    const Gather ge{scene,    accel,           none,    emission_only, vpls.scale,
-                    g.d_min2, g.show_emitters, g.vsl_r2};
+    const Gather ge{scene,    accel,           none,     emission_only, vpls.scale,
+                    g.d_min2, g.show_emitters, g.vsl_r2, g.lights};
     Image image(options.width, options.height);
     Progress progress("vpl gather", options.height, options.quiet);
     parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {

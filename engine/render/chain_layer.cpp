@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "engine/core/parallel.h"
+#include "engine/light/light_sampler.h"
 #include "engine/light/specular_chain.h"
 #include "engine/material/closure.h"
 #include "engine/scene/camera.h"
@@ -53,6 +54,7 @@ ChainLayer::ChainLayer(gpu::Context& context, const scene::Scene& scene, const t
                        uint32_t width, uint32_t height)
     : m_scene(scene),
       m_accel(accel),
+      m_lights(std::make_unique<light::LightSampler>(scene)),
       m_width(width),
       m_height(height),
       m_records(context, uint64_t(width) * height * sizeof(ChainRecord), gpu::BufferUsage::storage,
@@ -73,7 +75,8 @@ void ChainLayer::trace(const scene::Camera& camera, Vec2 offset, uint64_t positi
                     scene::generate_camera_ray(camera, int(m_width), int(m_height), film);
                 Rng rng = light::chain_rng(seed, pixel, position);
                 const light::ChainedReceiver c = light::make_chained_receiver(
-                    m_scene, m_accel, trace::Ray{cr.origin, cr.direction}, rng, options);
+                    m_scene, m_accel, trace::Ray{cr.origin, cr.direction}, rng, options, nullptr,
+                    m_lights.get());
                 // A pixel whose first vertex is rough keeps the G-buffer's receiver.
                 const ChainRecord r = c.continued ? to_record(c) : ChainRecord{};
                 std::memcpy(&records[pixel], &r, sizeof(r));

@@ -20,6 +20,9 @@ class Context;
 namespace mvpl::trace {
 class Accel;
 }
+namespace mvpl::light {
+class LightSampler;
+}
 
 namespace mvpl::render {
 
@@ -44,6 +47,8 @@ public:
 private:
     const scene::Scene& m_scene;
     const trace::Accel& m_accel;
+    // For the chains' light samples at glossy vertices, as the oracle's (specular_chain.h).
+    std::unique_ptr<const light::LightSampler> m_lights;
     uint32_t m_width;
     uint32_t m_height;
     gpu::Buffer m_records;  // host-visible ChainRecord per pixel

@@ -182,5 +182,71 @@ TEST(SpecularChain, AGlossySphereReflectsAPointLight) {
     EXPECT_GT(m.tracer.mean, 0.02);
 }
 
+// A small area light in a glossy mirror (roughness 0.15, α = 0.0225: the reflected lobe about
+// 0.09 rad wide, the light 0.05 m across at ~1.5 m, 0.03 rad) is a target that the chain's BSDF
+// samples find rarely; its light samples, weighted against them by the power heuristic
+// (specular_chain.cpp, sampled_light), find it at every vertex. Both estimators of the light the
+// sphere reflects are unbiased, so their means over 96 runs agree within 4σ of the difference,
+// and the light samples must cut the run-to-run variance of the sphere's mean by at least 4×
+// (measured over 960 runs: 0.0678 and 0.0616, variances 0.0030 and 0.058, 19×; a light 0.02 m
+// across was never hit by 670 000 BSDF samples). On assets/glossy one pixel of the gold sphere
+// read 0.02 or 40 times the path tracer without them.
+TEST(SpecularChain, LightSamplesFindASmallAreaLightInAGlossyMirror) {
+    scene::Scene s = test::make_mirror_box();
+    constexpr float kSide = 0.05f;  // the box's light is 0.6 m across: the same power
+    s.materials[3].roughness = 0.15f;
+    s.materials[4].emissive = Rgb(8.0f * (0.6f / kSide) * (0.6f / kSide));
+    s.meshes[5] = test::make_quad(Vec3(-0.5f * kSide, 0.99f, -0.5f * kSide), Vec3(kSide, 0, 0),
+                                  Vec3(0, 0, kSide), 4);
+    const trace::Accel accel(s);
+    const light::LightSampler lights(s);
+    light::ChainOptions options;
+    options.max_roughness = light::kDefaultChainRoughness;
+    options.max_depth = 2;  // direct light only: what the chain meets is all it adds
+    constexpr int kSize = 32, kRuns = 96;
+    struct Stats {
+        double sum = 0.0, sum2 = 0.0;
+        void add(double v) {
+            sum += v;
+            sum2 += v * v;
+        }
+        double mean() const { return sum / kRuns; }
+        double variance() const { return (sum2 - sum * sum / kRuns) / (kRuns - 1); }
+    };
+    Stats with, without;
+    for (int run = 0; run < kRuns; ++run) {
+        double a = 0.0, b = 0.0;
+        int n = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                if (!sphere_normal(s.camera, kSize, x, y, test::kMirrorSphereRadius)) continue;
+                const scene::CameraRay cr = scene::generate_camera_ray(
+                    s.camera, kSize, kSize, Vec2(float(x) + 0.5f, float(y) + 0.5f));
+                const trace::Ray ray{cr.origin, cr.direction};
+                const uint64_t pixel = uint64_t(y * kSize + x);
+                Rng ra = light::chain_rng(uint64_t(run), pixel, 0);
+                Rng rb = light::chain_rng(uint64_t(run), pixel, 0);
+                a += luminance(
+                    light::make_chained_receiver(s, accel, ray, ra, options, nullptr, &lights)
+                        .chain_emitted);
+                b += luminance(
+                    light::make_chained_receiver(s, accel, ray, rb, options).chain_emitted);
+                ++n;
+            }
+        }
+        ASSERT_GT(n, 100);
+        with.add(a / n);
+        without.add(b / n);
+    }
+    const double sigma = std::sqrt((with.variance() + without.variance()) / kRuns);
+    std::printf(
+        "small light in a glossy mirror: with light samples %.5f (var %.3g), BSDF samples "
+        "alone %.5f (var %.3g)\n",
+        with.mean(), with.variance(), without.mean(), without.variance());
+    EXPECT_GT(with.mean(), 0.01);
+    EXPECT_LT(std::abs(with.mean() - without.mean()), 4.0 * sigma);
+    EXPECT_LT(with.variance(), 0.25 * without.variance());
+}
+
 }  // namespace
 }  // namespace mvpl::reference
