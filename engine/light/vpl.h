@@ -16,7 +16,12 @@
 // whatever a bump or normal map makes n' face (light::vpl_contribution, the GPU's shading pass).
 // For Area and Surface VPLs, virtual spherical lights of radius r (light/virtual_sphere.h; r = 0
 // with --no-vsl): the GGX lobes of f_r and f_j are evaluated with α widened to
-// √(α² + r²/(4 max(d², r²))), their integral over the sphere in closed form. `power` holds the
+// √(α² + r²/(4 max(d², r²))), their integral over the sphere in closed form, and the clamp
+// applies lobe by lobe (issue 15): with f_r = D_r + G_r and f_j = D_j + G_j split into diffuse
+// and glossy lobes (Bsdf::eval_diffuse; an Area VPL's emission is diffuse, D_j = 1), only
+// D_r·D_j keeps max(d², d_min²), and f_r·f_j − D_r·D_j, bounded by the widened lobes, is divided
+// by max(d², min(r², d_min²)) (shared::vsl_glossy_d2). With r = 0 or d_min = 0 the formulas above
+// hold as written. `power` holds the
 // path throughput divided by all sampling densities, NOT by the number of light paths (or chain
 // steps): that factor is the VplSet's `scale`, carried beside the VPLs, so that a sampler run
 // progressively never needs to know its final length. An image is scale · Σ contributions (+ the

@@ -12,8 +12,10 @@ namespace {
 
 // The VPL's own factor towards the receiver: spot(axis·ω), max(0, n_j·ω) or
 // f_j(ω_in, ω)·max(0, n_j·ω) (vpl.h), ω the unit direction from the VPL to the receiver; f_j's
-// lobe integrated over the virtual sphere of spread s² = spread2 (virtual_sphere.h).
-Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w, float spread2) {
+// lobe integrated over the virtual sphere of spread s² = spread2 (virtual_sphere.h). `diffuse`,
+// if given, receives the part through f_j's diffuse lobe alone (all of an area VPL's factor,
+// whose emission counts as diffuse).
+Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w, float spread2, Rgb* diffuse = nullptr) {
     const Vpl& v = *pv.vpl;
     switch (v.type) {
         case VplType::Point:
@@ -24,12 +26,16 @@ Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w, float spread2) {
             const float t = std::clamp((glm::dot(v.normal, w) - v.cos_outer) * scale, 0.0f, 1.0f);
             return Rgb(t * t);
         }
-        case VplType::Area:
-            return Rgb(std::max(0.0f, glm::dot(v.normal, w)));
+        case VplType::Area: {
+            const Rgb f(std::max(0.0f, glm::dot(v.normal, w)));
+            if (diffuse) *diffuse = f;
+            return f;
+        }
         case VplType::Surface: {
             const float cos_j = glm::dot(v.normal, w);
             if (!(cos_j > 0.0f)) return Rgb(0.0f);
             const Vec3 w_local = pv.frame.to_local(w);
+            if (diffuse) *diffuse = pv.bsdf->eval_diffuse(pv.wi_local, w_local) * cos_j;
             if (spread2 > 0.0f && !v.closure.is_lambertian()) {
                 const material::Bsdf widened(widen_closure(v.closure, spread2));
                 return widened.eval(pv.wi_local, w_local) * cos_j;
@@ -91,6 +97,10 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
     float inv_d2 = 1.0f;
     Rgb factor(1.0f);
     float spread2 = 0.0f;  // of the virtual sphere, for both lobes (virtual_sphere.h)
+    // A VSL pair with a glossy lobe in it, clamped lobe by lobe (lobe_clamp): its diffuse part.
+    bool by_lobe = false;
+    Rgb factor_diffuse(0.0f);
+    float inv_glossy_d2 = 1.0f;
     if (v.type == VplType::Directional) {
         to_light = -v.normal;
     } else {
@@ -100,7 +110,10 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
         to_light = d / std::sqrt(dist2);
         inv_d2 = 1.0f / std::max(dist2, d_min2);
         if (is_spherical(v.type)) spread2 = shared::vsl_spread2(vsl_r2, dist2);
-        factor = emitter_factor(pv, -to_light, spread2);
+        by_lobe = spread2 > 0.0f && d_min2 > 0.0f &&
+                  (sp.bsdf.has_glossy() || (v.type == VplType::Surface && pv.bsdf->has_glossy()));
+        if (by_lobe) inv_glossy_d2 = 1.0f / shared::vsl_glossy_d2(dist2, vsl_r2, d_min2);
+        factor = emitter_factor(pv, -to_light, spread2, by_lobe ? &factor_diffuse : nullptr);
     }
     if (is_black(factor)) return Rgb(0.0f);
     if (!(glm::dot(to_light, sp.ng) > 0.0f)) return Rgb(0.0f);  // below the geometric surface
@@ -111,7 +124,16 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
             ? material::Bsdf(widen_closure(sp.bsdf.params(), spread2)).eval(receiver.wo, wi)
             : sp.bsdf.eval(receiver.wo, wi);
     if (is_black(f)) return Rgb(0.0f);
-    const Rgb c = v.power * f * factor * (wi.z * inv_d2);
+    Rgb c;
+    if (by_lobe) {
+        // The diffuse × diffuse product clamped by d_min, the rest (every product with a widened
+        // glossy lobe) by the sphere (shared::vsl_glossy_d2).
+        const Rgb diffuse = sp.bsdf.eval_diffuse(receiver.wo, wi) * factor_diffuse;
+        const Rgb glossy = glm::max(f * factor - diffuse, Rgb(0.0f));
+        c = v.power * (diffuse * (wi.z * inv_d2) + glossy * (wi.z * inv_glossy_d2));
+    } else {
+        c = v.power * f * factor * (wi.z * inv_d2);
+    }
     if (is_black(c)) return Rgb(0.0f);
     const bool on_surface = v.type == VplType::Area || v.type == VplType::Surface;
     const trace::Ray shadow =

@@ -51,7 +51,8 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
 // One VPL's contribution to one receiver (vpl.h), Embree visibility included; d_min2 = d_min².
 // vsl_r2 = r², the squared radius of the virtual spherical lights that area and surface VPLs
 // become (virtual_sphere.h): their glossy lobes and the receiver's are integrated over the
-// sphere; 0 shades point VPLs.
+// sphere, and a pair with a glossy lobe in it is clamped lobe by lobe (vpl.h); 0 shades point
+// VPLs.
 Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const PreparedVpl& pv,
                      float d_min2, float vsl_r2 = 0.0f);
 

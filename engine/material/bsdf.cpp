@@ -95,11 +95,7 @@ Rgb Bsdf::eval_oriented(const Oriented& o, const Vec3& wi, Transport mode) const
         if (m_lambertian) return lambertian_eval(m_base_color, wo, wi);
         // f = (1 − m)·(w_d·base/π + F_d·DV) + m·F_c·DV, the microfacet term D·V shared by both
         // layers.
-        Rgb f(0.0f);
-        if (m_has_diffuse) {
-            const float w_d = (1.0f - macro_fresnel(wo.z, o)) * (1.0f - macro_fresnel(wi.z, o));
-            f += (1.0f - m_metallic) * w_d * lambertian_eval(m_base_color, wo, wi);
-        }
+        Rgb f = eval_diffuse_oriented(o, wi);
         if (m_has_specular) {
             if (const std::optional<MicrofacetReflection> r = ggx_reflection(wo, wi, m_alpha))
                 f += reflection_fresnel(r->cos_oh, o) * r->dv;
@@ -114,6 +110,44 @@ Rgb Bsdf::eval_oriented(const Oriented& o, const Vec3& wi, Transport mode) const
     // Walter et al.'s η_o² is radiance's; the adjoint has η_i² (Veach 1997, eq. 5.19).
     if (mode == Transport::Importance && !o.side.thin()) f *= sqr(o.side.eta_t / o.side.eta_o);
     return f;
+}
+
+Rgb Bsdf::eval_diffuse(const Vec3& wo, const Vec3& wi) const {
+    const std::optional<Oriented> o = orient(wo);
+    if (!o) return Rgb(0.0f);
+    return eval_diffuse_oriented(*o, o->flip > 0.0f ? wi : mirror_z(wi));
+}
+
+Rgb Bsdf::eval_diffuse_oriented(const Oriented& o, const Vec3& wi) const {
+    const Vec3& wo = o.wo;
+    if (!(wi.z > 0.0f)) return Rgb(0.0f);
+    if (m_lambertian) return lambertian_eval(m_base_color, wo, wi);
+    if (!m_has_diffuse) return Rgb(0.0f);
+    const float w_d = (1.0f - macro_fresnel(wo.z, o)) * (1.0f - macro_fresnel(wi.z, o));
+    return (1.0f - m_metallic) * w_d * lambertian_eval(m_base_color, wo, wi);
+}
+
+float Bsdf::pdf_diffuse(const Vec3& wo, const Vec3& wi) const {
+    if (!m_lambertian && !m_has_diffuse) return 0.0f;
+    const std::optional<Oriented> o = orient(wo);
+    if (!o) return 0.0f;
+    const Vec3 w = o->flip > 0.0f ? wi : mirror_z(wi);
+    return w.z > 0.0f ? lambertian_pdf(o->wo, w) : 0.0f;
+}
+
+std::optional<BsdfSample> Bsdf::sample_diffuse(const Vec3& wo, const Vec2& u,
+                                               float /*u_lobe*/) const {
+    if (!m_lambertian && !m_has_diffuse) return std::nullopt;
+    const std::optional<Oriented> o = orient(wo);
+    if (!o) return std::nullopt;
+    // As sample() does when it picks the diffuse lobe.
+    const Vec3 wi = sample_cosine_hemisphere(u);
+    if (!(wi.z > 0.0f)) return std::nullopt;
+    const float density = lambertian_pdf(o->wo, wi);
+    if (!(density > 0.0f)) return std::nullopt;
+    const Rgb weight = eval_diffuse_oriented(*o, wi) * (std::abs(wi.z) / density);
+    if (!is_finite(weight)) return std::nullopt;
+    return BsdfSample{o->flip > 0.0f ? wi : mirror_z(wi), weight, density};
 }
 
 float Bsdf::specular_probability(const Vec3& wo) const {

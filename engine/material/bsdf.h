@@ -45,6 +45,22 @@ public:
     explicit Bsdf(const ClosureParams& params);
 
     Rgb eval(const Vec3& wo, const Vec3& wi, Transport mode = Transport::Radiance) const;
+    // The diffuse lobe of eval alone: the Lambertian base under its Fresnel weight,
+    // (1 − metallic)·w_d·base/π (all of f for a Lambertian closure); eval minus this is the
+    // microfacet reflection and transmission. It does not depend on the roughness, so a widened
+    // closure (light/virtual_sphere.h) has the same diffuse lobe. Clamping lobe by lobe
+    // (light/vpl_contribution.h) and its compensation (reference/clamp_compensation.h) use it.
+    Rgb eval_diffuse(const Vec3& wo, const Vec3& wi) const;
+    // The diffuse lobe alone as a BSDF of its own, sampled with its cosine density: pdf_diffuse
+    // is that density (0 where the lobe is absent), sample_diffuse's weight is
+    // eval_diffuse·|cos θi|/pdf_diffuse. u_lobe is ignored (as a Lambertian sample() ignores
+    // it): on a Lambertian closure both are pdf and sample exactly, so that lobe-restricted
+    // estimators reproduce the full ones bit for bit on diffuse scenes.
+    float pdf_diffuse(const Vec3& wo, const Vec3& wi) const;
+    std::optional<BsdfSample> sample_diffuse(const Vec3& wo, const Vec2& u,
+                                             float u_lobe = 0.0f) const;
+    // Whether some lobe besides the diffuse one can be non-zero.
+    bool has_glossy() const { return m_has_specular; }
     float pdf(const Vec3& wo, const Vec3& wi) const;
     // u_lobe picks the lobe (and reflection or transmission at the sampled facet); u samples the
     // direction within it.
@@ -74,6 +90,7 @@ private:
     // max_value(F) of the macro-surface at cos θ, what weights the diffuse base.
     float macro_fresnel(float cos_theta, const Oriented& o) const;
     Rgb eval_oriented(const Oriented& o, const Vec3& wi, Transport mode) const;
+    Rgb eval_diffuse_oriented(const Oriented& o, const Vec3& wi) const;
     float pdf_oriented(const Oriented& o, const Vec3& wi) const;
 
     ClosureParams m_params;  // as given

@@ -178,10 +178,11 @@ vec3 dielectric_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
     return metal_rough_eval(d, n, wo, wi);
 }
 )"},
-    {"metal_rough_eval",
-     {"Closure", "roughness_to_alpha", "f0_from_ior", "dielectric_helpers"},
-     R"(// bsdf.cpp, Bsdf::eval with the derived members of its constructor.
-vec3 metal_rough_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
+    {"metal_rough_diffuse_eval",
+     {"Closure", "f0_from_ior", "dielectric_helpers"},
+     R"(// bsdf.cpp, Bsdf::eval_diffuse: the diffuse lobe of metal_rough_eval alone (all of a
+// Lambertian closure's f, none of a conductor's); independent of the roughness.
+vec3 metal_rough_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
     const float co = dot(n, wo);
     const float ci = dot(n, wi);
     if (co <= 0.0 || ci <= 0.0) return vec3(0.0);
@@ -190,15 +191,26 @@ vec3 metal_rough_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
     const vec3 f0 = min(f0_from_ior(c.ior) * c.specular_color, vec3(1.0)) * c.specular;
     const float f90 = c.specular;
     const float f0_max = max_component(f0);
+    const bool has_diffuse = c.metallic < 1.0 && max_component(c.base_color) > 0.0 && f0_max < 1.0;
+    if (!has_diffuse) return vec3(0.0);
+    const float w_d = (1.0 - fresnel_schlick(f0_max, f90, co)) *
+                      (1.0 - fresnel_schlick(f0_max, f90, ci));
+    return (1.0 - c.metallic) * w_d * (c.base_color * kInvPi);
+}
+)"},
+    {"metal_rough_eval",
+     {"Closure", "roughness_to_alpha", "metal_rough_diffuse_eval", "dielectric_helpers"},
+     R"(// bsdf.cpp, Bsdf::eval with the derived members of its constructor.
+vec3 metal_rough_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
+    const float co = dot(n, wo);
+    const float ci = dot(n, wi);
+    if (co <= 0.0 || ci <= 0.0) return vec3(0.0);
+    if (c.metallic <= 0.0 && c.specular <= 0.0) return c.base_color * kInvPi;
+    const vec3 f0 = min(f0_from_ior(c.ior) * c.specular_color, vec3(1.0)) * c.specular;
+    const float f90 = c.specular;
     const float alpha = roughness_to_alpha(c.roughness);
     const bool has_specular = c.metallic > 0.0 || f90 > 0.0;
-    const bool has_diffuse = c.metallic < 1.0 && max_component(c.base_color) > 0.0 && f0_max < 1.0;
-    vec3 f = vec3(0.0);
-    if (has_diffuse) {
-        const float w_d = (1.0 - fresnel_schlick(f0_max, f90, co)) *
-                          (1.0 - fresnel_schlick(f0_max, f90, ci));
-        f += (1.0 - c.metallic) * w_d * (c.base_color * kInvPi);
-    }
+    vec3 f = metal_rough_diffuse_eval(c, n, wo, wi);
     float dv, cos_oh;
     if (has_specular && ggx_reflection(n, wo, wi, alpha, dv, cos_oh)) {
         const vec3 fresnel = (1.0 - c.metallic) * fresnel_schlick(f0, vec3(f90), cos_oh) +

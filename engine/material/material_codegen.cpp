@@ -90,6 +90,17 @@ std::string generate_closure_eval(const std::array<bool, kClosureTypeCount>& typ
         }
     }
     dispatch += "}\n";
+    // With a glossy type: the diffuse lobe alone (Bsdf::eval_diffuse), for the lobe-wise clamp
+    // of the shading pass. A Lambertian-only scene's code stays as it was.
+    if (last > 0) {
+        module.require("metal_rough_diffuse_eval");
+        dispatch +=
+            "// The diffuse lobe of closure_eval alone (Bsdf::eval_diffuse).\n"
+            "vec3 closure_eval_diffuse(Closure c, vec3 n, vec3 wo, vec3 wi) {\n";
+        if (types[size_t(ClosureType::Conductor)])
+            dispatch += "    if (c.type == 1u) return vec3(0.0);\n";
+        dispatch += "    return metal_rough_diffuse_eval(c, n, wo, wi);\n}\n";
+    }
     module.require("max_component");
     if (emitted) *emitted = module.functions();
     return module.code() + dispatch;

@@ -83,7 +83,10 @@ struct ClampCompensation::Impl {
         Rgb out = punctual_part(*r);
         const float u_lobe = rng.next_float();
         const Vec2 u(rng.next_float(), rng.next_float());
-        const std::optional<material::BsdfSample> bs = r->sp.bsdf.sample(r->wo, u, u_lobe);
+        // Lobe by lobe (VSLs): f_D from its own density, L_D beyond (clamp_compensation.h).
+        const bool by_lobe = options.vsl_radius > 0.0f;
+        const std::optional<material::BsdfSample> bs =
+            by_lobe ? r->sp.bsdf.sample_diffuse(r->wo, u) : r->sp.bsdf.sample(r->wo, u, u_lobe);
         if (!bs) return out;
         const Vec3 wi_world = glm::normalize(r->sp.frame.to_world(bs->wi));
         if (glm::dot(wi_world, r->sp.ng) <= 0.0f) return out;
@@ -94,7 +97,8 @@ struct ClampCompensation::Impl {
         // The path tracer goes on from the receiver: one segment fewer than the whole path.
         const int depth = options.max_depth < 0 ? -1 : options.max_depth - 1;
         const Rgb L =
-            path_tracer.radiance(ray, rng, depth, std::max(1, options.rr_depth - 1), false);
+            path_tracer.radiance(ray, rng, depth, std::max(1, options.rr_depth - 1), false,
+                                 by_lobe ? FirstVertex::DiffuseLobe : FirstVertex::AllLobes);
         return out + bs->weight * L * missing(hit->t);
     }
 

@@ -15,11 +15,25 @@
 // finds nothing nearer costs one short ray. Point and spot lights nearer than d_min, which no BSDF
 // sample can hit, are compensated by evaluating them: I · (1/d² − 1/d_min²) with exact visibility.
 // Clamped VPL image + C is unbiased, whatever the clamp (tests/reference/test_clamp_compensation).
+//
+// With virtual spherical lights (vsl_radius > 0) the VPL estimate clamps lobe by lobe
+// (light/vpl_contribution.h): only the product of the receiver's diffuse lobe f_D and the VPL's
+// diffuse lobe (or an emitter VPL's emission) keeps max(d², d_min²). C then adds back that
+// product's share alone,
+//
+//     C(x) = ∫ f_D(x, ω, ωo) L_D(y(ω) → x) cos θ · max(0, 1 − d(ω)²/d_min²) dω,
+//
+// L_D the radiance leaving y through its diffuse lobe, plus its emission (PathTracer with
+// FirstVertex::DiffuseLobe), sampled from f_D's cosine density: the glossy products, which the
+// estimate no longer clamps at d_min, would otherwise be counted twice. Punctual lights keep the
+// full clamp, and their part stays as above. A Lambertian scene gets the same numbers either
+// way (Bsdf::sample_diffuse).
 #include <cstdint>
 #include <memory>
 
 #include "engine/core/image.h"
 #include "engine/light/light_sampler.h"
+#include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
@@ -30,7 +44,10 @@ struct CompensationOptions {
     int width = 256;
     int height = 256;
     float clamp = light::kDefaultClamp;  // d_min as a fraction of the scene's diagonal
-    int max_depth = 6;                   // of the whole path, camera included; < 0: unlimited
+    // The VPL image's virtual spherical lights (scene diagonals, light/virtual_sphere.h); 0
+    // (--no-vsl): the whole BSDF is clamped and compensated.
+    float vsl_radius = light::kDefaultVslRadius;
+    int max_depth = 6;  // of the whole path, camera included; < 0: unlimited
     int rr_depth = 5;
     uint64_t seed = 0;
     // Pass i of this object is pass first_pass + i · pass_stride of the sequence the seed defines:

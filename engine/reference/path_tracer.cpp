@@ -27,7 +27,7 @@ Vec2 next_2d(Rng& rng) {
 }  // namespace
 
 Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, int rr_depth,
-                         bool from_camera) const {
+                         bool from_camera, FirstVertex first) const {
     const bool unlimited = max_depth < 0;
     Rgb L(0.0f);
     Rgb throughput(1.0f);
@@ -75,23 +75,31 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
         // Seen from below the shading surface: black, unless it transmits (bsdf.h, "Sides").
         if (!(wo.z > 0.0f) && !sp.bsdf.transmits()) break;
 
+        // The first vertex restricted to its diffuse lobe: light sample, BSDF sample and the MIS
+        // weights between them all of that lobe alone.
+        const bool diffuse_only = depth == 1 && first == FirstVertex::DiffuseLobe;
+
         // Next-event estimation: one light sample, the path gets one more segment.
         if (const auto ls = m_lights.sample_li(sp.p, rng.next_float(), next_2d(rng))) {
             const Vec3 wi = sp.frame.to_local(ls->wi);
-            const Rgb f = sp.bsdf.eval(wo, wi);
+            const Rgb f = diffuse_only ? sp.bsdf.eval_diffuse(wo, wi) : sp.bsdf.eval(wo, wi);
             if (!is_black(f) && trace::same_side(ls->wi, sp.ng, wi.z)) {
                 const trace::Ray shadow = std::isinf(ls->distance)
                                               ? trace::spawn_ray(sp.p, sp.ng, ls->wi)
                                               : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n);
                 if (!m_accel.occluded(shadow)) {
-                    const float weight =
-                        ls->is_delta ? 1.0f : power_heuristic(ls->pdf, sp.bsdf.pdf(wo, wi));
+                    const float bsdf_pdf =
+                        diffuse_only ? sp.bsdf.pdf_diffuse(wo, wi) : sp.bsdf.pdf(wo, wi);
+                    const float weight = ls->is_delta ? 1.0f : power_heuristic(ls->pdf, bsdf_pdf);
                     L += throughput * f * std::abs(wi.z) * ls->li * (weight / ls->pdf);
                 }
             }
         }
 
-        const auto bs = sp.bsdf.sample(wo, next_2d(rng), rng.next_float());
+        // The same call shape for both (sample_diffuse ignores u_lobe): the numbers are drawn in
+        // the same order, so that the two agree bit for bit on Lambertian vertices.
+        const auto bs = diffuse_only ? sp.bsdf.sample_diffuse(wo, next_2d(rng), rng.next_float())
+                                     : sp.bsdf.sample(wo, next_2d(rng), rng.next_float());
         if (!bs) break;
         const Vec3 wi_world = sp.frame.to_world(bs->wi);
         // A direction on the other geometric side than its shading side would leak through the

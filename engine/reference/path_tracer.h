@@ -32,6 +32,12 @@ struct RenderStats {
     uint64_t nonfinite_samples = 0;  // discarded samples that were NaN or infinite
 };
 
+// What the first vertex a ray meets may scatter: all of its BSDF, or its diffuse lobe alone
+// (material::Bsdf::eval_diffuse; its emission still counts) for the radiance that leaves it
+// through that lobe, which the lobe-wise clamp's compensation needs
+// (reference/clamp_compensation.h). Deeper vertices always scatter through the whole BSDF.
+enum class FirstVertex { AllLobes, DiffuseLobe };
+
 class PathTracer {
 public:
     PathTracer(const scene::Scene& scene, const trace::Accel& accel,
@@ -43,7 +49,7 @@ public:
     // one-sided materials), or from_camera false for one leaving a surface (clamping
     // compensation), whose max_depth counts its segments from there.
     Rgb radiance(const trace::Ray& ray, Rng& rng, int max_depth, int rr_depth,
-                 bool from_camera = true) const;
+                 bool from_camera = true, FirstVertex first = FirstVertex::AllLobes) const;
 
 private:
     const scene::Scene& m_scene;

@@ -293,6 +293,12 @@ void main() {
         // vpl_contribution; shared/virtual_sphere.h).
         const float spread2 =
             v.type == kVplArea || v.type == kVplSurface ? vsl_spread2(pc.vsl_r2, d2) : 0.0;
+        // A pair with a widened glossy lobe in it is clamped lobe by lobe (light::
+        // vpl_contribution; shared::vsl_glossy_d2): f_vpl's diffuse lobe alone, an area VPL's
+        // emission counting as diffuse.
+        const bool by_lobe = spread2 > 0.0 && pc.d_min2 > 0.0 &&
+                             (receiver.type != 0u || (v.type == kVplSurface && v.closure_type != 0u));
+        vec3 f_vpl_diffuse = vec3(1.0);
 //@endif
 //@if spot
         if (v.type == kVplSpot) emitter = spot_falloff(v, dot(v.normal, w));
@@ -307,6 +313,7 @@ void main() {
 //@if glossy
             f_vpl = closure_eval(spread2 > 0.0 && c.type != 0u ? widen_closure(c, spread2) : c,
                                  v.shading_normal, v.wi, w);
+            if (by_lobe) f_vpl_diffuse = closure_eval_diffuse(c, v.shading_normal, v.wi, w);
 //@endif
 //@if !glossy
             f_vpl = closure_eval(c, v.shading_normal, v.wi, w);
@@ -328,6 +335,15 @@ void main() {
             (pc.flags & kShadows) != 0u
                 ? visibility(i, r, d, ng, (v.face_and_length & 0xFFFFu) != 0u ? float(v.face_and_length & 0xFFFFu) : shadow_res)
                 : 1.0;
+//@if glossy
+        if (by_lobe) {
+            const vec3 diffuse = closure_eval_diffuse(receiver, n, wo, -w) * f_vpl_diffuse;
+            const vec3 glossy = max(f_r * f_vpl - diffuse, vec3(0.0));
+            sum += v.power * vis * cos_r * emitter *
+                   (diffuse / max(d2, pc.d_min2) + glossy / vsl_glossy_d2(d2, pc.vsl_r2, pc.d_min2));
+            continue;
+        }
+//@endif
         sum += v.power * vis * f_r * cos_r * f_vpl * emitter / max(d2, pc.d_min2);
 //@endif
     }

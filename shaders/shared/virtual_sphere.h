@@ -49,6 +49,18 @@ MVPL_VSL_FN float vsl_alpha(float alpha, float spread2) {
     return min(1.0f, sqrt(alpha * alpha + spread2));
 }
 
+// The squared distance that divides the glossy products of a VSL pair (issue 15): clamping
+// lobe by lobe. Only the diffuse × diffuse product of a pair keeps the clamp max(d², d_min²);
+// every product with a widened glossy lobe in it is bounded by the sphere itself. A widened
+// lobe's peak D ≤ 1/(π s²) = 4 max(d², r²)/(π r²), so its product over max(d², r²) stays below
+// 4/(π r²) however close the pair (tests/light/test_lobe_clamp.cpp); plain 1/d² would be
+// singular, because the spread saturates inside the sphere (d < r). min(r², d_min²) keeps
+// the glossy part's clamp from exceeding the one it replaces, so d_min = 0 is unclamped (the
+// point VPLs' 1/d²) and the default radius (0.03 < 0.05 diagonals) uses r.
+MVPL_VSL_FN float vsl_glossy_d2(float d2, float r2, float d_min2) {
+    return max(d2, min(r2, d_min2));
+}
+
 MVPL_SHARED_END
 
 #undef MVPL_VSL_FN

@@ -38,7 +38,7 @@ using NodeEvalTest = testing::GpuTest;
 using namespace mvpl::material;
 
 constexpr uint32_t kInputs = 64;   // floats per record in
-constexpr uint32_t kOutputs = 48;  // floats per record out
+constexpr uint32_t kOutputs = 51;  // floats per record out
 constexpr uint32_t kRecords = 12000;
 constexpr int kTexWidth = 5;
 constexpr int kTexHeight = 3;
@@ -51,7 +51,7 @@ std::string test_shader() {
          {"Closure", "SurfacePoint", "image_texture", "vertex_color", "multiply", "mix_node",
           "emission", "normal_map", "bump_map", "lambertian", "ggx_conductor", "dielectric_diffuse",
           "metal_rough", "rough_dielectric", "lambertian_eval", "ggx_conductor_eval",
-          "dielectric_diffuse_eval", "metal_rough_eval"}) {
+          "dielectric_diffuse_eval", "metal_rough_eval", "metal_rough_diffuse_eval"}) {
         m.require(f);
     }
     return "#version 460\nlayout(local_size_x = 64) in;\n"
@@ -69,7 +69,7 @@ void main() {
     const uint r = gl_GlobalInvocationID.x;
     if (r >= pc.count) return;
     const uint b = r * 64u;
-    const uint o = r * 48u;
+    const uint o = r * 51u;
     out4(o, 0, image_texture(tex, in2(b, 0), in2(b, 2), x[b + 4], in2(b, 5), int(x[b + 7]),
                              int(x[b + 8]), int(x[b + 9]), in4(b, 10)));
     out4(o, 4, vertex_color(in4(b, 10), in4(b, 14)));
@@ -106,6 +106,7 @@ void main() {
     out3(o, 39, dielectric_diffuse_eval(c, s.n, wo, wi));
     out3(o, 42, metal_rough_eval(c, s.n, wo, wi));
     out3(o, 45, multiply(in4(b, 10), in4(b, 14)).yzw);  // x is the same code
+    out3(o, 48, metal_rough_diffuse_eval(c, s.n, wo, wi));
 }
 )";
 }
@@ -288,6 +289,7 @@ std::vector<float> cpu_eval(const Record& r, const scene::Texture& base_texture)
     const Node product = node_of("multiply");
     const Vec4 m = product.kind->value(GivenInputs(product, plain, {v4(10), v4(14)}));
     out(45, Vec3(m.y, m.z, m.w), 3);
+    out(48, Bsdf(c).eval_diffuse(wo, wi), 3);
     return y;
 }
 
@@ -303,7 +305,8 @@ const char* output_name(int i) {
     if (i < 39) return "ggx_conductor_eval";
     if (i < 42) return "dielectric_diffuse_eval";
     if (i < 45) return "metal_rough_eval";
-    return "multiply";
+    if (i < 48) return "multiply";
+    return "metal_rough_diffuse_eval";
 }
 
 // Nearest filtering or a wrap discontinuity within 1e-4 texels of the sample point (see top).
@@ -366,7 +369,7 @@ TEST_F(NodeEvalTest, EveryNodeAndClosureTypeAgreesWithItsCppEvaluator) {
     for (size_t r = 0; r < records.size(); ++r) {
         const std::vector<float> cpu = cpu_eval(records[r], tex);
         closure_types[size_t(cpu[22])]++;
-        for (int i = 0; i < 45; ++i) {
+        for (int i = 0; i < int(kOutputs); ++i) {
             const float c = cpu[size_t(i)];
             const float g = gpu[r * kOutputs + size_t(i)];
             if (std::abs(c) > 1e-3f)

@@ -103,7 +103,7 @@ material::ClosureParams sphere_lobe(material::ClosureParams c, float radius, flo
 
 Rgb cpu_contribution(const light::Vpl& vpl, const Vec3& p, const Vec3& n,
                      const material::ClosureParams& receiver_closure, const Vec3& camera,
-                     float d_min, float vsl_radius) {
+                     float d_min, float vsl_radius, bool clamp_whole) {
     const bool sphere = vpl.type == light::VplType::Area || vpl.type == light::VplType::Surface;
     const float vpl_d2 = glm::dot(p - vpl.position, p - vpl.position);
     const material::ClosureParams receiver =
@@ -120,29 +120,45 @@ Rgb cpu_contribution(const light::Vpl& vpl, const Vec3& p, const Vec3& n,
     const float d2 = glm::dot(r, r);
     const Vec3 w = r / std::sqrt(d2);
     const float cos_r = std::max(0.0f, glm::dot(n, -w));
-    Rgb value = vpl.power * f_r.eval(wo, frame.to_local(-w)) * cos_r / std::max(d2, d_min * d_min);
+    const Vec3 wi = frame.to_local(-w);
+    // The VPL's own factor, and the part of it through its diffuse lobe (an area VPL's emission
+    // counts as diffuse).
+    Rgb factor(1.0f), factor_diffuse(1.0f);
     switch (vpl.type) {
         case light::VplType::Spot: {
             const float scale = 1.0f / std::max(1e-3f, vpl.cos_inner - vpl.cos_outer);
             const float t =
                 std::clamp((glm::dot(vpl.normal, w) - vpl.cos_outer) * scale, 0.0f, 1.0f);
-            value *= t * t;
+            factor = factor_diffuse = Rgb(t * t);
             break;
         }
         case light::VplType::Area:
-            value *= std::max(0.0f, glm::dot(vpl.normal, w));
+            factor = factor_diffuse = Rgb(std::max(0.0f, glm::dot(vpl.normal, w)));
             break;
         case light::VplType::Surface: {
             const Frame vpl_frame(vpl.shading_normal);
-            const material::Bsdf f_j(sphere_lobe(vpl.closure, vsl_radius, d2));
-            value *= f_j.eval(vpl_frame.to_local(vpl.wi), vpl_frame.to_local(w)) *
-                     std::max(0.0f, glm::dot(vpl.normal, w));
+            const Vec3 v_in = vpl_frame.to_local(vpl.wi);
+            const Vec3 v_out = vpl_frame.to_local(w);
+            const float cos_j = std::max(0.0f, glm::dot(vpl.normal, w));
+            factor =
+                material::Bsdf(sphere_lobe(vpl.closure, vsl_radius, d2)).eval(v_in, v_out) * cos_j;
+            factor_diffuse = material::Bsdf(vpl.closure).eval_diffuse(v_in, v_out) * cos_j;
             break;
         }
         default:
             break;
     }
-    return value;
+    const Rgb all = vpl.power * f_r.eval(wo, wi) * factor * cos_r;
+    const float d_min2 = d_min * d_min;
+    const float r2 = vsl_radius * vsl_radius;
+    if (!sphere || !(r2 > 0.0f) || !(d_min2 > 0.0f) || clamp_whole)
+        return all / std::max(d2, d_min2);
+    // Lobe by lobe (vpl.h): the diffuse × diffuse product clamped at d_min, the rest at
+    // min(r, d_min).
+    const Rgb diffuse =
+        vpl.power * material::Bsdf(receiver_closure).eval_diffuse(wo, wi) * factor_diffuse * cos_r;
+    return diffuse / std::max(d2, d_min2) +
+           glm::max(all - diffuse, Rgb(0.0f)) / std::max(d2, std::min(r2, d_min2));
 }
 
 material::ClosureParams closure_of(const scene::Material& m) {

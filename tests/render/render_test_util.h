@@ -30,10 +30,11 @@ bool segment_hits_mesh(const scene::Mesh& mesh, const Vec3& a, const Vec3& b);
 
 // vpl.h's contribution of one VPL to a receiver at p with shading normal n (already on the
 // shading side) and closure `receiver`, seen from `camera`; V = 1. Area and surface VPLs are
-// virtual spherical lights of radius vsl_radius (world units; 0: points).
+// virtual spherical lights of radius vsl_radius (world units; 0: points), clamped lobe by lobe
+// (vpl.h), or as a whole with `clamp_whole` (the formula before issue 15, for comparison).
 Rgb cpu_contribution(const light::Vpl& vpl, const Vec3& p, const Vec3& n,
                      const material::ClosureParams& receiver, const Vec3& camera, float d_min,
-                     float vsl_radius = 0.0f);
+                     float vsl_radius = 0.0f, bool clamp_whole = false);
 
 // A closure from a scene material's factors (what the G-buffer stores).
 material::ClosureParams closure_of(const scene::Material& material);

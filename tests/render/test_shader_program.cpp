@@ -76,6 +76,9 @@ TEST(ShaderProgram, CornellBoxHasNoMicrofacetCodeNoSamplerAndOnlyItsLightTypes) 
     EXPECT_FALSE(contains(s.shading_comp.source, "directional_visibility"));
     EXPECT_TRUE(contains(s.shading_comp.source, "lambertian_eval"));
     EXPECT_FALSE(contains(s.shading_comp.source, "metal_rough_eval"));
+    // No lobe-wise clamp (issue 15): a diffuse pair has nothing to release.
+    EXPECT_FALSE(contains(s.shading_comp.source, "closure_eval_diffuse"));
+    EXPECT_FALSE(contains(s.shading_comp.source, "vsl_glossy_d2"));
     // Depth 2 (direct light only): no surface VPL, so no closure of a VPL is evaluated.
     const SceneShaders direct = generate_scene_shaders(scene, ShaderOptions{false});
     EXPECT_FALSE(contains(direct.shading_comp.source, "f_vpl = closure_eval"));

@@ -179,6 +179,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
         c.width = int(o.width);
         c.height = int(o.height);
         c.clamp = o.clamp;
+        c.vsl_radius = o.vsl_radius;
         c.max_depth = run.max_depth;
         c.seed = run.seed;
         c.first_pass = uint32_t(ranks.rank());

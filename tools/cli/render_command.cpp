@@ -132,6 +132,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     c.width = a.width;
     c.height = a.height;
     c.clamp = a.renderer.clamp;
+    c.vsl_radius = a.renderer.vsl();
     c.max_depth = max_depth;
     c.seed = s.seed;
     return job;
