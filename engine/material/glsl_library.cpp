@@ -9,7 +9,7 @@
 namespace mvpl::material {
 namespace {
 
-using Deps = std::array<std::string_view, 4>;
+using Deps = std::array<std::string_view, 5>;
 
 struct Entry {
     std::string_view name;
@@ -178,8 +178,16 @@ vec3 dielectric_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
     return metal_rough_eval(d, n, wo, wi);
 }
 )"},
+    {"metal_rough_f0",
+     {"Closure", "f0_from_ior"},
+     R"(// bsdf.cpp, dielectric_layer(): the dielectric's normal-incidence reflectance, clamped to 1
+// before the multiplication by specular.
+vec3 metal_rough_f0(Closure c) {
+    return min(f0_from_ior(c.ior) * c.specular_color, vec3(1.0)) * c.specular;
+}
+)"},
     {"metal_rough_diffuse_eval",
-     {"Closure", "f0_from_ior", "dielectric_helpers"},
+     {"Closure", "metal_rough_f0", "dielectric_helpers"},
      R"(// bsdf.cpp, Bsdf::eval_diffuse: the diffuse lobe of metal_rough_eval alone (all of a
 // Lambertian closure's f, none of a conductor's); independent of the roughness.
 vec3 metal_rough_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
@@ -187,10 +195,8 @@ vec3 metal_rough_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
     const float ci = dot(n, wi);
     if (co <= 0.0 || ci <= 0.0) return vec3(0.0);
     if (c.metallic <= 0.0 && c.specular <= 0.0) return c.base_color * kInvPi;
-    // dielectric_layer(): the clamp to 1 before the multiplication by specular.
-    const vec3 f0 = min(f0_from_ior(c.ior) * c.specular_color, vec3(1.0)) * c.specular;
     const float f90 = c.specular;
-    const float f0_max = max_component(f0);
+    const float f0_max = max_component(metal_rough_f0(c));
     const bool has_diffuse = c.metallic < 1.0 && max_component(c.base_color) > 0.0 && f0_max < 1.0;
     if (!has_diffuse) return vec3(0.0);
     const float w_d = (1.0 - fresnel_schlick(f0_max, f90, co)) *
@@ -199,14 +205,13 @@ vec3 metal_rough_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
 }
 )"},
     {"metal_rough_eval",
-     {"Closure", "roughness_to_alpha", "metal_rough_diffuse_eval", "dielectric_helpers"},
-     R"(// bsdf.cpp, Bsdf::eval with the derived members of its constructor.
+     {"Closure", "roughness_to_alpha", "metal_rough_f0", "metal_rough_diffuse_eval",
+      "dielectric_helpers"},
+     R"(// bsdf.cpp, Bsdf::eval with the derived members of its constructor; a Lambertian closure
+// (metallic and specular 0) is its diffuse lobe alone.
 vec3 metal_rough_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
-    const float co = dot(n, wo);
-    const float ci = dot(n, wi);
-    if (co <= 0.0 || ci <= 0.0) return vec3(0.0);
-    if (c.metallic <= 0.0 && c.specular <= 0.0) return c.base_color * kInvPi;
-    const vec3 f0 = min(f0_from_ior(c.ior) * c.specular_color, vec3(1.0)) * c.specular;
+    if (dot(n, wo) <= 0.0 || dot(n, wi) <= 0.0) return vec3(0.0);
+    const vec3 f0 = metal_rough_f0(c);
     const float f90 = c.specular;
     const float alpha = roughness_to_alpha(c.roughness);
     const bool has_specular = c.metallic > 0.0 || f90 > 0.0;

@@ -22,6 +22,39 @@ namespace {
 using test::luminance_regions;
 using test::mean_and_error;
 
+// One run's VPLs (Monte Carlo, `seed`) gathered by `g` without and with the clamp `clamp`: the
+// luminance of the image's regions (luminance_regions), paired.
+struct PairedRegions {
+    std::vector<double> unclamped, clamped;
+};
+PairedRegions gather_paired(const scene::Scene& scene, const trace::Accel& accel,
+                            const light::LightSampler& lights, reference::GatherOptions g,
+                            uint64_t seed, uint64_t paths, float clamp) {
+    sampler::MonteCarloOptions o;
+    o.seed = seed;
+    sampler::MonteCarloStream stream(scene, accel, lights, o);
+    std::vector<light::Vpl> v;
+    stream.next(paths, v);
+    const light::VplSet vpls{std::move(v), stream.scale()};
+    PairedRegions out;
+    g.clamp = 0.0f;
+    out.unclamped = luminance_regions(reference::gather_vpls(scene, accel, vpls, g));
+    g.clamp = clamp;
+    out.clamped = luminance_regions(reference::gather_vpls(scene, accel, vpls, g));
+    return out;
+}
+
+// The compensation image's regions after `passes` passes.
+std::vector<double> compensation_regions(const scene::Scene& scene, const trace::Accel& accel,
+                                         const light::LightSampler& lights,
+                                         const reference::CompensationOptions& c, int passes) {
+    reference::ClampCompensation compensation(scene, accel, lights, c);
+    for (int p = 0; p < passes; ++p)
+        compensation.add_pass();
+    EXPECT_EQ(compensation.passes(), uint32_t(passes));
+    return luminance_regions(compensation.image());
+}
+
 TEST(ClampCompensation, ClampedLightPlusCompensationIsUnbiased) {
     const scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
     const trace::Accel accel(scene);
@@ -43,28 +76,15 @@ TEST(ClampCompensation, ClampedLightPlusCompensationIsUnbiased) {
     // compensation is added (clamped + compensation − unclamped).
     std::vector<std::vector<double>> removed(5), left(5);
     for (int r = 0; r < kRuns; ++r) {
-        sampler::MonteCarloOptions o;
-        o.seed = 3000 + uint64_t(r);
-        sampler::MonteCarloStream stream(scene, accel, lights, o);
-        std::vector<light::Vpl> v;
-        stream.next(kPaths, v);
-        const light::VplSet vpls{std::move(v), stream.scale()};
-        g.clamp = 0.0f;
-        const std::vector<double> unclamped =
-            luminance_regions(reference::gather_vpls(scene, accel, vpls, g));
-        g.clamp = kClamp;
-        const std::vector<double> clamped =
-            luminance_regions(reference::gather_vpls(scene, accel, vpls, g));
+        const auto [unclamped, clamped] =
+            gather_paired(scene, accel, lights, g, 3000 + uint64_t(r), kPaths, kClamp);
         reference::CompensationOptions c;
         c.width = c.height = kRes;
         c.clamp = kClamp;
         c.max_depth = 6;
         c.seed = 4000 + uint64_t(r);
-        reference::ClampCompensation compensation(scene, accel, lights, c);
-        for (int p = 0; p < kPasses; ++p)
-            compensation.add_pass();
-        ASSERT_EQ(compensation.passes(), uint32_t(kPasses));
-        const std::vector<double> recovered = luminance_regions(compensation.image());
+        const std::vector<double> recovered =
+            compensation_regions(scene, accel, lights, c, kPasses);
         for (size_t k = 0; k < 5; ++k) {
             removed[k].push_back(unclamped[k] - clamped[k]);
             left[k].push_back(clamped[k] + recovered[k] - unclamped[k]);
@@ -125,33 +145,19 @@ TEST(ClampCompensation, LobeWiseClampPlusLobeWiseCompensationIsUnbiased) {
     g.vsl_radius = kRadius;
     std::vector<std::vector<double>> left(5), twice(5), removed(5), image(5);
     for (int r = 0; r < kRuns; ++r) {
-        sampler::MonteCarloOptions o;
-        o.seed = 5000 + uint64_t(r);
-        sampler::MonteCarloStream stream(scene, accel, lights, o);
-        std::vector<light::Vpl> v;
-        stream.next(kPaths, v);
-        const light::VplSet vpls{std::move(v), stream.scale()};
-        g.clamp = 0.0f;
-        const std::vector<double> unclamped =
-            luminance_regions(reference::gather_vpls(scene, accel, vpls, g));
-        g.clamp = kClamp;
-        const std::vector<double> clamped =
-            luminance_regions(reference::gather_vpls(scene, accel, vpls, g));
+        const auto [unclamped, clamped] =
+            gather_paired(scene, accel, lights, g, 5000 + uint64_t(r), kPaths, kClamp);
         reference::CompensationOptions c;
         c.width = c.height = kRes;
         c.clamp = kClamp;
         c.max_depth = 6;
         c.seed = 6000 + uint64_t(r);
         c.vsl_radius = kRadius;
-        reference::ClampCompensation by_lobe(scene, accel, lights, c);
+        const std::vector<double> lobe_part =
+            compensation_regions(scene, accel, lights, c, kPasses);
         c.vsl_radius = 0.0f;
-        reference::ClampCompensation full(scene, accel, lights, c);
-        for (int p = 0; p < kPasses; ++p) {
-            by_lobe.add_pass();
-            full.add_pass();
-        }
-        const std::vector<double> lobe_part = luminance_regions(by_lobe.image());
-        const std::vector<double> full_part = luminance_regions(full.image());
+        const std::vector<double> full_part =
+            compensation_regions(scene, accel, lights, c, kPasses);
         for (size_t k = 0; k < 5; ++k) {
             left[k].push_back(clamped[k] + lobe_part[k] - unclamped[k]);
             twice[k].push_back(clamped[k] + full_part[k] - unclamped[k]);
