@@ -96,7 +96,10 @@ uint64_t seed_from_env(uint64_t fallback) {
 // the bias of the clamp and the spheres (~0.55–0.8 at 1024 paths). Measured over seeds 1–10
 // (MVPL_VSL_SEED): the percentile falls from 0.87–4.9 to 0.55–0.80 (by 1.14–7.5×), the largest
 // ratio is 1.8–7.1 at 64 paths and 1.2–1.8 at 1024; with point VPLs at 1024 paths the
-// percentile is 0.66–4.2 and the largest ratio 1.5–27.6. The test runs seed 1.
+// percentile is 0.66–4.2 and the largest ratio 1.5–27.6. Over the whole image, chained pixels
+// included, no pixel exceeds 10× either (issue 15's criterion): seeds 1–5 at 1024 paths, p99.9
+// 0.73–0.86 and the largest ratio 1.7–2.0; without the chains' light samples (specular_chain.cpp)
+// 1.03–1.10 and 6.3–6.5 (seeds 1–3). The test runs seed 1.
 TEST_F(VirtualSpheresTest, NoGlossySpikes) {
     const scene::Scene s = scene::load_scene(kScene);
     const trace::Accel accel(s);
@@ -121,7 +124,9 @@ TEST_F(VirtualSpheresTest, NoGlossySpikes) {
         spikes(test::oracle_render(s, test::monte_carlo_vpls(s, 64, kMaxDepth, seed), settings),
                reference, mask);
     const light::VplSet many = test::monte_carlo_vpls(s, 1024, kMaxDepth, seed + 100);
-    const ImageError high = spikes(test::oracle_render(s, many, settings), reference, mask);
+    const Image many_image = test::oracle_render(s, many, settings);
+    const ImageError high = spikes(many_image, reference, mask);
+    const ImageError whole = compare_images(many_image, reference);
     const ImageError high_points = spikes(test::oracle_render(s, many, points), reference, mask);
     std::printf("%d of %d pixels lit by VPLs\n", int(std::count(mask.begin(), mask.end(), true)),
                 res * res);
@@ -134,6 +139,9 @@ TEST_F(VirtualSpheresTest, NoGlossySpikes) {
     EXPECT_LT(high.rel_err_p999, low.rel_err_p999);
     EXPECT_LE(low.max_ratio, 10.0);
     EXPECT_LE(high.max_ratio, 10.0);
+    std::printf("whole image at 1024 paths: p99.9 %.3f, max ratio %.2f\n", whole.rel_err_p999,
+                whole.max_ratio);
+    EXPECT_LE(whole.max_ratio, 10.0);
 }
 
 // GPU ≡ oracle with VSLs on the glossy scene, within the bound of the other GPU-vs-oracle tests
