@@ -55,6 +55,7 @@ struct CausticTracer::Impl {
     float tan_half = 1.0f;
     float aspect = 1.0f;
     float inv_pixel_area = 1.0f;
+    float d_min2 = 0.0f;          // the compensation's d_min² (header comment); 0 without it
     std::vector<Rgb> pass_image;  // the pass under way
     mutable std::mutex mutex;     // guards sum and passes
     std::vector<DVec3> sum;       // per pixel, over the passes
@@ -78,6 +79,7 @@ struct CausticTracer::Impl {
         aspect = float(o.width) / float(o.height);
         const float area = sqr(2.0f * tan_half) * aspect / (float(o.width) * float(o.height));
         inv_pixel_area = 1.0f / area;
+        d_min2 = sqr(o.clamp * s.bounds().diagonal());
     }
 
     // β · f · |n_g·ω_cam| / d² · W_e of light-path vertex p lit from wi_world, into the pixel it
@@ -142,6 +144,7 @@ struct CausticTracer::Impl {
         const int max_length =
             options.max_depth < 0 ? std::numeric_limits<int>::max() : options.max_depth - 1;
         bool covered = true;  // x_0's emitter VPL lights x_1
+        Vec3 previous = es->p;
         for (int length = 1; length <= max_length; ++length) {
             const std::optional<trace::Hit> hit = accel.intersect(ray);
             if (!hit) break;
@@ -153,7 +156,14 @@ struct CausticTracer::Impl {
             if (!(wi.z > 0.0f || sp.bsdf.transmits()) || !trace::same_side(wi_world, sp.ng, wi.z))
                 break;
             beta *= wi.z / cos_geometric;  // shading cosine at arrival (light_tracer.h)
-            if (!covered) splat(sp.p, wi_world, beta, out);
+            if (!covered) {
+                // The compensation's share is its own (header comment).
+                const Vec3 d = sp.p - previous;
+                const float d2 = glm::dot(d, d);
+                const Rgb weight = d2 < d_min2 ? beta * (d2 / d_min2) : beta;
+                splat(sp.p, wi_world, weight, out);
+            }
+            previous = sp.p;
             if (length == max_length) break;
 
             const Vec2 u_bsdf = next_2d(rng);

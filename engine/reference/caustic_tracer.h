@@ -23,6 +23,11 @@
 // the camera's own ray through the projected point (Accel::intersect_camera, from the near
 // plane), which must find x_j.
 //
+// With clamping compensation (clamp_compensation.h) beside it, a vertex x_j nearer than d_min to
+// x_{j−1} is weighted by d²/d_min²: the compensation samples x_{j−1} from the receiver x_j and adds
+// the share 1 − d²/d_min² of all the light leaving it (the path tracer's radiance), this path
+// included, although no VPL gave the clamped rest; the two shares add to one.
+//
 // Passes as in ClampCompensation: each traces `paths_per_pass` light paths (default one per
 // pixel) and is deterministic for its seed whatever the thread count; image() is their mean.
 #include <cstdint>
@@ -44,6 +49,9 @@ struct CausticOptions {
     // The chains' class (light/path_partition.h): the same options the renderer's chains and the
     // light tracer's `specular` use. Disabled: only transmission and back sides.
     light::ChainOptions specular;
+    // The clamping compensation's d_min as a fraction of the scene's diagonal when it runs beside
+    // (CompensationOptions::clamp), else 0.
+    float clamp = 0.0f;
     uint64_t seed = 0;
     uint64_t paths_per_pass = 0;  // 0: width × height
     // As CompensationOptions: pass i is pass first_pass + i · pass_stride of the seed's sequence.

@@ -182,6 +182,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
             k.max_depth = run.max_depth;
             k.rr_depth = settings.tracer.rr_depth;
             k.specular = o.chains;
+            k.clamp = run.compensate ? o.clamp : 0.0f;  // the compensation's share (see there)
             k.seed = run.seed;
             k.first_pass = uint32_t(ranks.rank());
             k.pass_stride = uint32_t(ranks.size());

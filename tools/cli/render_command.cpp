@@ -144,6 +144,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     k.max_depth = max_depth;
     k.rr_depth = s.tracer.rr_depth;
     k.specular = ro.chains;
+    k.clamp = job.compensate ? c.clamp : 0.0f;  // the compensation's share of near vertices
     k.seed = s.seed;
     return job;
 }
