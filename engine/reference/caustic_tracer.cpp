@@ -35,6 +35,12 @@ struct Splat {
     Rgb value{0.0f};
 };
 
+// The caustic light one path brought (the luminance of its splats) and the emitter it left.
+struct PathYield {
+    int emitter = -1;
+    double luminance = 0.0;
+};
+
 Vec2 next_2d(Rng& rng) {
     const float a = rng.next_float();
     return Vec2(a, rng.next_float());
@@ -55,7 +61,11 @@ struct CausticTracer::Impl {
     float tan_half = 1.0f;
     float aspect = 1.0f;
     float inv_pixel_area = 1.0f;
-    float d_min2 = 0.0f;          // the compensation's d_min² (header comment); 0 without it
+    float d_min2 = 0.0f;  // the compensation's d_min² (header comment); 0 without it
+    // The emitters' probabilities after the pilot (header comment) and their running sum;
+    // empty before it: by power.
+    std::vector<float> pick;
+    std::vector<float> pick_cdf;
     std::vector<Rgb> pass_image;  // the pass under way
     mutable std::mutex mutex;     // guards sum and passes
     std::vector<DVec3> sum;       // per pixel, over the passes
@@ -128,23 +138,37 @@ struct CausticTracer::Impl {
 
     // One light path, as sampler::LightTracer::trace walks it (the same throughput), splatting
     // every vertex whose previous one leaves no VPL that reflects towards it.
-    void trace_path(Rng& rng, std::vector<Splat>& out) const {
+    // Returns the emitter it started from (−1: none).
+    int trace_path(Rng& rng, std::vector<Splat>& out) const {
         const float u_pick = rng.next_float();
         const Vec2 u_pos = next_2d(rng);
         const Vec2 u_dir = next_2d(rng);
-        const std::optional<light::EmissionSample> es = lights.sample_le(u_pick, u_pos, u_dir);
-        if (!es) return;
-        trace::Ray ray{es->p, es->direction};
-        if (es->type == light::EmitterType::Triangle)
-            ray = trace::spawn_ray(es->p, es->n, es->direction);
-        Rgb beta = es->throughput;
+        std::optional<light::EmissionSample> es;
+        if (pick_cdf.empty()) {
+            es = lights.sample_le(u_pick, u_pos, u_dir);
+        } else {
+            const size_t e = std::min<size_t>(
+                std::upper_bound(pick_cdf.begin(), pick_cdf.end(), u_pick) - pick_cdf.begin(),
+                pick.size() - 1);
+            es = lights.sample_le_from(int(e), pick[e], u_pos, u_dir);
+        }
+        if (!es) return -1;
+        trace_from(*es, rng, out);
+        return es->emitter;
+    }
+
+    void trace_from(const light::EmissionSample& es, Rng& rng, std::vector<Splat>& out) const {
+        trace::Ray ray{es.p, es.direction};
+        if (es.type == light::EmitterType::Triangle)
+            ray = trace::spawn_ray(es.p, es.n, es.direction);
+        Rgb beta = es.throughput;
         const float beta_start = max_component(beta);
         if (!(beta_start > 0.0f) || !is_finite(beta)) return;
         // x_j lights the eye through j + 1 segments.
         const int max_length =
             options.max_depth < 0 ? std::numeric_limits<int>::max() : options.max_depth - 1;
         bool covered = true;  // x_0's emitter VPL lights x_1
-        Vec3 previous = es->p;
+        Vec3 previous = es.p;
         for (int length = 1; length <= max_length; ++length) {
             const std::optional<trace::Hit> hit = accel.intersect(ray);
             if (!hit) break;
@@ -187,6 +211,62 @@ struct CausticTracer::Impl {
         }
     }
 
+    // Global pass `global` into `image` (scaled by 1/paths); `yields`, if given, receives each
+    // emitter's caustic light.
+    void trace_pass(uint64_t global, std::vector<Rgb>& image, std::vector<double>* yields) const {
+        std::fill(image.begin(), image.end(), Rgb(0.0f));
+        const uint64_t seed = mix_bits(mix_bits(options.seed ^ kSeedSalt) ^ (global << 32));
+        const uint64_t blocks = (paths_per_pass + kBlockPaths - 1) / kBlockPaths;
+        std::vector<std::vector<Splat>> splats(blocks);
+        std::vector<std::vector<PathYield>> path_yields(blocks);
+        parallel_for(int64_t(blocks), 1, [&](int64_t b0, int64_t b1) {
+            for (int64_t b = b0; b < b1; ++b) {
+                std::vector<Splat>& out = splats[size_t(b)];
+                const uint64_t first = uint64_t(b) * kBlockPaths;
+                const uint64_t last = std::min(first + kBlockPaths, paths_per_pass);
+                for (uint64_t i = first; i < last; ++i) {
+                    Rng rng(seed, i);
+                    const size_t before = out.size();
+                    const int emitter = trace_path(rng, out);
+                    if (!yields || out.size() == before) continue;
+                    PathYield y{emitter, 0.0};
+                    for (size_t k = before; k < out.size(); ++k)
+                        y.luminance += double(luminance(out[k].value));
+                    path_yields[size_t(b)].push_back(y);
+                }
+            }
+        });
+        const float scale = float(1.0 / double(paths_per_pass));
+        for (const std::vector<Splat>& block : splats) {
+            for (const Splat& sp : block)
+                image[sp.pixel] += sp.value * scale;
+        }
+        if (!yields) return;
+        for (const std::vector<PathYield>& block : path_yields) {
+            for (const PathYield& y : block)
+                (*yields)[size_t(y.emitter)] += y.luminance;
+        }
+    }
+
+    // The mixture of the header comment from the pilot's per-emitter caustic light.
+    void adapt(const std::vector<double>& yields) {
+        double total = 0.0;
+        for (double y : yields)
+            total += y;
+        const size_t n = lights.emitters().size();
+        pick.assign(n, 0.0f);
+        pick_cdf.assign(n, 0.0f);
+        float running = 0.0f;
+        for (size_t e = 0; e < n; ++e) {
+            const float power = lights.pick_probability(int(e));
+            pick[e] = total > 0.0 ? 0.5f * power + float(0.5 * yields[e] / total) : power;
+            running += pick[e];
+            pick_cdf[e] = running;
+        }
+        for (float& c : pick_cdf)
+            c /= running;
+    }
+
     void add_pass() {
         uint32_t pass = 0;
         {
@@ -197,24 +277,14 @@ struct CausticTracer::Impl {
         if (is_active) {
             const uint64_t global =
                 uint64_t(options.first_pass) + uint64_t(pass) * uint64_t(options.pass_stride);
-            const uint64_t seed = mix_bits(mix_bits(options.seed ^ kSeedSalt) ^ (global << 32));
-            const uint64_t blocks = (paths_per_pass + kBlockPaths - 1) / kBlockPaths;
-            std::vector<std::vector<Splat>> splats(blocks);
-            parallel_for(int64_t(blocks), 1, [&](int64_t b0, int64_t b1) {
-                for (int64_t b = b0; b < b1; ++b) {
-                    const uint64_t first = uint64_t(b) * kBlockPaths;
-                    const uint64_t last = std::min(first + kBlockPaths, paths_per_pass);
-                    for (uint64_t i = first; i < last; ++i) {
-                        Rng rng(seed, i);
-                        trace_path(rng, splats[size_t(b)]);
-                    }
-                }
-            });
-            const float scale = float(1.0 / double(paths_per_pass));
-            for (const std::vector<Splat>& block : splats) {
-                for (const Splat& s : block)
-                    pass_image[s.pixel] += s.value * scale;
+            bool done = false;
+            if (pick_cdf.empty()) {  // the pilot, global pass 0, first
+                std::vector<double> yields(lights.emitters().size(), 0.0);
+                trace_pass(0, pass_image, &yields);
+                adapt(yields);
+                done = global == 0;
             }
+            if (!done) trace_pass(global, pass_image, nullptr);
         }
         const std::lock_guard lock(mutex);
         for (size_t i = 0; i < sum.size(); ++i)

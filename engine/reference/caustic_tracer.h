@@ -28,6 +28,14 @@
 // the share 1 − d²/d_min² of all the light leaving it (the path tracer's radiance), this path
 // included, although no VPL gave the clamped rest; the two shares add to one.
 //
+// Which light a path starts from: global pass 0 (the pilot, whichever rank or object runs it)
+// picks by power, as the VPLs' light paths, and measures each emitter's caustic light; every later
+// pass picks with q_e = ½ p_power(e) + ½ C_e / Σ C (a defensive mixture: every emitter keeps half
+// its power's share, so the estimate stays unbiased), since a light that reaches no glass
+// otherwise spends its share of the paths on nothing (measured on assets/glass-pane: the point
+// light drew 80 % of them). A rank that does not own pass 0 traces it too, unadded, so that pass k
+// is the same on any number of ranks.
+//
 // Passes as in ClampCompensation: each traces `paths_per_pass` light paths (default one per
 // pixel) and is deterministic for its seed whatever the thread count; image() is their mean.
 #include <cstdint>

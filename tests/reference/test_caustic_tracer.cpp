@@ -263,6 +263,42 @@ TEST(CausticTracer, FloorLitByANearMirrorMatchesThePathTracer) {
     expect_unbiased(m);
 }
 
+// Pass k is the same whether one object runs passes 0, 1 or two ranks run one each (first_pass,
+// pass_stride), the pilot included (the rank that does not own pass 0 traces it unadded): the
+// mean of the ranks' images equals the one-object image (to double rounding of the mean).
+TEST(CausticTracer, PassesAreTheSameOverRanks) {
+    const scene::Scene s = make_pane_scene();
+    const trace::Accel accel(s);
+    const light::LightSampler lights(s);
+    CausticOptions c;
+    c.width = c.height = kSize;
+    c.max_depth = kMaxDepth;
+    c.specular.max_roughness = light::kDefaultChainRoughness;
+    c.paths_per_pass = 2048;
+    c.seed = 5;
+    CausticTracer one(s, accel, lights, c);
+    one.add_pass();
+    one.add_pass();
+    c.pass_stride = 2;
+    CausticTracer rank0(s, accel, lights, c);
+    c.first_pass = 1;
+    CausticTracer rank1(s, accel, lights, c);
+    rank0.add_pass();
+    rank1.add_pass();
+    const Image a = one.image(), b = rank0.image(), d = rank1.image();
+    double total = 0.0;
+    for (size_t i = 0; i < a.pixels().size(); ++i) {
+        for (int k = 0; k < 3; ++k) {
+            const double mean = (double(b.pixels()[i][k]) + double(d.pixels()[i][k])) / 2.0;
+            EXPECT_NEAR(a.pixels()[i][k], mean, 1e-6 * std::abs(mean)) << i;
+            total += mean;
+        }
+    }
+    EXPECT_GT(total, 0.0);
+    // The ranks' passes differ (different seeds): not the same pass twice.
+    EXPECT_NE(b.pixels(), d.pixels());
+}
+
 // Leave out what a scene does not need: with a diffuse pane nothing can leave the VPLs' share,
 // so the tracer is inactive and a pass traces no ray; max depth 2 (direct light only) neither.
 TEST(CausticTracer, ADiffuseSceneTracesNoRays) {
