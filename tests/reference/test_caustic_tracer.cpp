@@ -263,6 +263,30 @@ TEST(CausticTracer, FloorLitByANearMirrorMatchesThePathTracer) {
     expect_unbiased(m);
 }
 
+// The other half of the partition: with the chains' class given, light paths leave no VPL on the
+// near-mirror (whose light the caustic tracer carries); without it (--no-caustics) they do.
+TEST(CausticTracer, LightPathsLeaveNoVplOnTheChainsClass) {
+    const scene::Scene s = make_mirror_scene();
+    const trace::Accel accel(s);
+    const light::LightSampler lights(s);
+    sampler::MonteCarloOptions mc;
+    mc.paths = 4096;
+    mc.tracer.max_depth = kMaxDepth;
+    auto on_mirror = [&](const light::VplSet& set) {
+        int n = 0;
+        for (const light::Vpl& v : set.vpls)
+            n += v.type == light::VplType::Surface && std::abs(v.position.x - 0.8f) < 1e-4f;
+        return n;
+    };
+    const int with_vpls = on_mirror(sampler::MonteCarloSampler(s, accel, lights).generate(mc));
+    mc.tracer.specular.max_roughness = light::kDefaultChainRoughness;
+    const light::VplSet partitioned = sampler::MonteCarloSampler(s, accel, lights).generate(mc);
+    // About a sixth of the light leaves towards the mirror: hundreds of VPLs on it.
+    EXPECT_GT(with_vpls, 100);
+    EXPECT_EQ(on_mirror(partitioned), 0);
+    EXPECT_GT(partitioned.vpls.size(), 1000u);  // the floor's are still there
+}
+
 // Pass k is the same whether one object runs passes 0, 1 or two ranks run one each (first_pass,
 // pass_stride), the pilot included (the rank that does not own pass 0 traces it unadded): the
 // mean of the ranks' images equals the one-object image (to double rounding of the mean).
