@@ -2,8 +2,9 @@
 // Caustics: the light that reaches a rough surface the camera sees through a vertex that leaves no
 // VPL — through glass (VPLs reflect only; shadow maps and the oracle's visibility treat glass as
 // opaque), off the back of a transmissive surface, or off a near-mirror of the chains' class —
-// found by light tracing (Veach 1997, §10.2: "particle tracing" with each vertex connected to the
-// eye) and splatted into the pixel it projects to. Which paths it takes is light/path_partition.h:
+// found by light tracing (every light-path vertex connected to the eye: bidirectional path
+// tracing's t = 1 strategy, Veach 1997 ch. 10; pbrt-v3 §16.1.1 for the pinhole's importance) and
+// splatted into the pixel it projects to. Which paths it takes is light/path_partition.h:
 // a light-path vertex x_j (j ≥ 2) whose previous vertex x_{j−1} was not a VPL that reflects
 // towards x_j, and which the camera sees directly as a receiver (not of the chains' class, seen
 // from above its shading surface). VPL image + chains + this image is then unbiased but for the
