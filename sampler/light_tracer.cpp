@@ -4,6 +4,7 @@
 #include <cmath>
 #include <limits>
 
+#include "engine/light/path_partition.h"
 #include "engine/trace/interaction.h"
 #include "engine/trace/ray.h"
 #include "engine/trace/shading_point.h"
@@ -95,7 +96,8 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
         // A VPL reflects towards the side it was lit from, as the GPU shades it: its closure
         // keeps no transmission (the light a surface transmits is followed by the path instead),
         // and none is left on the back of a transmissive surface, where the GPU could not tell
-        // its sides apart. (On smooth glass it is a near-mirror's VPL: the GPU's glossy term.)
+        // its sides apart. (On smooth glass it is a near-mirror's VPL: the GPU's glossy term,
+        // unless the caustic tracer carries the light of such vertices: options().specular.)
         light::Vpl vpl;
         vpl.type = light::VplType::Surface;
         vpl.position = sp.p;
@@ -106,7 +108,8 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
         vpl.closure = sp.bsdf.params();
         vpl.closure.transmission = Rgb(0.0f);
         vpl.path_length = uint32_t(length);
-        if (front && usable(vpl.power)) out.push_back(vpl);
+        if (usable(vpl.power) && light::leaves_vpl(sp.bsdf, wi, m_options.specular))
+            out.push_back(vpl);
         if (length == max_length) break;
 
         const Vec2 u_bsdf = next_2d(u);

@@ -19,6 +19,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
@@ -32,6 +33,10 @@ struct LightTracerOptions {
     // Russian roulette once the camera-to-light path through the next VPL would have at least
     // this many segments (the path tracer's rr_depth, counted the same way).
     int rr_depth = 5;
+    // With the caustic tracer (reference/caustic_tracer.h): vertices of the chains' class leave
+    // no VPL (light/path_partition.h, leaves_vpl), the caustic tracer carries their light.
+    // Disabled (the default): a VPL on every vertex lit on its shading side.
+    light::ChainOptions specular;
 };
 
 class LightTracer {

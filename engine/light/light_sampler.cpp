@@ -254,11 +254,17 @@ std::optional<EmissionSample> LightSampler::sample_le(float u_pick, const Vec2& 
     const size_t index = std::min<size_t>(
         std::upper_bound(m_cdf.begin(), m_cdf.end(), u_pick * m_total_power) - m_cdf.begin(),
         m_emitters.size() - 1);
-    const Emitter& e = m_emitters[index];
+    return sample_le_from(int(index), m_emitters[index].power / m_total_power, u_pos, u_dir);
+}
+
+std::optional<EmissionSample> LightSampler::sample_le_from(int emitter, float pick,
+                                                           const Vec2& u_pos,
+                                                           const Vec2& u_dir) const {
+    const Emitter& e = m_emitters[size_t(emitter)];
     EmissionSample s;
     s.type = e.type;
-    s.emitter = int(index);
-    s.pick = e.power / m_total_power;
+    s.emitter = emitter;
+    s.pick = pick;
     if (!(s.pick > 0.0f)) return std::nullopt;
 
     if (e.type == EmitterType::Triangle) {

@@ -85,6 +85,10 @@ public:
     // irradiance (pbrt-v4's ImageInfiniteLight::SampleLe).
     std::optional<EmissionSample> sample_le(float u_pick, const Vec2& u_pos,
                                             const Vec2& u_dir) const;
+    // sample_le of emitter `emitter`, chosen by the caller with probability `pick` (> 0), which
+    // the sample's `pick`, `le` and `throughput` then hold instead of the power's share.
+    std::optional<EmissionSample> sample_le_from(int emitter, float pick, const Vec2& u_pos,
+                                                 const Vec2& u_dir) const;
     float scene_radius() const { return m_scene_radius; }
     Vec3 scene_center() const { return m_scene_center; }
 

@@ -8,7 +8,7 @@ uint32_t paced_compensation_passes(uint64_t vpls, uint32_t most) {
     return uint32_t(std::min<uint64_t>(1 + vpls / 32, most));
 }
 
-CompensationThread::CompensationThread(std::unique_ptr<reference::ClampCompensation> compensation)
+CompensationThread::CompensationThread(std::unique_ptr<PassImage> compensation)
     : m_compensation(std::move(compensation)) {
     m_thread = std::thread([this] { run(); });
 }

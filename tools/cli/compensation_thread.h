@@ -1,8 +1,9 @@
 #pragma once
-// Clamping compensation (reference::ClampCompensation) on a thread of its own, so that its CPU
-// passes run while the GPU shades VPL batches rather than after them (issue 13). The thread runs
-// the passes it is allowed and then waits: the render raises the allowance as it shades VPLs, so
-// that the compensation's samples keep pace with the VPLs instead of taking the CPU from them.
+// A CPU image that is added to the VPL image — clamping compensation (reference::ClampCompensation,
+// issue 13) or caustics (reference::CausticTracer, issue 15) — on a thread of its own, so that its
+// passes run while the GPU shades VPL batches rather than after them. The thread runs the passes
+// it is allowed and then waits: the render raises the allowance as it shades VPLs, so that the
+// CPU's samples keep pace with the VPLs instead of taking the CPU from them.
 #include <atomic>
 #include <condition_variable>
 #include <cstdint>
@@ -12,7 +13,6 @@
 #include <thread>
 
 #include "engine/core/image.h"
-#include "engine/reference/clamp_compensation.h"
 
 namespace mvpl::cli {
 
@@ -32,9 +32,35 @@ inline uint32_t rank_passes(uint32_t passes, int rank, int size) {
 // The most passes a fixed-size render waits for (a time budget waits for none).
 inline constexpr uint32_t kFixedRenderPasses = 64;
 
+// What the thread runs passes of: add_pass(), passes() and image(uint32_t*) as ClampCompensation
+// and CausticTracer have them.
+class PassImage {
+public:
+    virtual ~PassImage() = default;
+    virtual void add_pass() = 0;
+    virtual uint32_t passes() const = 0;
+    virtual Image image(uint32_t* passes = nullptr) const = 0;
+};
+
+template <class Estimator>
+class PassImageOf final : public PassImage {
+public:
+    explicit PassImageOf(std::unique_ptr<Estimator> e) : m_estimator(std::move(e)) {}
+    void add_pass() override { m_estimator->add_pass(); }
+    uint32_t passes() const override { return m_estimator->passes(); }
+    Image image(uint32_t* passes = nullptr) const override { return m_estimator->image(passes); }
+
+private:
+    std::unique_ptr<Estimator> m_estimator;
+};
+
 class CompensationThread {
 public:
-    explicit CompensationThread(std::unique_ptr<reference::ClampCompensation> compensation);
+    explicit CompensationThread(std::unique_ptr<PassImage> passes);
+    template <class Estimator>
+    explicit CompensationThread(std::unique_ptr<Estimator> estimator)
+        : CompensationThread(
+              std::unique_ptr<PassImage>(new PassImageOf<Estimator>(std::move(estimator)))) {}
     ~CompensationThread();
     CompensationThread(const CompensationThread&) = delete;
     CompensationThread& operator=(const CompensationThread&) = delete;
@@ -54,7 +80,7 @@ public:
 private:
     void run();
 
-    std::unique_ptr<reference::ClampCompensation> m_compensation;
+    std::unique_ptr<PassImage> m_compensation;
     std::mutex m_mutex;
     std::condition_variable m_wake;
     uint32_t m_allowed = 0;  // guarded by m_mutex

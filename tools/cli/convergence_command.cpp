@@ -111,6 +111,7 @@ int run_convergence(const Args& args) {
     sampler::SamplerSettings settings;  // max depth and seed; the rest is each sampler's default
     RendererArgs renderer_args;
     CompensationArgs compensation_args;
+    bool no_caustics = false;
     bool quiet = false, no_plot = false;
     ArgParser parser(
         "convergence",
@@ -129,6 +130,7 @@ int run_convergence(const Args& args) {
     parser.add_string("--methods", &methods_text, "comma-separated: pt,mc,metropolis");
     add_renderer_options(parser, renderer_args);
     add_compensation_options(parser, compensation_args);
+    add_caustics_option(parser, no_caustics);
     add_seed_option(parser, settings.seed);
     CameraArgs camera;
     add_camera_options(parser, camera);
@@ -185,6 +187,7 @@ int run_convergence(const Args& args) {
     run.quiet = quiet;
     run.compensate = compensation_args.enabled();
     run.compensation_passes = uint32_t(compensation_args.spp);
+    run.caustics = !no_caustics;
     run.cluster = &ranks;
 
     std::vector<ConvergencePoint> all;

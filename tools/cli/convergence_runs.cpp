@@ -7,6 +7,8 @@
 #include "engine/core/progress.h"
 #include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
+#include "engine/reference/caustic_tracer.h"
+#include "engine/reference/clamp_compensation.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/render/vpl_renderer.h"
 #include "tools/cli/compensation_thread.h"
@@ -112,32 +114,37 @@ std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run) {
 namespace {
 
 // The image of a VPL run shared by ranks, on rank 0 (others: empty): the ranks' contributions
-// and compensation sums added there and resolved, as render_runs.cpp's finish_shared does.
+// and the CPU images' pass sums (compensation, caustics; null: none) added there and resolved,
+// as render_runs.cpp's finish_shared does.
 Image shared_image(cluster::Cluster& ranks, render::VplRenderer& renderer, double scale,
-                   uint64_t vpls, const CompensationThread* compensation) {
-    Image sum, part;
-    std::vector<double> passes(1, 0.0);
+                   uint64_t vpls, const std::vector<const CompensationThread*>& threads) {
+    Image sum;
+    std::vector<Image> parts(threads.size());
+    std::vector<double> passes(threads.size(), 0.0);
     cluster::together(ranks, [&] {
         sum = renderer.contributions();
-        if (!compensation) return;
-        uint32_t n = 0;
-        part = compensation->snapshot(&n);
-        passes[0] = double(n);
-        for (Rgb& c : part.pixels())
-            c *= float(n);
+        for (size_t t = 0; t < threads.size(); ++t) {
+            if (!threads[t]) continue;
+            uint32_t n = 0;
+            parts[t] = threads[t]->snapshot(&n);
+            passes[t] = double(n);
+            for (Rgb& c : parts[t].pixels())
+                c *= float(n);
+        }
     });
     ranks.sum_to_root(sum.channels());
-    if (compensation) {
-        ranks.sum_to_root(part.channels());
-        ranks.sum_all(passes);
+    for (size_t t = 0; t < threads.size(); ++t) {
+        if (threads[t]) ranks.sum_to_root(parts[t].channels());
     }
+    ranks.sum_all(passes);
     Image image;
     cluster::together(ranks, [&] {
         if (!ranks.root()) return;
         image = renderer.resolve(scale, sum, vpls);
-        if (compensation && passes[0] > 0.0) {
+        for (size_t t = 0; t < threads.size(); ++t) {
+            if (!threads[t] || !(passes[t] > 0.0)) continue;
             for (size_t i = 0; i < image.pixels().size(); ++i)
-                image.pixels()[i] += part.pixels()[i] * float(1.0 / passes[0]);
+                image.pixels()[i] += parts[t].pixels()[i] * float(1.0 / passes[t]);
         }
     });
     return image;
@@ -154,24 +161,46 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     start_together(ranks);
     Timer timer;
     const session::SceneSession& s = *run.session;
+    render::RenderOptions o = options;
+    o.width = uint32_t(run.reference->width());
+    o.height = uint32_t(run.reference->height());
+    o.subpixel_rotation = subpixel_rotation(run.seed);
+    o.chain_seed = run.seed;
+    std::unique_ptr<CompensationThread> compensation, caustics;
+    // Passes of the job allowed so far: each rank runs every R-th (rank_passes).
+    auto allow = [&](uint32_t passes) {
+        const uint32_t mine = rank_passes(passes, ranks.rank(), ranks.size());
+        if (compensation) compensation->allow(mine);
+        if (caustics) caustics->allow(mine);
+    };
+    // First the caustic tracer, which decides the light tracer's VPLs (path_partition.h).
+    cluster::together(ranks, [&] {
+        if (run.caustics) {
+            reference::CausticOptions k;
+            k.width = int(o.width);
+            k.height = int(o.height);
+            k.max_depth = run.max_depth;
+            k.rr_depth = settings.tracer.rr_depth;
+            k.specular = o.chains;
+            k.clamp = run.compensate ? o.clamp : 0.0f;  // the compensation's share (see there)
+            k.seed = run.seed;
+            k.first_pass = uint32_t(ranks.rank());
+            k.pass_stride = uint32_t(ranks.size());
+            auto tracer =
+                std::make_unique<reference::CausticTracer>(s.scene(), s.accel(), s.lights(), k);
+            if (tracer->active())
+                caustics = std::make_unique<CompensationThread>(std::move(tracer));
+        }
+    });
     sampler::SamplerSettings sampler_settings = settings;
     if (shared) sampler_settings.cluster = &ranks;
+    if (caustics) sampler_settings.tracer.specular = o.chains;
     std::unique_ptr<sampler::VplStream> stream;
     // The Metropolis bootstrap meets the other ranks inside (its own agreement points).
     cluster::together(ranks, [&] {
         stream = sampler::make_vpl_stream(name, s.scene(), s.accel(), s.lights(), s.camera(),
                                           sampler_settings);
     });
-    render::RenderOptions o = options;
-    o.width = uint32_t(run.reference->width());
-    o.height = uint32_t(run.reference->height());
-    o.subpixel_rotation = subpixel_rotation(run.seed);
-    o.chain_seed = run.seed;
-    std::unique_ptr<CompensationThread> compensation;
-    // Passes of the job allowed so far: each rank runs every R-th (rank_passes).
-    auto allow = [&](uint32_t passes) {
-        compensation->allow(rank_passes(passes, ranks.rank(), ranks.size()));
-    };
     cluster::together(ranks, [&] {
         renderer.begin(s.camera(), o);
         if (!run.compensate) return;
@@ -188,8 +217,8 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
             std::make_unique<reference::ClampCompensation>(s.scene(), s.accel(), s.lights(), c);
         if (passes->active())
             compensation = std::make_unique<CompensationThread>(std::move(passes));
-        if (compensation && run.compensation_passes > 0) allow(run.compensation_passes);
     });
+    if (run.compensation_passes > 0) allow(run.compensation_passes);
 
     std::vector<ConvergencePoint> points;
     Progress progress(name, tenths(run.budget_seconds), run.quiet);
@@ -211,14 +240,17 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
             }
         });
         vpls = shared ? stream->vpls_total() : vpls + chunk.size();
-        if (compensation && run.compensation_passes == 0) allow(paced_compensation_passes(vpls));
+        if ((compensation || caustics) && run.compensation_passes == 0)
+            allow(paced_compensation_passes(vpls));
         Image image;
         if (shared) {
-            image = shared_image(ranks, renderer, stream->scale(), vpls, compensation.get());
+            image = shared_image(ranks, renderer, stream->scale(), vpls,
+                                 {compensation.get(), caustics.get()});
         } else {
             image = renderer.resolve(stream->scale());
-            if (compensation) {
-                const Image part = compensation->snapshot();
+            for (const CompensationThread* thread : {compensation.get(), caustics.get()}) {
+                if (!thread) continue;
+                const Image part = thread->snapshot();
                 for (size_t i = 0; i < image.pixels().size(); ++i)
                     image.pixels()[i] += part.pixels()[i];
             }

@@ -29,6 +29,9 @@ struct ConvergenceRun {
     // pixel, or 0: paced by the VPLs shaded.
     bool compensate = false;
     uint32_t compensation_passes = 0;
+    // And caustics (reference/caustic_tracer.h), paced as the compensation, with the chains' class
+    // of the run's render options (the light tracer then leaves no VPL there).
+    bool caustics = false;
     // The ranks that share each chunk (every rank runs the same calls); null: this process alone.
     // The points' seconds are rank 0's wall time, and only rank 0 gets points (others: none).
     cluster::Cluster* cluster = nullptr;

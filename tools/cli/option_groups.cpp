@@ -144,6 +144,13 @@ void add_compensation_options(ArgParser& parser, CompensationArgs& args) {
     });
 }
 
+void add_caustics_option(ArgParser& parser, bool& no_caustics) {
+    parser.add_flag("--no-caustics", &no_caustics,
+                    "no light tracing of caustics (light through glass or off near-mirrors onto "
+                    "rough surfaces) on a CPU thread beside the GPU; near-mirrors get VPLs instead "
+                    "and light through glass is lost");
+}
+
 void add_sampler_option(ArgParser& parser, std::string& name) {
     parser.add_string("--sampler", &name, "VPL sampler: mc (default) or metropolis");
     parser.add_check([&parser, &name] {

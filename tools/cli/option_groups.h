@@ -65,6 +65,10 @@ struct CompensationArgs {
 };
 void add_compensation_options(ArgParser& parser, CompensationArgs& args);
 
+// --no-caustics: no caustic tracer (engine/reference/caustic_tracer.h) beside the GPU; the light
+// tracer then leaves VPLs on near-specular surfaces again.
+void add_caustics_option(ArgParser& parser, bool& no_caustics);
+
 // --sampler: a name of sampler::sampler_names().
 void add_sampler_option(ArgParser& parser, std::string& name);
 

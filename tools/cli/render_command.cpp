@@ -40,6 +40,7 @@ struct RenderArgs {
     int device = -1;
     bool qmc = false, oracle = false, quiet = false;
     CompensationArgs compensation;
+    bool no_caustics = false;
     std::string dump_shaders;
     bool no_shader_cache = false;
     float time_budget = 0.0f;
@@ -71,6 +72,7 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
     add_device_option(parser, a.device, "Vulkan device index (see mvpl info); -1 = default");
     add_compensation_options(parser, a.compensation);
+    add_caustics_option(parser, a.no_caustics);
     parser.add_flag("--oracle", &a.oracle,
                     "shade on the CPU with exact visibility instead of the GPU");
     parser.add_flag("--quiet", &a.quiet, "no progress bar and no summary line");
@@ -135,6 +137,16 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     c.vsl_radius = a.renderer.vsl();
     c.max_depth = max_depth;
     c.seed = s.seed;
+    // Paired with the chains: what they continue leaves no VPL, the caustic tracer carries it.
+    job.caustics = !a.no_caustics;
+    reference::CausticOptions& k = job.caustic;
+    k.width = a.width;
+    k.height = a.height;
+    k.max_depth = max_depth;
+    k.rr_depth = s.tracer.rr_depth;
+    k.specular = ro.chains;
+    k.clamp = job.compensate ? c.clamp : 0.0f;  // the compensation's share of near vertices
+    k.seed = s.seed;
     return job;
 }
 

@@ -85,9 +85,22 @@ public:
                 if (m_compensation && job.compensation_passes > 0)
                     m_compensation->allow(my_passes(job.compensation_passes));
             }
+            if (job.caustics) {
+                reference::CausticOptions options = job.caustic;
+                options.first_pass = uint32_t(m_ranks.rank());
+                options.pass_stride = uint32_t(m_ranks.size());
+                auto caustics = std::make_unique<reference::CausticTracer>(
+                    m_session.scene(), m_session.accel(), m_session.lights(), options);
+                if (caustics->active())
+                    m_caustics = std::make_unique<CompensationThread>(std::move(caustics));
+                if (m_caustics && job.compensation_passes > 0)
+                    m_caustics->allow(my_passes(job.compensation_passes));
+            }
         });
         Timer setup;
         sampler::SamplerSettings settings = job.settings;
+        // The caustic tracer carries the light of the chains' class: no VPL there.
+        if (m_caustics) settings.tracer.specular = job.caustic.specular;
         if (shared()) settings.cluster = &m_ranks;
         const session::SceneSession& s = m_session;
         // The Metropolis bootstrap meets the other ranks inside (its own agreement points).
@@ -125,9 +138,12 @@ public:
         });
         m_result.shading_seconds += shading.seconds();
         m_result.vpls = m_stream->vpls_total();
-        if (m_compensation && m_job.compensation_passes == 0)
-            m_compensation->allow(my_passes(paced_compensation_passes(
-                m_result.vpls, m_open_ended ? uint32_t(1) << 20 : kFixedRenderPasses)));
+        if (m_job.compensation_passes == 0) {
+            const uint32_t paced = my_passes(paced_compensation_passes(
+                m_result.vpls, m_open_ended ? uint32_t(1) << 20 : kFixedRenderPasses));
+            if (m_compensation) m_compensation->allow(paced);
+            if (m_caustics) m_caustics->allow(paced);
+        }
     }
 
     // The image: scale · Σ contributions + the emitted radiance seen directly.
@@ -153,6 +169,10 @@ public:
             add_image(m_result.image, m_compensation->finish(!m_open_ended));
             m_result.compensation_passes = m_compensation->passes();
         }
+        if (m_caustics) {
+            add_image(m_result.image, m_caustics->finish(!m_open_ended));
+            m_result.caustic_passes = m_caustics->passes();
+        }
         m_result.shading_seconds += shading.seconds();
     }
 
@@ -164,21 +184,24 @@ private:
         return rank_passes(passes, m_ranks.rank(), m_ranks.size());
     }
 
-    // Over ranks: the contributions and the compensation passes summed to rank 0, which resolves.
+    // Over ranks: the contributions and the CPU images' passes (compensation, caustics) summed
+    // to rank 0, which resolves.
     void finish_shared() {
         Timer shading;
-        Image sum, compensation;
-        std::vector<double> passes(1, 0.0);
+        Image sum, compensation, caustics;
+        std::vector<double> passes(2, 0.0);
+        // Fixed size: the job's passes, of which rank 0's share is never empty; a time budget:
+        // those done, at least one on rank 0. The image is the sum over this rank's passes.
+        auto finish_thread = [&](CompensationThread& thread, Image& image, double& count) {
+            image = thread.finish(!m_open_ended, m_ranks.root());
+            count = double(thread.passes());
+            for (Rgb& c : image.pixels())
+                c *= float(count);
+        };
         cluster::together(m_ranks, [&] {
             sum = m_job.renderer->contributions();
-            if (m_compensation) {
-                // Fixed size: the job's passes, of which rank 0's share is never empty; a time
-                // budget: those done, at least one on rank 0.
-                compensation = m_compensation->finish(!m_open_ended, m_ranks.root());
-                passes[0] = double(m_compensation->passes());
-                for (Rgb& c : compensation.pixels())
-                    c *= float(passes[0]);
-            }
+            if (m_compensation) finish_thread(*m_compensation, compensation, passes[0]);
+            if (m_caustics) finish_thread(*m_caustics, caustics, passes[1]);
         });
         // Met first, so that the time is the reduction's, not the wait for the slowest rank.
         std::vector<double> met(1, 0.0);
@@ -188,9 +211,13 @@ private:
         m_result.reduce_bytes = sum.channels().size_bytes();
         if (m_compensation) {
             m_ranks.sum_to_root(compensation.channels());
-            m_ranks.sum_all(passes);
             m_result.reduce_bytes += compensation.channels().size_bytes();
         }
+        if (m_caustics) {
+            m_ranks.sum_to_root(caustics.channels());
+            m_result.reduce_bytes += caustics.channels().size_bytes();
+        }
+        if (m_compensation || m_caustics) m_ranks.sum_all(passes);
         m_result.reduce_seconds = reduce.seconds();
         cluster::together(m_ranks, [&] {
             if (!m_ranks.root()) return;
@@ -198,8 +225,11 @@ private:
             m_result.timings = m_job.renderer->timings();
             if (m_compensation && passes[0] > 0.0)
                 add_image(m_result.image, compensation, float(1.0 / passes[0]));
+            if (m_caustics && passes[1] > 0.0)
+                add_image(m_result.image, caustics, float(1.0 / passes[1]));
         });
         m_result.compensation_passes = uint32_t(passes[0]);
+        m_result.caustic_passes = uint32_t(passes[1]);
         m_result.shading_seconds += shading.seconds();
     }
 
@@ -214,6 +244,7 @@ private:
     Image m_sum;
     std::vector<light::Vpl> m_chunk;
     std::unique_ptr<CompensationThread> m_compensation;
+    std::unique_ptr<CompensationThread> m_caustics;
 };
 
 }  // namespace
@@ -277,6 +308,8 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
     }
     if (r.compensation_passes > 0)
         pass_times += "; compensation " + std::to_string(r.compensation_passes) + " spp";
+    if (r.caustic_passes > 0)
+        pass_times += "; caustics " + std::to_string(r.caustic_passes) + " passes";
     if (job.cluster) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "; %d ranks, images summed in %.1f ms (%.1f MB a rank)",

@@ -7,6 +7,7 @@
 
 #include "engine/cluster/cluster.h"
 #include "engine/core/image.h"
+#include "engine/reference/caustic_tracer.h"
 #include "engine/reference/clamp_compensation.h"
 #include "engine/reference/vpl_gather.h"
 #include "engine/render/vpl_renderer.h"
@@ -30,6 +31,11 @@ struct RenderJob {
     bool compensate = false;
     uint32_t compensation_passes = 0;
     reference::CompensationOptions compensation;
+    // Caustics (reference/caustic_tracer.h) on another CPU thread, paced as the compensation,
+    // where the scene has vertices that leave no VPL; then the sampler's light tracer leaves no
+    // VPL on the chains' class either (`caustic.specular`: light/path_partition.h).
+    bool caustics = false;
+    reference::CausticOptions caustic;
     bool quiet = false;
     // The ranks that share the render (engine/cluster): each samples and shades its share, rank 0
     // sums the images and alone gets the outcome's image. Null: this process alone.
@@ -46,6 +52,7 @@ struct RenderOutcome {
     std::string statistics;         // the sampler's, may be empty
     render::RenderTimings timings;  // GPU only
     uint32_t compensation_passes = 0;
+    uint32_t caustic_passes = 0;  // 0: no caustic tracer ran
     // Over ranks: the seconds of summing the images to rank 0 and the bytes each rank sent.
     double reduce_seconds = 0.0;
     uint64_t reduce_bytes = 0;
