@@ -61,7 +61,8 @@ struct CausticTracer::Impl {
     float tan_half = 1.0f;
     float aspect = 1.0f;
     float inv_pixel_area = 1.0f;
-    float d_min2 = 0.0f;  // the compensation's d_min² (header comment); 0 without it
+    float d_min2 = 0.0f;     // the compensation's d_min² (header comment); 0 without it
+    bool lobe_wise = false;  // the compensation's share is the diffuse lobes' alone
     // The emitters' probabilities after the pilot (header comment) and their running sum;
     // empty before it: by power.
     std::vector<float> pick;
@@ -90,11 +91,14 @@ struct CausticTracer::Impl {
         const float area = sqr(2.0f * tan_half) * aspect / (float(o.width) * float(o.height));
         inv_pixel_area = 1.0f / area;
         d_min2 = sqr(o.clamp * s.bounds().diagonal());
+        lobe_wise = o.vsl_radius > 0.0f;
     }
 
     // β · f · |n_g·ω_cam| / d² · W_e of light-path vertex p lit from wi_world, into the pixel it
     // projects to, if the camera sees p there as a receiver (header comment).
-    void splat(const Vec3& p, const Vec3& wi_world, const Rgb& beta,
+    // `overlap` (per channel) times f_D (lobe_wise) or f at p is the compensation's share, left
+    // out (header comment).
+    void splat(const Vec3& p, const Vec3& wi_world, const Rgb& beta, const Rgb& overlap,
                std::vector<Splat>& out) const {
         const Vec3 from_eye = p - eye;
         const float d2 = glm::dot(from_eye, from_eye);
@@ -128,8 +132,12 @@ struct CausticTracer::Impl {
         if (!trace::same_side(wi_world, sp.ng, wi.z)) return;
         const Rgb f = sp.bsdf.eval(wo, wi);
         if (is_black(f)) return;
+        Rgb kept = beta * f;
+        if (!is_black(overlap))
+            kept = glm::max(kept - overlap * (lobe_wise ? sp.bsdf.eval_diffuse(wo, wi) : f),
+                            Rgb(0.0f));
         const float importance = inv_pixel_area / (cos_theta * cos_theta * cos_theta);
-        const Rgb value = beta * f * (std::abs(glm::dot(sp.ng, wo_world)) / d2 * importance);
+        const Rgb value = kept * (std::abs(glm::dot(sp.ng, wo_world)) / d2 * importance);
         if (!is_finite(value)) return;
         const size_t x = std::min(size_t(film.x), size_t(options.width - 1));
         const size_t y = std::min(size_t(film.y), size_t(options.height - 1));
@@ -169,6 +177,7 @@ struct CausticTracer::Impl {
             options.max_depth < 0 ? std::numeric_limits<int>::max() : options.max_depth - 1;
         bool covered = true;  // x_0's emitter VPL lights x_1
         Vec3 previous = es.p;
+        Rgb previous_diffuse(0.0f);  // f_D/f of the last bounce (lobe-wise compensation)
         for (int length = 1; length <= max_length; ++length) {
             const std::optional<trace::Hit> hit = accel.intersect(ray);
             if (!hit) break;
@@ -184,8 +193,9 @@ struct CausticTracer::Impl {
                 // The compensation's share is its own (header comment).
                 const Vec3 d = sp.p - previous;
                 const float d2 = glm::dot(d, d);
-                const Rgb weight = d2 < d_min2 ? beta * (d2 / d_min2) : beta;
-                splat(sp.p, wi_world, weight, out);
+                const float near = d2 < d_min2 ? 1.0f - d2 / d_min2 : 0.0f;
+                const Rgb overlap = near * (lobe_wise ? beta * previous_diffuse : beta);
+                splat(sp.p, wi_world, beta, overlap, out);
             }
             previous = sp.p;
             if (length == max_length) break;
@@ -200,6 +210,13 @@ struct CausticTracer::Impl {
             if (!trace::same_side(wo_world, sp.ng, bs->wi.z)) break;
             beta *= bs->weight * (glm::dot(wo_world, sp.ng) / bs->wi.z);
             if (!is_finite(beta)) break;
+            if (lobe_wise && d_min2 > 0.0f) {
+                const Rgb f = sp.bsdf.eval(wi, bs->wi);
+                const Rgb fd = sp.bsdf.eval_diffuse(wi, bs->wi);
+                previous_diffuse =
+                    Rgb(f.r > 0.0f ? fd.r / f.r : 0.0f, f.g > 0.0f ? fd.g / f.g : 0.0f,
+                        f.b > 0.0f ? fd.b / f.b : 0.0f);
+            }
             // A VPL here reflects towards the side it was lit on (path_partition.h).
             covered = light::leaves_vpl(sp.bsdf, wi, options.specular) && bs->wi.z > 0.0f;
             if (length + 3 >= options.rr_depth) {

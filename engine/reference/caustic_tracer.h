@@ -25,9 +25,13 @@
 // plane), which must find x_j.
 //
 // With clamping compensation (clamp_compensation.h) beside it, a vertex x_j nearer than d_min to
-// x_{j−1} is weighted by d²/d_min²: the compensation samples x_{j−1} from the receiver x_j and adds
-// the share 1 − d²/d_min² of all the light leaving it (the path tracer's radiance), this path
-// included, although no VPL gave the clamped rest; the two shares add to one.
+// x_{j−1} leaves the compensation its share: the compensation samples x_{j−1} from the receiver
+// x_j and adds the share 1 − d²/d_min² of the light leaving it, this path included, although no
+// VPL gave the clamped rest. The full compensation (point VPLs) takes that share of all of it, so
+// the vertex is weighted by d²/d_min²; the lobe-wise one (virtual spherical lights:
+// CompensationOptions::vsl_radius > 0) only of the product of the two diffuse lobes, f_D(x_j) at
+// the receiver and f_D(x_{j−1}) at the vertex before, so the vertex keeps
+// f(x_j) f(x_{j−1}) − (1 − d²/d_min²) f_D(x_j) f_D(x_{j−1}). Either way the two add to one.
 //
 // Which light a path starts from: global pass 0 (the pilot, whichever rank or object runs it)
 // picks by power, as the VPLs' light paths, and measures each emitter's caustic light; every later
@@ -61,6 +65,8 @@ struct CausticOptions {
     // The clamping compensation's d_min as a fraction of the scene's diagonal when it runs beside
     // (CompensationOptions::clamp), else 0.
     float clamp = 0.0f;
+    // CompensationOptions::vsl_radius of that compensation: > 0 when it is lobe-wise.
+    float vsl_radius = 0.0f;
     uint64_t seed = 0;
     uint64_t paths_per_pass = 0;  // 0: width × height
     // As CompensationOptions: pass i is pass first_pass + i · pass_stride of the seed's sequence.

@@ -8,6 +8,7 @@
 
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
+#include "engine/light/specular_chain.h"
 #include "engine/light/vpl_contribution.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/scene/camera.h"
@@ -77,25 +78,43 @@ struct ClampCompensation::Impl {
         const Vec2 film(float(x) + rng.next_float(), float(y) + rng.next_float());
         const scene::CameraRay cr =
             scene::generate_camera_ray(scene.camera, options.width, options.height, film);
-        const std::optional<light::Receiver> r =
-            light::make_receiver(scene, accel, trace::Ray{cr.origin, cr.direction});
+        const trace::Ray camera_ray{cr.origin, cr.direction};
+        // The receiver the VPLs light: the first hit, or the rough end of its chain.
+        std::optional<light::Receiver> r;
+        Rgb throughput(1.0f);
+        int bounces = 0;
+        if (options.chains.enabled()) {
+            light::ChainedReceiver c =
+                light::make_chained_receiver(scene, accel, camera_ray, rng, options.chains);
+            r = std::move(c.receiver);
+            throughput = c.throughput;
+            bounces = int(c.bounces);
+        } else {
+            r = light::make_receiver(scene, accel, camera_ray);
+        }
         if (!r) return Rgb(0.0f);
-        Rgb out = punctual_part(*r);
+        return throughput * compensate(*r, rng, bounces);
+    }
+
+    // What the clamp leaves out at receiver r, reached after `bounces` glossy vertices.
+    Rgb compensate(const light::Receiver& r, Rng& rng, int bounces) const {
+        // The path tracer goes on from the receiver: one segment fewer than the whole path.
+        const int depth = options.max_depth < 0 ? -1 : options.max_depth - 1 - bounces;
+        if (depth == 0) return Rgb(0.0f);
+        Rgb out = punctual_part(r);
         const float u_lobe = rng.next_float();
         const Vec2 u(rng.next_float(), rng.next_float());
         // Lobe by lobe (VSLs): f_D from its own density, L_D beyond (clamp_compensation.h).
         const bool by_lobe = options.vsl_radius > 0.0f;
         const std::optional<material::BsdfSample> bs =
-            by_lobe ? r->sp.bsdf.sample_diffuse(r->wo, u) : r->sp.bsdf.sample(r->wo, u, u_lobe);
+            by_lobe ? r.sp.bsdf.sample_diffuse(r.wo, u) : r.sp.bsdf.sample(r.wo, u, u_lobe);
         if (!bs) return out;
-        const Vec3 wi_world = glm::normalize(r->sp.frame.to_world(bs->wi));
-        if (glm::dot(wi_world, r->sp.ng) <= 0.0f) return out;
-        trace::Ray ray = trace::spawn_ray(r->sp.p, r->sp.ng, wi_world);
+        const Vec3 wi_world = glm::normalize(r.sp.frame.to_world(bs->wi));
+        if (glm::dot(wi_world, r.sp.ng) <= 0.0f) return out;
+        trace::Ray ray = trace::spawn_ray(r.sp.p, r.sp.ng, wi_world);
         ray.tmax = d_min;
         const std::optional<trace::Hit> hit = accel.intersect(ray);
         if (!hit) return out;
-        // The path tracer goes on from the receiver: one segment fewer than the whole path.
-        const int depth = options.max_depth < 0 ? -1 : options.max_depth - 1;
         const Rgb L =
             path_tracer.radiance(ray, rng, depth, std::max(1, options.rr_depth - 1), false,
                                  by_lobe ? FirstVertex::DiffuseLobe : FirstVertex::AllLobes);

@@ -32,6 +32,7 @@
 #include <memory>
 
 #include "engine/core/image.h"
+#include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
@@ -49,6 +50,10 @@ struct CompensationOptions {
     float vsl_radius = light::kDefaultVslRadius;
     int max_depth = 6;  // of the whole path, camera included; < 0: unlimited
     int rr_depth = 5;
+    // The renderer's specular chains (light/specular_chain.h): a pixel they continue is
+    // compensated at the rough end of its chain, weighted by its throughput, where the VPLs light
+    // it, and not at its glossy first vertex, whose reflection the chain carries all of.
+    light::ChainOptions chains;
     uint64_t seed = 0;
     // Pass i of this object is pass first_pass + i · pass_stride of the sequence the seed defines:
     // ranks of a cluster run every R-th pass from their rank, so that together they run one

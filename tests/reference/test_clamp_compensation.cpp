@@ -8,12 +8,14 @@
 #include <cstdio>
 #include <vector>
 
+#include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
 #include "engine/reference/clamp_compensation.h"
 #include "engine/reference/vpl_gather.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
 #include "sampler/monte_carlo_stream.h"
+#include "tests/support/mirror_box.h"
 #include "tests/support/sample_statistics.h"
 
 namespace mvpl {
@@ -230,6 +232,51 @@ TEST(ClampCompensation, NothingToCompensateWithoutClampOrIndirectPaths) {
     EXPECT_FALSE(reference::ClampCompensation(scene, accel, lights, c).active());
     c.max_depth = 2;  // direct light: emitter VPLs are clamped too
     EXPECT_TRUE(reference::ClampCompensation(scene, accel, lights, c).active());
+}
+
+// Issue 15's chains: a pixel whose first vertex is a mirror is lit by the VPLs at the rough end
+// of its chain, so the clamp removes light there, and the mirror's own reflection is the chain's.
+// The compensation must follow the chain (CompensationOptions::chains): clamped + compensation −
+// unclamped vanishes in the mean over the whole image; compensated at the mirror instead, it adds
+// the mirror's near reflections a second time (d_min = 0.2 diagonals ≈ 0.69 m reaches the walls
+// from the sphere) and overshoots — asserted, measured in the printout.
+TEST(ClampCompensation, ChainedPixelsAreCompensatedAtTheChainsEnd) {
+    const scene::Scene scene = test::make_mirror_box();
+    const trace::Accel accel(scene);
+    const light::LightSampler lights(scene);
+    constexpr int kRuns = 24, kRes = 16, kPasses = 64;
+    constexpr uint64_t kPaths = 256;
+    constexpr float kClamp = 0.2f;
+    reference::GatherOptions g;
+    g.width = g.height = kRes;
+    g.max_depth = 0;  // no emitted radiance: VPL light only (the chains' too)
+    g.vsl_radius = 0.0f;
+    g.subpixel.vpls_per_position = 4;
+    g.chains.max_roughness = light::kDefaultChainRoughness;
+    std::vector<double> left, at_mirror;
+    for (int r = 0; r < kRuns; ++r) {
+        g.chain_seed = 7000 + uint64_t(r);
+        const auto [unclamped, clamped] =
+            gather_paired(scene, accel, lights, g, 7000 + uint64_t(r), kPaths, kClamp);
+        reference::CompensationOptions c;
+        c.width = c.height = kRes;
+        c.clamp = kClamp;
+        c.vsl_radius = 0.0f;
+        c.max_depth = 6;
+        c.seed = 8000 + uint64_t(r);
+        c.chains = g.chains;
+        const double chained = compensation_regions(scene, accel, lights, c, kPasses)[0];
+        c.chains = light::ChainOptions{};
+        const double first_hit = compensation_regions(scene, accel, lights, c, kPasses)[0];
+        left.push_back(clamped[0] + chained - unclamped[0]);
+        at_mirror.push_back(clamped[0] + first_hit - unclamped[0]);
+    }
+    const test::MeanAndError rest = mean_and_error(left);
+    const test::MeanAndError wrong = mean_and_error(at_mirror);
+    std::printf("left %.4g ± %.2g; compensated at the mirror %.4g ± %.2g\n", rest.mean,
+                rest.standard_error, wrong.mean, wrong.standard_error);
+    EXPECT_LT(std::abs(rest.mean), 3.5 * rest.standard_error);
+    EXPECT_GT(wrong.mean, 4.0 * wrong.standard_error);
 }
 
 }  // namespace

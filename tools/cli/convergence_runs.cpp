@@ -183,6 +183,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
             k.rr_depth = settings.tracer.rr_depth;
             k.specular = o.chains;
             k.clamp = run.compensate ? o.clamp : 0.0f;  // the compensation's share (see there)
+            k.vsl_radius = o.vsl_radius;                // lobe-wise or all (caustic_tracer.h)
             k.seed = run.seed;
             k.first_pass = uint32_t(ranks.rank());
             k.pass_stride = uint32_t(ranks.size());
@@ -210,6 +211,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
         c.clamp = o.clamp;
         c.vsl_radius = o.vsl_radius;
         c.max_depth = run.max_depth;
+        c.chains = o.chains;  // compensated where the VPLs light: at the chains' ends
         c.seed = run.seed;
         c.first_pass = uint32_t(ranks.rank());
         c.pass_stride = uint32_t(ranks.size());

@@ -136,6 +136,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     c.clamp = a.renderer.clamp;
     c.vsl_radius = a.renderer.vsl();
     c.max_depth = max_depth;
+    c.chains = ro.chains;  // compensated where the VPLs light: at the chains' ends
     c.seed = s.seed;
     // Paired with the chains: what they continue leaves no VPL, the caustic tracer carries it.
     job.caustics = !a.no_caustics;
@@ -146,6 +147,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     k.rr_depth = s.tracer.rr_depth;
     k.specular = ro.chains;
     k.clamp = job.compensate ? c.clamp : 0.0f;  // the compensation's share of near vertices
+    k.vsl_radius = c.vsl_radius;                // which share: lobe-wise or all
     k.seed = s.seed;
     return job;
 }
