@@ -8,6 +8,9 @@ namespace mvpl::light {
 // (docs/results.md, "Specular chains": where VPL shading stops converging at the VPL counts users
 // run).
 inline constexpr float kDefaultChainRoughness = 0.2f;
+// Sub-pixel samples of the light glossy pixels reflect directly, per position (ChainOptions::
+// emission_samples) as `mvpl render` sets it (docs/results.md, "Stop 25").
+inline constexpr int kDefaultChainEmissionSamples = 8;
 
 struct ChainOptions {
     // Surfaces whose perceptual roughness is at most this (and that have a specular lobe) are
@@ -17,6 +20,11 @@ struct ChainOptions {
     int max_bounces = 8;
     // Mitsuba's max_depth (< 0 unlimited): bounds the chain and the VPLs it may use.
     int max_depth = -1;
+    // Sub-pixel samples per position of the light the chains meet (their emitters, and the
+    // lights their glossy vertices reflect), in pixels whose centre is continued: a highlight
+    // smaller than a pixel varies within it far more than the VPL light at the chains' ends, whose
+    // receiver stays the position's own (specular_chain.h, pixel_chain_emission).
+    int emission_samples = 1;
 
     bool enabled() const { return max_roughness >= 0.0f; }
 };

@@ -6,6 +6,7 @@
 
 #include "engine/core/sampling.h"
 #include "engine/light/light_sampler.h"
+#include "engine/scene/camera.h"
 #include "engine/trace/shading_point.h"
 
 namespace mvpl::light {
@@ -153,6 +154,30 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
         prev_p = sp.p;
         ray = trace::spawn_ray(sp.p, sp.ng, wi_world);
     }
+}
+
+Rgb pixel_chain_emission(const scene::Scene& scene, const trace::Accel& accel, int width,
+                         int height, int x, int y, const ChainedReceiver& first, Rng& rng,
+                         const ChainOptions& options, const LightSampler* lights) {
+    const int samples = options.emission_samples;
+    if (samples <= 1) return first.chain_emitted;
+    const auto ray_through = [&](const Vec2& offset) {
+        const scene::CameraRay cr = scene::generate_camera_ray(
+            scene.camera, width, height, Vec2(float(x) + offset.x, float(y) + offset.y));
+        return trace::Ray{cr.origin, cr.direction};
+    };
+    const std::optional<Receiver> centre =
+        make_receiver(scene, accel, ray_through(Vec2(0.5f)), nullptr, true, true);
+    if (!centre || !continues_chain(centre->sp.bsdf, centre->wo, options))
+        return first.chain_emitted;
+    Rgb sum = first.chain_emitted;
+    for (int k = 1; k < samples; ++k) {
+        const Vec2 offset(rng.next_float(), rng.next_float());
+        sum +=
+            make_chained_receiver(scene, accel, ray_through(offset), rng, options, nullptr, lights)
+                .chain_emitted;
+    }
+    return sum / float(samples);
 }
 
 }  // namespace mvpl::light

@@ -71,6 +71,15 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
                                       const ChainOptions& options, Rgb* emitted = nullptr,
                                       const LightSampler* lights = nullptr);
 
+// The light the chains of pixel (x, y) of a width × height image meet at one sub-pixel
+// position: `first`'s (the position's own chain) where options.emission_samples ≤ 1 or the ray
+// through the pixel's centre is not continued, else the mean of it and emission_samples − 1
+// chains through uniform random points of the pixel drawn from `rng` (each unbiased, and
+// whether to draw them does not depend on them).
+Rgb pixel_chain_emission(const scene::Scene& scene, const trace::Accel& accel, int width,
+                         int height, int x, int y, const ChainedReceiver& first, Rng& rng,
+                         const ChainOptions& options, const LightSampler* lights);
+
 // The generator of a pixel's chain at one sub-pixel position: the same on the CPU oracle and
 // for the GPU renderer's chain layer, so both follow the same paths.
 inline Rng chain_rng(uint64_t seed, uint64_t pixel, uint64_t position) {

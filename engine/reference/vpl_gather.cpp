@@ -59,7 +59,10 @@ Rgb shade_pixel(const Gather& g, int x, int y) {
                                    uint64_t(y) * uint64_t(g.options.width) + uint64_t(x), p);
         const light::ChainedReceiver chained = light::make_chained_receiver(
             g.scene, g.accel, ray, rng, g.options.chains, emission ? &emitted : nullptr, g.lights);
-        if (emission) emitted += chained.chain_emitted;
+        if (emission)
+            emitted +=
+                light::pixel_chain_emission(g.scene, g.accel, g.options.width, g.options.height, x,
+                                            y, chained, rng, g.options.chains, g.lights);
         if (chained.receiver) {
             DVec3 part(0.0);
             for (size_t k = i; k < end; ++k) {

@@ -78,7 +78,10 @@ void ChainLayer::trace(const scene::Camera& camera, Vec2 offset, uint64_t positi
                     m_scene, m_accel, trace::Ray{cr.origin, cr.direction}, rng, options, nullptr,
                     m_lights.get());
                 // A pixel whose first vertex is rough keeps the G-buffer's receiver.
-                const ChainRecord r = c.continued ? to_record(c) : ChainRecord{};
+                ChainRecord r = c.continued ? to_record(c) : ChainRecord{};
+                put(r.emitted,
+                    light::pixel_chain_emission(m_scene, m_accel, int(m_width), int(m_height),
+                                                int(x), int(y), c, rng, options, m_lights.get()));
                 std::memcpy(&records[pixel], &r, sizeof(r));
             }
         }

@@ -21,6 +21,7 @@
 #include "sampler/monte_carlo_sampler.h"
 #include "tests/support/mirror_box.h"
 #include "tests/support/oracle_against_tracer.h"
+#include "tests/support/sample_statistics.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl::reference {
@@ -246,6 +247,62 @@ TEST(SpecularChain, LightSamplesFindASmallAreaLightInAGlossyMirror) {
     EXPECT_GT(with.mean(), 0.01);
     EXPECT_LT(std::abs(with.mean() - without.mean()), 4.0 * sigma);
     EXPECT_LT(with.variance(), 0.25 * without.variance());
+}
+
+// A point light's highlight on a glossy sphere (roughness 0.15) is smaller than a pixel: the
+// chain of one sub-pixel position hits it or not, and the pixel's light jumps between 0 and many
+// times its mean. pixel_chain_emission's extra samples (ChainOptions::emission_samples)
+// integrate the pixel better without bias: over 96 runs at one position per pixel, the sphere's
+// mean with 8 samples equals that with 1 within 4σ of the difference, and its run-to-run
+// variance falls by at least 3× (measured 9.4×; 10× at roughness 0.1). At roughness 0.05 the
+// highlight's tail is too heavy for 96 runs to estimate either variance (the one-sample runs
+// missed the rare brightest hits that the eight-sample runs caught).
+TEST(SpecularChain, MoreSubPixelSamplesIntegrateAHighlightWithoutBias) {
+    scene::Scene s = test::make_mirror_box();
+    s.materials[3].roughness = 0.15f;
+    scene::Light point;
+    point.type = scene::LightType::Point;
+    point.position = Vec3(0.6f, 0.5f, 0.9f);
+    point.intensity = Rgb(3.0f);
+    s.lights.push_back(point);
+    const trace::Accel accel(s);
+    const light::LightSampler lights(s);
+    light::ChainOptions one;
+    one.max_roughness = light::kDefaultChainRoughness;
+    one.max_depth = 2;
+    light::ChainOptions eight = one;
+    eight.emission_samples = 8;
+    constexpr int kSize = 24, kRuns = 96;
+    std::vector<double> a, b;
+    for (int run = 0; run < kRuns; ++run) {
+        double sum_one = 0.0, sum_eight = 0.0;
+        int n = 0;
+        for (int y = 0; y < kSize; ++y) {
+            for (int x = 0; x < kSize; ++x) {
+                if (!sphere_normal(s.camera, kSize, x, y, test::kMirrorSphereRadius)) continue;
+                Rng rng = light::chain_rng(uint64_t(run), uint64_t(y * kSize + x), 0);
+                const Vec2 offset(rng.next_float(), rng.next_float());
+                const scene::CameraRay cr = scene::generate_camera_ray(
+                    s.camera, kSize, kSize, Vec2(float(x) + offset.x, float(y) + offset.y));
+                const trace::Ray ray{cr.origin, cr.direction};
+                const light::ChainedReceiver first =
+                    light::make_chained_receiver(s, accel, ray, rng, one, nullptr, &lights);
+                sum_one += luminance(first.chain_emitted);
+                sum_eight += luminance(light::pixel_chain_emission(s, accel, kSize, kSize, x, y,
+                                                                   first, rng, eight, &lights));
+                ++n;
+            }
+        }
+        a.push_back(sum_one / n);
+        b.push_back(sum_eight / n);
+    }
+    const test::MeanAndError m1 = test::mean_and_error(a), m8 = test::mean_and_error(b);
+    const double var1 = sqr(m1.standard_error) * kRuns, var8 = sqr(m8.standard_error) * kRuns;
+    std::printf("highlight: 1 sample %.5f (var %.3g), 8 samples %.5f (var %.3g)\n", m1.mean, var1,
+                m8.mean, var8);
+    EXPECT_GT(m8.mean, 0.01);
+    EXPECT_LT(std::abs(m8.mean - m1.mean), 4.0 * std::hypot(m1.standard_error, m8.standard_error));
+    EXPECT_LT(var8, var1 / 3.0);
 }
 
 }  // namespace

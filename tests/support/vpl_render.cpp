@@ -33,6 +33,7 @@ Image gpu_render(gpu::Context& context, const scene::Scene& scene, const light::
     o.jitter = settings.jitter;
     o.chains.max_roughness = settings.chain_roughness;
     o.chains.max_depth = settings.chain_max_depth;
+    o.chains.emission_samples = settings.chain_emission_samples;
     o.chain_seed = settings.chain_seed;
     o.interleave = uint32_t(settings.interleave);
     return renderer.render(vpls, o);
@@ -48,6 +49,7 @@ Image oracle_render(const scene::Scene& scene, const light::VplSet& vpls,
     o.subpixel = {settings.jitter, uint64_t(settings.batch)};
     o.chains.max_roughness = settings.chain_roughness;
     o.chains.max_depth = settings.chain_max_depth;
+    o.chains.emission_samples = settings.chain_emission_samples;
     o.chain_seed = settings.chain_seed;
     o.interleave = settings.interleave;
     return reference::gather_vpls(scene, accel, vpls, o);

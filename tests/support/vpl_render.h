@@ -31,6 +31,7 @@ struct VplRenderSettings {
     // Specular chains (light/specular_chain.h), the same in both renderers; roughness < 0: off.
     float chain_roughness = -1.0f;
     int chain_max_depth = -1;
+    int chain_emission_samples = 1;  // ChainOptions::emission_samples
     uint64_t chain_seed = 0;
     int interleave = 1;  // interleaved sampling (RenderOptions::interleave), in both renderers
 };

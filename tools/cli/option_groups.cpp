@@ -47,6 +47,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_proxy = !no_shadow_proxy;
     o.jitter = !no_jitter;
     o.chains.max_roughness = no_chains ? -1.0f : chain_roughness;
+    o.chains.emission_samples = chain_samples;
     o.hemicube = !no_hemicube;
     o.vpl_culling = !no_vpl_culling;
     o.interleave = uint32_t(interleave);
@@ -102,6 +103,9 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                      "roughness) to the first rougher one, which the VPLs light");
     parser.add_flag("--no-chains", &args.no_chains,
                     "light glossy surfaces with the VPLs directly (no specular chains)");
+    parser.add_int("--chain-samples", &args.chain_samples,
+                   "sub-pixel samples per batch of the light that glossy pixels reflect directly "
+                   "(their highlights), where the pixel's centre is glossy");
     // The renderer's limits: 4096² faces × 6 × a batch must still fit in memory.
     parser.add_check([&parser, &args] {
         if (args.shadow_res < 4 || args.shadow_res > 4096)
@@ -121,6 +125,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
             out_of_range(parser, "--ism-points", "1..2^24");
         if (args.interleave < 1 || args.interleave > 8)
             out_of_range(parser, "--interleave", "1..8");
+        if (args.chain_samples < 1 || args.chain_samples > 64)
+            out_of_range(parser, "--chain-samples", "1..64");
     });
 }
 

@@ -30,6 +30,7 @@ struct RendererArgs {
     bool no_shadow_proxy = false;
     float chain_roughness = light::kDefaultChainRoughness;
     bool no_chains = false;
+    int chain_samples = light::kDefaultChainEmissionSamples;
     bool no_hemicube = false;
     bool no_vpl_culling = false;
     // The command line interleaves (K = 2) by default, where RenderOptions (which the tests set
