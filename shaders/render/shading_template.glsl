@@ -348,8 +348,8 @@ void main() {
 //@endif
     }
     if (pc.interleave > 1u) {
-        // The class's share, K² times: the interleaved batch image, which the filter adds.
-        // (Never with chains: weight is 1 here; ShadingPass refuses the combination.)
+        // The class's share, K² times: the interleaved batch image, which the filter adds. A
+        // chain's weight is left out: the filter applies the pixel's own (shared/interleave.h).
         imageStore(accumulation, px, vec4(float(vpl_step) * sum, 1.0));
     } else {
         const vec4 accumulated = imageLoad(accumulation, px);
