@@ -63,7 +63,7 @@ bool close_to(const Vec3& a, const Vec3& b) {
     return close_to(a.x, b.x) && close_to(a.y, b.y) && close_to(a.z, b.z);
 }
 
-// interleave_filter.comp's compatible_chains, in the same order and precision: a and b both
+// interleave_filter.comp's compatible_chain, in the same order and precision: a and b both
 // kChainReceiver.
 bool compatible_chains(const Texel& a, const Texel& b) {
     if (a.max_vpl_length != b.max_vpl_length || a.closure_type != b.closure_type) return false;

@@ -24,18 +24,39 @@ bool close_to(float a, float b) {
     return abs(a - b) <= kInterleaveAlbedo * max(a, b) + kInterleaveMinAlbedo;
 }
 
-// Two chains' rough ends (both kChainReceiver) receive alike (interleave.h, "Chains"): the
-// G-buffer's surface test on the records' positions and geometric normals, directions towards
-// the chains within the same angle, the same closure and path-length limit.
-bool compatible_chains(ChainRecord a, ChainRecord b) {
-    if (a.max_vpl_length != b.max_vpl_length || a.closure_type != b.closure_type) return false;
-    if (dot(a.geometric_normal, b.geometric_normal) < kInterleaveMinCos) return false;
-    if (dot(a.wo, b.wo) < kInterleaveMinCos) return false;
-    const vec3 d = b.position - a.position;
-    if (abs(dot(a.geometric_normal, d)) > kInterleavePlaneSlope * length(d)) return false;
-    return close_to(a.base_color, b.base_color) && close_to(a.specular_color, b.specular_color) &&
-           close_to(a.metallic, b.metallic) && close_to(a.roughness, b.roughness) &&
-           close_to(a.specular, b.specular) && close_to(a.ior, b.ior);
+// The pixel's own chain record, the fields compatible_chain() compares. The states come from the
+// shaded image's alpha and a neighbour's fields are read one by one where they are compared:
+// copying whole records per neighbour cost lavapipe 3 ms per VPL at 512² on assets/glossy
+// (batch 32), more than the interleaved shading itself.
+struct ChainEnd {
+    vec3 position;
+    vec3 ng;
+    vec3 wo;
+    vec3 base_color;
+    vec3 specular_color;
+    float metallic;
+    float roughness;
+    float specular;
+    float ior;
+    uint closure_type;
+    uint max_vpl_length;
+};
+
+// Whether chain record j (a neighbour tagged kChainReceiver) receives as `a` does
+// (interleave.h, "Chains"): the G-buffer's surface test on the records' positions and geometric
+// normals, directions towards the chains within the same angle, the same closure and path-length
+// limit. Each field is read from the buffer where it is compared.
+bool compatible_chain(ChainEnd a, uint j) {
+    if (a.max_vpl_length != chains[j].max_vpl_length || a.closure_type != chains[j].closure_type)
+        return false;
+    if (dot(a.ng, chains[j].geometric_normal) < kInterleaveMinCos) return false;
+    if (dot(a.wo, chains[j].wo) < kInterleaveMinCos) return false;
+    const vec3 d = chains[j].position - a.position;
+    if (abs(dot(a.ng, d)) > kInterleavePlaneSlope * length(d)) return false;
+    return close_to(a.base_color, chains[j].base_color) &&
+           close_to(a.specular_color, chains[j].specular_color) &&
+           close_to(a.metallic, chains[j].metallic) && close_to(a.roughness, chains[j].roughness) &&
+           close_to(a.specular, chains[j].specular) && close_to(a.ior, chains[j].ior);
 }
 
 void main() {
@@ -47,12 +68,21 @@ void main() {
     const vec3 n = imageLoad(g_buffer, ivec3(px, 2)).xyz;
     vec3 albedo = imageLoad(g_buffer, ivec3(px, 3)).rgb;
     uint state = kChainNone;
-    ChainRecord chain;
+    ChainEnd chain;
+    vec3 throughput = vec3(1.0);
     if (pc.chains != 0u) {
-        chain = chains[px.y * size.x + px.x];
-        state = chain.state;
+        const uint i = uint(px.y * size.x + px.x);
+        // The shading pass tags each pixel's share with 1 + its chain's state (alpha).
+        state = uint(imageLoad(shaded, px).a) - 1u;
         if (state == kChainBlack) return;  // no VPL light (the shading pass stored 0)
-        if (state == kChainReceiver) albedo = chain.base_color;
+        if (state == kChainReceiver) {
+            chain = ChainEnd(chains[i].position, chains[i].geometric_normal, chains[i].wo,
+                             chains[i].base_color, chains[i].specular_color, chains[i].metallic,
+                             chains[i].roughness, chains[i].specular, chains[i].ior,
+                             chains[i].closure_type, chains[i].max_vpl_length);
+            throughput = chains[i].throughput;
+            albedo = chain.base_color;
+        }
     }
     const int k = int(pc.interleave);
     const int r = k / 2;
@@ -65,14 +95,18 @@ void main() {
             const ivec2 q = centre + ivec2(dx, dy);
             if (any(lessThan(q, ivec2(0))) || any(greaterThanEqual(q, size))) continue;
             vec3 albedo_q = albedo;
-            if (q != px && state == kChainReceiver) {
-                const ChainRecord cq = chains[q.y * size.x + q.x];
-                if (cq.state != kChainReceiver || !compatible_chains(chain, cq)) continue;
-                albedo_q = cq.base_color;
-            } else if (q != px) {
-                // Never an unchained pixel with a chained or black neighbour: their shares are
-                // another receiver's.
-                if (pc.chains != 0u && chains[q.y * size.x + q.x].state != kChainNone) continue;
+            if (q != px && pc.chains != 0u) {
+                // Never a chained pixel with an unchained or black neighbour, nor the other way
+                // round: their shares are another receiver's. (An uncovered neighbour's tag is a
+                // stale one; its record, all zeros, or its G-buffer fails the tests below.)
+                if (uint(imageLoad(shaded, q).a) - 1u != state) continue;
+                if (state == kChainReceiver) {
+                    const uint j = uint(q.y * size.x + q.x);
+                    if (!compatible_chain(chain, j)) continue;
+                    albedo_q = chains[j].base_color;
+                }
+            }
+            if (q != px && state == kChainNone) {
                 const vec4 pq = imageLoad(g_buffer, ivec3(q, 0));
                 if (pq.w != p.w) continue;
                 if (dot(n, imageLoad(g_buffer, ivec3(q, 2)).xyz) < kInterleaveMinCos) continue;
@@ -91,6 +125,6 @@ void main() {
     }
     vec3 filtered = max(albedo, vec3(kInterleaveMinAlbedo)) * (sum / weights);
     // The chain's throughput is the pixel's own (shading_template.glsl stores the unweighted sum).
-    if (state == kChainReceiver) filtered *= chain.throughput;
+    if (state == kChainReceiver) filtered *= throughput;
     imageStore(accumulation, px, vec4(imageLoad(accumulation, px).rgb + filtered, 1.0));
 }

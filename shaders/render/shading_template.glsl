@@ -350,7 +350,12 @@ void main() {
     if (pc.interleave > 1u) {
         // The class's share, K² times: the interleaved batch image, which the filter adds. A
         // chain's weight is left out: the filter applies the pixel's own (shared/interleave.h).
-        imageStore(accumulation, px, vec4(float(vpl_step) * sum, 1.0));
+        float tag = 1.0;
+//@if specular_chains
+        // 1 + the chain's state, which the filter reads here rather than from the records.
+        tag += float(chain.state);
+//@endif
+        imageStore(accumulation, px, vec4(float(vpl_step) * sum, tag));
     } else {
         const vec4 accumulated = imageLoad(accumulation, px);
         imageStore(accumulation, px, vec4(accumulated.rgb + emitted + weight * sum, 1.0));
