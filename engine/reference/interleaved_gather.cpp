@@ -68,12 +68,14 @@ bool close_to(const Vec3& a, const Vec3& b) {
 bool compatible_chains(const Texel& a, const Texel& b) {
     if (a.max_vpl_length != b.max_vpl_length || a.closure_type != b.closure_type) return false;
     if (glm::dot(a.ng, b.ng) < shared::kInterleaveMinCos) return false;
-    if (glm::dot(a.wo, b.wo) < shared::kInterleaveMinCos) return false;
     const Vec3 d = b.p - a.p;
     if (std::abs(glm::dot(a.ng, d)) > shared::kInterleavePlaneSlope * glm::length(d)) return false;
-    return close_to(a.base, b.base) && close_to(a.specular_color, b.specular_color) &&
-           close_to(a.metallic, b.metallic) && close_to(a.roughness, b.roughness) &&
-           close_to(a.specular, b.specular) && close_to(a.ior, b.ior);
+    if (!close_to(a.base, b.base)) return false;
+    if (a.closure_type == uint32_t(material::ClosureType::Lambertian)) return true;
+    if (glm::dot(a.wo, b.wo) < shared::kInterleaveMinCos) return false;
+    return close_to(a.specular_color, b.specular_color) && close_to(a.metallic, b.metallic) &&
+           close_to(a.roughness, b.roughness) && close_to(a.specular, b.specular) &&
+           close_to(a.ior, b.ior);
 }
 
 // Whether the filter of pixel t takes neighbour q (not t itself): a chained pixel only

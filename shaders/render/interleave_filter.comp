@@ -44,17 +44,20 @@ struct ChainEnd {
 
 // Whether chain record j (a neighbour tagged kChainReceiver) receives as `a` does
 // (interleave.h, "Chains"): the G-buffer's surface test on the records' positions and geometric
-// normals, directions towards the chains within the same angle, the same closure and path-length
-// limit. Each field is read from the buffer where it is compared.
+// normals, the same closure and path-length limit, and but for a Lambertian end directions
+// towards the chains within the same angle. Each field is read from the buffer where it is
+// compared.
 bool compatible_chain(ChainEnd a, uint j) {
     if (a.max_vpl_length != chains[j].max_vpl_length || a.closure_type != chains[j].closure_type)
         return false;
     if (dot(a.ng, chains[j].geometric_normal) < kInterleaveMinCos) return false;
-    if (dot(a.wo, chains[j].wo) < kInterleaveMinCos) return false;
     const vec3 d = chains[j].position - a.position;
     if (abs(dot(a.ng, d)) > kInterleavePlaneSlope * length(d)) return false;
-    return close_to(a.base_color, chains[j].base_color) &&
-           close_to(a.specular_color, chains[j].specular_color) &&
+    if (!close_to(a.base_color, chains[j].base_color)) return false;
+    // A Lambertian end (closure type 0) reflects base_color / π whatever wo and the rest.
+    if (a.closure_type == 0u) return true;
+    if (dot(a.wo, chains[j].wo) < kInterleaveMinCos) return false;
+    return close_to(a.specular_color, chains[j].specular_color) &&
            close_to(a.metallic, chains[j].metallic) && close_to(a.roughness, chains[j].roughness) &&
            close_to(a.specular, chains[j].specular) && close_to(a.ior, chains[j].ior);
 }
