@@ -101,10 +101,9 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
                    vsl_radius * vsl_radius,
                    lights ? &*lights : nullptr};
     // Interleaved: the pixels shade the emission alone (an empty list after all of them, so
-    // that it is averaged over the same positions) and the filtered VPL sum is added.
-    // As the GPU renderer: not where specular chains are traced (render/vpl_renderer.h).
-    const bool interleaved =
-        options.interleave > 1 && !light::scene_may_chain(scene, options.chains);
+    // that it is averaged over the same positions, the chains' emission included) and the
+    // filtered VPL sum is added.
+    const bool interleaved = options.interleave > 1;
     const std::vector<light::PreparedVpl> none;
     GatherOptions emission_only = options;
     emission_only.first_vpl = options.first_vpl + prepared.size();
@@ -121,7 +120,7 @@ Image gather_vpls(const scene::Scene& scene, const trace::Accel& accel, const li
     });
     progress.finish();
     if (interleaved) {
-        const Image sum = interleaved_vpl_sum(scene, accel, prepared, options, g.d_min2);
+        const Image sum = interleaved_vpl_sum(scene, accel, prepared, options, g.d_min2, g.lights);
         for (int y = 0; y < options.height; ++y) {
             for (int x = 0; x < options.width; ++x)
                 image.at(x, y) += Rgb(DVec3(sum.at(x, y)) * vpls.scale);

@@ -4,6 +4,7 @@
 #include "engine/gpu/compute_pipeline.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/shader_compiler.h"
+#include "shaders/shared/chain_record.h"
 #include "shaders/shared/interleave.h"
 #include "shaders/shared/push_constants.h"
 
@@ -19,10 +20,12 @@ InterleaveFilter::InterleaveFilter(gpu::Context& context, uint32_t width, uint32
     : m_shaded(context,
                {width, height, 1, gpu::Format::rgba32_float, gpu::ImageUsage::storage, false},
                "interleaved batch"),
+      m_no_chains(context, sizeof(shared::ChainRecord), gpu::BufferUsage::storage,
+                  gpu::MemoryLocation::device, "no chain records"),
       m_pipeline(std::make_unique<gpu::ComputePipeline>(
           context, gpu::compile_embedded_shader("render/interleave_filter.comp"),
           gpu::ComputeLayout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image,
-                              gpu::BindingType::storage_image},
+                              gpu::BindingType::storage_image, gpu::BindingType::storage_buffer},
                              sizeof(shared::InterleavePush)},
           "interleave filter")),
       m_k(k) {
@@ -33,16 +36,19 @@ InterleaveFilter::InterleaveFilter(gpu::Context& context, uint32_t width, uint32
 InterleaveFilter::~InterleaveFilter() = default;
 
 void InterleaveFilter::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
-                              const gpu::Image& accumulation) {
+                              const gpu::Image& accumulation, const gpu::Buffer* chains) {
     const uint32_t width = m_shaded.width();
     const uint32_t height = m_shaded.height();
     if (g_buffer.width() != width || g_buffer.height() != height || accumulation.width() != width ||
         accumulation.height() != height) {
         throw gpu::GpuError("interleave filter: images of different sizes");
     }
-    const shared::InterleavePush push{{width, height}, m_k, 0u};
-    cmd.dispatch(*m_pipeline, {&g_buffer, &m_shaded, &accumulation}, gpu::push_bytes(push),
-                 (width + kGroupSize - 1) / kGroupSize, (height + kGroupSize - 1) / kGroupSize);
+    if (chains && chains->size() < uint64_t(width) * height * sizeof(shared::ChainRecord))
+        throw gpu::GpuError("interleave filter: fewer chain records than pixels");
+    const shared::InterleavePush push{{width, height}, m_k, chains ? 1u : 0u};
+    cmd.dispatch(*m_pipeline, {&g_buffer, &m_shaded, &accumulation, chains ? chains : &m_no_chains},
+                 gpu::push_bytes(push), (width + kGroupSize - 1) / kGroupSize,
+                 (height + kGroupSize - 1) / kGroupSize);
 }
 
 }  // namespace mvpl::render

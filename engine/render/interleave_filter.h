@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <memory>
 
+#include "engine/gpu/buffer.h"
 #include "engine/gpu/image.h"
 
 namespace mvpl::gpu {
@@ -30,11 +31,14 @@ public:
     const gpu::Image& shaded() const { return m_shaded; }
     uint32_t k() const { return m_k; }
     // Adds the filtered shaded() into accumulation, with the neighbourhoods of g_buffer
-    // (GBufferPass::image()); after a barrier that follows the shading.
-    void record(gpu::CommandList& cmd, const gpu::Image& g_buffer, const gpu::Image& accumulation);
+    // (GBufferPass::image()) and, where specular chains are traced, of their records
+    // (ChainLayer::records(); nullptr: none); after a barrier that follows the shading.
+    void record(gpu::CommandList& cmd, const gpu::Image& g_buffer, const gpu::Image& accumulation,
+                const gpu::Buffer* chains = nullptr);
 
 private:
     gpu::Image m_shaded;
+    gpu::Buffer m_no_chains;  // bound where there are no chain records (never read then)
     std::unique_ptr<gpu::ComputePipeline> m_pipeline;
     uint32_t m_k;
 };

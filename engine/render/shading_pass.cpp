@@ -149,8 +149,6 @@ void ShadingPass::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
                 "shading pass: interleaving needs K ≤ 8, an image of the accumulation's size and "
                 "no emission");
         }
-        if (m_features.specular_chains)
-            throw gpu::GpuError("shading pass: interleaving with specular chains");
         target = batch.interleaved;
     }
     std::vector<gpu::Resource> resources{&g_buffer, target, &m_vpls, shadows};

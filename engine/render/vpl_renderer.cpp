@@ -183,8 +183,7 @@ struct VplRenderer::Impl {
             shading = std::make_unique<ShadingPass>(*context, o.width, o.height, o.batch, features,
                                                     nullptr, cache);
         }
-        // Not with chains: the filter would average the chains' different ends (vpl_renderer.h).
-        if (o.interleave <= 1 || chained) {
+        if (o.interleave <= 1) {
             interleave.reset();
         } else if (!interleave || interleave->k() != o.interleave || o.width != built_for.width ||
                    o.height != built_for.height) {
@@ -322,7 +321,8 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
             m.shading->record(cmd, m.g_buffer->image(), batch);
             if (m.interleave) {
                 cmd.barrier();
-                m.interleave->record(cmd, m.g_buffer->image(), m.shading->accumulation());
+                m.interleave->record(cmd, m.g_buffer->image(), m.shading->accumulation(),
+                                     m.chains ? &m.chains->records() : nullptr);
             }
             timer.end(cmd, scope);
         });

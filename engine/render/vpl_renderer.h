@@ -86,8 +86,8 @@ struct RenderOptions {
     // Interleaved sampling (Keller & Heidrich 2001; shaders/shared/interleave.h): K in 1 … 8,
     // 1 for none. Each pixel shades 1/K² of every batch, then a geometry-aware filter over the
     // K×K neighbourhood on the batch's G-buffer restores the sum where the surface is smooth.
-    // Not with specular chains: a scene that traces them is shaded with K = 1 (the filter would
-    // average the chains' different ends).
+    // With specular chains, a chained pixel is filtered with the chained neighbours whose rough
+    // ends are compatible only (interleave.h, "Chains").
     uint32_t interleave = 1;
     // Shader chain (shader_program.h): whether surface VPLs can occur (max depth ≥ 3), where to
     // write the generated GLSL of every stage (empty: nowhere), and the SPIR-V disk cache.

@@ -348,9 +348,14 @@ void main() {
 //@endif
     }
     if (pc.interleave > 1u) {
-        // The class's share, K² times: the interleaved batch image, which the filter adds.
-        // (Never with chains: weight is 1 here; ShadingPass refuses the combination.)
-        imageStore(accumulation, px, vec4(float(vpl_step) * sum, 1.0));
+        // The class's share, K² times: the interleaved batch image, which the filter adds. A
+        // chain's weight is left out: the filter applies the pixel's own (shared/interleave.h).
+        float tag = 1.0;
+//@if specular_chains
+        // 1 + the chain's state, which the filter reads here rather than from the records.
+        tag += float(chain.state);
+//@endif
+        imageStore(accumulation, px, vec4(float(vpl_step) * sum, tag));
     } else {
         const vec4 accumulated = imageLoad(accumulation, px);
         imageStore(accumulation, px, vec4(accumulated.rgb + emitted + weight * sum, 1.0));

@@ -21,6 +21,23 @@
 // demodulated by the neighbour's base colour and modulated by the pixel's own, so that the filter
 // averages lighting, not texture detail (a textured box lost its texels' contrast otherwise:
 // tests/cli/test_sample_models, BoxTextured).
+//
+// Chains (specular chains, shared/chain_record.h): a chained pixel (kChainReceiver) is lit at its
+// chain's rough end, so its neighbours are the chained pixels whose rough ends pass the same
+// tests on the records: the normal and plane tests on their positions and geometric normals (the
+// plane test is relative to the distance, so it needs no scale of its own), in place of the
+// material the same closure type, base colour within kInterleaveAlbedo and the same VPL
+// path-length limit, and where the end is not Lambertian (whose BSDF is base / π whatever the
+// directions) every other closure parameter within kInterleaveAlbedo relative and the
+// directions towards the chains (wo) within acos(kInterleaveMinCos) (the G-buffer's neighbours
+// share the camera's direction to within a few pixel angles; two chains' may differ by any). A
+// chained pixel never takes an unchained or black (kChainBlack) neighbour, nor an unchained pixel
+// a chained or black one; a black pixel gets no VPL light. The shading pass stores the unweighted
+// sums (tagged with 1 + the chain's state in alpha), and the filter multiplies the mean by the
+// pixel's own throughput: the chain's weight is a per-pixel factor of the estimate (shade at the
+// rough end, then weight), so it stays outside the average, and a neighbour's weight — a
+// different path's — never enters a pixel. The oracle (reference/interleaved_gather.cpp) does
+// the same with the same chains.
 #ifndef MVPL_SHADERS_SHARED_INTERLEAVE_H
 #define MVPL_SHADERS_SHARED_INTERLEAVE_H
 

@@ -76,7 +76,7 @@ struct ShadingPush {
 struct InterleavePush {
     uvec2 size;
     uint interleave;  // K
-    uint pad;
+    uint chains;      // 1: binding 3 holds the chain records (shared/chain_record.h); 0: unread
 };
 const uint kAddEmission = 1u;  // ShadingPush::flags: add the G-buffer's emitted radiance
 const uint kShadows = 2u;      // ShadingPush::flags: test visibility in the shadow maps

@@ -121,7 +121,7 @@ const Member kMembers[] = {
     MVPL_MEMBER(ShadingPush, pad2),
     MVPL_MEMBER(InterleavePush, size),
     MVPL_MEMBER(InterleavePush, interleave),
-    MVPL_MEMBER(InterleavePush, pad),
+    MVPL_MEMBER(InterleavePush, chains),
     MVPL_MEMBER(PresentPush, scale),
     MVPL_MEMBER(PresentPush, exposure_scale),
     MVPL_MEMBER(PresentPush, width),
