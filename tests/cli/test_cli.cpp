@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "engine/core/image.h"
+#include "engine/core/image_metrics.h"
 #include "tests/cli/run_command.h"
 
 namespace mvpl {
@@ -133,6 +134,30 @@ TEST(Cli, RenderOnTheGpuMatchesTheOracle) {
                           "device");
     for (const auto& f : {gpu, cpu})
         std::filesystem::remove(f);
+}
+
+// --interleave's default (0): off where the scene's specular chains are traced (assets/glossy),
+// 2 elsewhere (the Cornell box): the default images equal --interleave 1 and 2 to the bit, and
+// the glossy scene's differs from its --interleave 2 image (so the test can fail).
+TEST(Cli, InterleavingIsLeftOffWhereChainsAreTracedByDefault) {
+    const std::string glossy = shell_quote(std::string(MVPL_ASSETS_DIR) + "/glossy/glossy.gltf");
+    const auto image = [&](const std::string& scene, const std::string& extra,
+                           const std::string& name) {
+        const std::string out = temp_file(name);
+        const auto r = run_gpu("render " + scene + " --vpls 32 --res 32x24 --shadow-res 32 " +
+                               "--seed 2 --no-compensate --no-caustics --quiet " + extra + " -o " +
+                               shell_quote(out));
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const Image i = read_exr(out);
+        std::filesystem::remove(out);
+        return i;
+    };
+    const Image glossy_default = image(glossy, "", "g0.exr");
+    EXPECT_EQ(compare_images(glossy_default, image(glossy, "--interleave 1", "g1.exr")).rmse, 0.0);
+    EXPECT_GT(compare_images(glossy_default, image(glossy, "--interleave 2", "g2.exr")).rmse, 0.0);
+    EXPECT_EQ(
+        compare_images(image(kCbox, "", "c0.exr"), image(kCbox, "--interleave 2", "c2.exr")).rmse,
+        0.0);
 }
 
 // Clamping compensation is on by default: it adds light where the clamp removed it (corners), so

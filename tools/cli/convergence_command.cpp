@@ -183,6 +183,8 @@ int run_convergence(const Args& args) {
     render::RenderOptions render_options;
     renderer_args.apply(render_options);
     render_options.chains.max_depth = run.max_depth;
+    render_options.interleave =
+        renderer_args.interleave_for(session.scene(), render_options.chains);
     settings.specular_chains = render_options.chains;  // the Metropolis target follows them too
     run.quiet = quiet;
     run.compensate = compensation_args.enabled();

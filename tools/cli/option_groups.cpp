@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/light/specular_chain.h"
 
 namespace mvpl::cli {
 
@@ -38,6 +39,12 @@ std::vector<float> finite_numbers(const ArgParser& parser, const std::string& op
 
 }  // namespace
 
+uint32_t RendererArgs::interleave_for(const scene::Scene& scene,
+                                      const light::ChainOptions& chains) const {
+    if (interleave > 0) return uint32_t(interleave);
+    return light::scene_may_chain(scene, chains) ? 1u : uint32_t(kDefaultInterleave);
+}
+
 void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_resolution = uint32_t(shadow_res);
     o.batch = uint32_t(batch);
@@ -50,7 +57,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.chains.emission_samples = chain_samples;
     o.hemicube = !no_hemicube;
     o.vpl_culling = !no_vpl_culling;
-    o.interleave = uint32_t(interleave);
+    o.interleave = uint32_t(interleave > 0 ? interleave : kDefaultInterleave);
     o.indirect_shadow_resolution = uint32_t(indirect_shadow_res);
     o.ism = ism;
     o.ism_resolution = uint32_t(ism_res);
@@ -95,7 +102,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                     "their shadows are the sharpest)");
     parser.add_int("--interleave", &args.interleave,
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
-                   "then a geometry-aware K×K filter (1 = off)");
+                   "then a geometry-aware K×K filter (1 = off; 0 = 2, or 1 where specular "
+                   "chains are traced)");
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     parser.add_float("--chain-roughness", &args.chain_roughness,
@@ -123,8 +131,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
             out_of_range(parser, "--ism-res", "4, 8, 16, 32 or 64");
         if (args.ism_points < 1 || args.ism_points > (1 << 24))
             out_of_range(parser, "--ism-points", "1..2^24");
-        if (args.interleave < 1 || args.interleave > 8)
-            out_of_range(parser, "--interleave", "1..8");
+        if (args.interleave < 0 || args.interleave > 8)
+            out_of_range(parser, "--interleave", "0..8");
         if (args.chain_samples < 1 || args.chain_samples > 64)
             out_of_range(parser, "--chain-samples", "1..64");
     });

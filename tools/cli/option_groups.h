@@ -38,7 +38,10 @@ struct RendererArgs {
     // halves it for ≤ 1.1× the error at equal VPL count (docs/results.md, "Many lights").
     // Smaller indirect faces stay opt-in: on the two-room scene 128² faces leak light through its
     // one-plane wall (mean +0.5 %, relMSE +24 % at equal VPL count).
-    int interleave = kDefaultInterleave;
+    // 0 (the default): kDefaultInterleave, but 1 where the scene's specular chains are traced
+    // (interleave_for): on assets/glossy at 160×120 interleaving costs chained pixels more than
+    // it saves, 1.1–1.65× the error at equal time (docs/results.md, "Interleaving with chains").
+    int interleave = 0;
     int indirect_shadow_res = 0;
     // Imperfect shadow maps for indirect VPLs: opt-in (docs/results.md, "Imperfect shadow maps").
     bool ism = false;
@@ -46,6 +49,9 @@ struct RendererArgs {
     int ism_points = int(render::RenderOptions{}.ism_points);
     bool ism_emitters = false;
     static constexpr int kDefaultInterleave = 2;
+    // The interleave for a render of `scene` with these chains: --interleave K as given, or the
+    // default above.
+    uint32_t interleave_for(const scene::Scene& scene, const light::ChainOptions& chains) const;
     // The radius of the virtual spherical lights (scene diagonals), 0 with --no-vsl.
     float vsl() const { return no_vsl ? 0.0f : vsl_radius; }
 

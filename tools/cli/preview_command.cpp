@@ -79,6 +79,7 @@ int run_preview(const Args& args) {
     o.jitter = !renderer.no_jitter;
     o.clamp = renderer.clamp;
     renderer.apply(o.levers);
+    o.interleave_auto = renderer.interleave == 0;
     o.hud = !no_hud;
     o.motion_scaling = !no_motion_scaling;
     o.camera = camera.choice;

@@ -15,6 +15,7 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/swapchain.h"
+#include "engine/light/specular_chain.h"
 #include "engine/render/vpl_renderer.h"
 #include "sampler/sampler_factory.h"
 #include "tools/preview/camera_controller.h"
@@ -243,6 +244,8 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     ro.clamp = clamp();
     ro.chains = chain_options();
     ro.chain_seed = m_options.seed;
+    if (m_options.interleave_auto && light::scene_may_chain(m_session.scene(), ro.chains))
+        ro.interleave = 1;
     m_renderer.begin(m_controller.camera(), ro);
     m_replayed = 0;
     m_scale = 0.0;

@@ -38,6 +38,9 @@ struct PreviewOptions {
     // The renderer's levers (shadow culling, proxy, hemicubes, VPL culling, interleave, indirect
     // faces), as the command line set them; its sizes, batch, jitter and clamp are the above.
     render::RenderOptions levers;
+    // levers.interleave was the default (--interleave 0): 1 where the chains are traced, as
+    // `mvpl render` (RendererArgs::interleave_for).
+    bool interleave_auto = false;
     bool hud = true;
     // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
     bool motion_scaling = true;
