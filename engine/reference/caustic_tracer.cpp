@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
-#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -11,6 +10,7 @@
 #include "engine/core/rng.h"
 #include "engine/light/path_partition.h"
 #include "engine/light/specular_chain.h"
+#include "engine/reference/pass_mean.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/interaction.h"
 #include "engine/trace/ray.h"
@@ -68,9 +68,7 @@ struct CausticTracer::Impl {
     std::vector<float> pick;
     std::vector<float> pick_cdf;
     std::vector<Rgb> pass_image;  // the pass under way
-    mutable std::mutex mutex;     // guards sum and passes
-    std::vector<DVec3> sum;       // per pixel, over the passes
-    uint32_t passes = 0;
+    PassMean mean;                // of the passes done
 
     Impl(const scene::Scene& s, const trace::Accel& a, const light::LightSampler& l,
          const CausticOptions& o)
@@ -79,7 +77,7 @@ struct CausticTracer::Impl {
           lights(l),
           options(o),
           pass_image(size_t(o.width) * size_t(o.height)),
-          sum(pass_image.size(), DVec3(0.0)) {
+          mean(o.width, o.height) {
         paths_per_pass = o.paths_per_pass > 0 ? o.paths_per_pass : uint64_t(pass_image.size());
         is_active = !l.empty() && (o.max_depth < 0 || o.max_depth >= 3) &&
                     light::scene_may_need_caustics(s, o.specular);
@@ -285,11 +283,7 @@ struct CausticTracer::Impl {
     }
 
     void add_pass() {
-        uint32_t pass = 0;
-        {
-            const std::lock_guard lock(mutex);
-            pass = passes;
-        }
+        const uint32_t pass = mean.passes();
         std::fill(pass_image.begin(), pass_image.end(), Rgb(0.0f));
         if (is_active) {
             const uint64_t global =
@@ -303,10 +297,7 @@ struct CausticTracer::Impl {
             }
             if (!done) trace_pass(global, pass_image, nullptr);
         }
-        const std::lock_guard lock(mutex);
-        for (size_t i = 0; i < sum.size(); ++i)
-            sum[i] += DVec3(pass_image[i]);
-        passes = pass + 1;
+        mean.add(pass_image);
     }
 };
 
@@ -325,20 +316,11 @@ void CausticTracer::add_pass() {
 }
 
 uint32_t CausticTracer::passes() const {
-    const std::lock_guard lock(m_impl->mutex);
-    return m_impl->passes;
+    return m_impl->mean.passes();
 }
 
 Image CausticTracer::image(uint32_t* passes) const {
-    const CausticOptions& o = m_impl->options;
-    Image out(o.width, o.height);
-    const std::lock_guard lock(m_impl->mutex);
-    const uint32_t n = m_impl->passes;
-    if (passes) *passes = n;
-    if (n == 0) return out;
-    for (size_t i = 0; i < m_impl->sum.size(); ++i)
-        out.pixels()[i] = Rgb(m_impl->sum[i] / double(n));
-    return out;
+    return m_impl->mean.mean(passes);
 }
 
 }  // namespace mvpl::reference

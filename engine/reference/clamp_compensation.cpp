@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <mutex>
 #include <optional>
 #include <vector>
 
@@ -10,6 +9,7 @@
 #include "engine/core/rng.h"
 #include "engine/light/specular_chain.h"
 #include "engine/light/vpl_contribution.h"
+#include "engine/reference/pass_mean.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/ray.h"
@@ -24,9 +24,7 @@ struct ClampCompensation::Impl {
     float d_min = 0.0f;
     std::vector<const scene::Light*> punctual;  // point and spot lights
     std::vector<Rgb> pass_image;                // the pass under way
-    mutable std::mutex mutex;                   // guards sum and passes
-    std::vector<DVec3> sum;                     // per pixel, over the passes
-    uint32_t passes = 0;
+    PassMean mean;                              // of the passes done
 
     Impl(const scene::Scene& s, const trace::Accel& a, const light::LightSampler& lights,
          const CompensationOptions& o)
@@ -36,7 +34,7 @@ struct ClampCompensation::Impl {
           path_tracer(s, a, lights),
           d_min(o.clamp * s.bounds().diagonal()),
           pass_image(size_t(o.width) * size_t(o.height)),
-          sum(pass_image.size(), DVec3(0.0)) {
+          mean(o.width, o.height) {
         for (const scene::Light& l : s.lights) {
             if (l.type == scene::LightType::Point || l.type == scene::LightType::Spot)
                 punctual.push_back(&l);
@@ -122,11 +120,7 @@ struct ClampCompensation::Impl {
     }
 
     void add_pass() {
-        uint32_t pass = 0;
-        {
-            const std::lock_guard lock(mutex);
-            pass = passes;
-        }
+        const uint32_t pass = mean.passes();
         std::fill(pass_image.begin(), pass_image.end(), Rgb(0.0f));
         if (active()) {
             const uint64_t global =
@@ -143,10 +137,7 @@ struct ClampCompensation::Impl {
                 }
             });
         }
-        const std::lock_guard lock(mutex);
-        for (size_t i = 0; i < sum.size(); ++i)
-            sum[i] += DVec3(pass_image[i]);
-        passes = pass + 1;
+        mean.add(pass_image);
     }
 };
 
@@ -162,8 +153,7 @@ void ClampCompensation::add_pass() {
 }
 
 uint32_t ClampCompensation::passes() const {
-    const std::lock_guard lock(m_impl->mutex);
-    return m_impl->passes;
+    return m_impl->mean.passes();
 }
 
 bool ClampCompensation::active() const {
@@ -171,15 +161,7 @@ bool ClampCompensation::active() const {
 }
 
 Image ClampCompensation::image(uint32_t* passes) const {
-    const CompensationOptions& o = m_impl->options;
-    Image out(o.width, o.height);
-    const std::lock_guard lock(m_impl->mutex);
-    const uint32_t n = m_impl->passes;
-    if (passes) *passes = n;
-    if (n == 0) return out;
-    for (size_t i = 0; i < m_impl->sum.size(); ++i)
-        out.pixels()[i] = Rgb(m_impl->sum[i] / double(n));
-    return out;
+    return m_impl->mean.mean(passes);
 }
 
 }  // namespace mvpl::reference
