@@ -68,6 +68,19 @@ double sphere_pixels_mean(const scene::Scene& s, const Image& image, int size) {
     return sum / std::max(n, 1);
 }
 
+// The mirror box with a roughness-0.15 sphere (chained at the bound 0.2) and a point light
+// beside the camera, whose highlight on the sphere is smaller than a pixel at these sizes.
+scene::Scene glossy_box_with_point_light() {
+    scene::Scene s = test::make_mirror_box();
+    s.materials[3].roughness = 0.15f;
+    scene::Light point;
+    point.type = scene::LightType::Point;
+    point.position = Vec3(0.6f, 0.5f, 0.9f);
+    point.intensity = Rgb(3.0f);
+    s.lights.push_back(point);
+    return s;
+}
+
 GatherOptions chain_gather(int size, int max_depth, float max_roughness) {
     GatherOptions g;
     g.width = g.height = size;
@@ -155,17 +168,11 @@ TEST(SpecularChain, AMirrorSphereInAColouredBoxMatchesThePathTracer) {
 // chain must add the point light's reflection at its glossy vertices itself (specular_chain.cpp,
 // punctual_light). Max depth 2, so the sphere shows direct light only: the area light it
 // reflects (found by the chain's BSDF samples) and the point light's highlight on a roughness
-// 0.15 gold sphere (chained at the bound 0.2). Measured: oracle 0.4191, path tracer 0.4051,
-// σ 0.0048; without the point light's term the oracle's sphere loses the highlight (0.1516, 55σ
-// below).
+// 0.15 gold sphere (chained at the bound 0.2). Measured: oracle 0.4209, path tracer 0.4051,
+// σ 0.0051 (0.4191, σ 0.0048 before the chains' light samples); without the point light's term the
+// oracle's sphere loses the highlight (0.1516, 55σ below).
 TEST(SpecularChain, AGlossySphereReflectsAPointLight) {
-    scene::Scene s = test::make_mirror_box();
-    s.materials[3].roughness = 0.15f;
-    scene::Light point;
-    point.type = scene::LightType::Point;
-    point.position = Vec3(0.6f, 0.5f, 0.9f);
-    point.intensity = Rgb(3.0f);
-    s.lights.push_back(point);
+    const scene::Scene s = glossy_box_with_point_light();
     test::OracleAgainstTracer setup;
     setup.max_depth = 2;
     // 64 sub-pixel positions, rotated per run: the highlights are smaller than a pixel, and the
@@ -258,13 +265,7 @@ TEST(SpecularChain, LightSamplesFindASmallAreaLightInAGlossyMirror) {
 // highlight's tail is too heavy for 96 runs to estimate either variance (the one-sample runs
 // missed the rare brightest hits that the eight-sample runs caught).
 TEST(SpecularChain, MoreSubPixelSamplesIntegrateAHighlightWithoutBias) {
-    scene::Scene s = test::make_mirror_box();
-    s.materials[3].roughness = 0.15f;
-    scene::Light point;
-    point.type = scene::LightType::Point;
-    point.position = Vec3(0.6f, 0.5f, 0.9f);
-    point.intensity = Rgb(3.0f);
-    s.lights.push_back(point);
+    const scene::Scene s = glossy_box_with_point_light();
     const trace::Accel accel(s);
     const light::LightSampler lights(s);
     light::ChainOptions one;
