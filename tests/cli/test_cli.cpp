@@ -50,6 +50,10 @@ TEST(Cli, OutOfRangeAndRepeatedOptionsAreRefused) {
     expect_one_line_error(run_mvpl("info --device -2"), "--device");
     expect_one_line_error(run_mvpl("reference " + kCbox + " --spp 2 --spp 3"), "--spp given twice");
     expect_one_line_error(run_mvpl("render " + kCbox + " --quiet --quiet"), "--quiet given twice");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --chain-samples 0"), "--chain-samples");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --chain-samples 65"), "--chain-samples");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --interleave -1"), "--interleave");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --interleave 9"), "--interleave");
 }
 
 TEST(Cli, ReferenceWritesExrAndPng) {
