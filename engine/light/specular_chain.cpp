@@ -156,26 +156,37 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
     }
 }
 
-Rgb pixel_chain_emission(const scene::Scene& scene, const trace::Accel& accel, int width,
-                         int height, int x, int y, const ChainedReceiver& first, Rng& rng,
+namespace {
+
+trace::Ray ray_through(const scene::Camera& camera, int width, int height, int x, int y,
+                       const Vec2& offset) {
+    const scene::CameraRay cr = scene::generate_camera_ray(
+        camera, width, height, Vec2(float(x) + offset.x, float(y) + offset.y));
+    return trace::Ray{cr.origin, cr.direction};
+}
+
+}  // namespace
+
+bool pixel_centre_continues(const scene::Scene& scene, const trace::Accel& accel,
+                            const scene::Camera& camera, int width, int height, int x, int y,
+                            const ChainOptions& options) {
+    const std::optional<Receiver> centre = make_receiver(
+        scene, accel, ray_through(camera, width, height, x, y, Vec2(0.5f)), nullptr, true, true);
+    return centre && continues_chain(centre->sp.bsdf, centre->wo, options);
+}
+
+Rgb pixel_chain_emission(const scene::Scene& scene, const trace::Accel& accel,
+                         const scene::Camera& camera, int width, int height, int x, int y,
+                         bool centre_continues, const ChainedReceiver& first, Rng& rng,
                          const ChainOptions& options, const LightSampler* lights) {
     const int samples = options.emission_samples;
-    if (samples <= 1) return first.chain_emitted;
-    const auto ray_through = [&](const Vec2& offset) {
-        const scene::CameraRay cr = scene::generate_camera_ray(
-            scene.camera, width, height, Vec2(float(x) + offset.x, float(y) + offset.y));
-        return trace::Ray{cr.origin, cr.direction};
-    };
-    const std::optional<Receiver> centre =
-        make_receiver(scene, accel, ray_through(Vec2(0.5f)), nullptr, true, true);
-    if (!centre || !continues_chain(centre->sp.bsdf, centre->wo, options))
-        return first.chain_emitted;
+    if (samples <= 1 || !centre_continues) return first.chain_emitted;
     Rgb sum = first.chain_emitted;
     for (int k = 1; k < samples; ++k) {
         const Vec2 offset(rng.next_float(), rng.next_float());
-        sum +=
-            make_chained_receiver(scene, accel, ray_through(offset), rng, options, nullptr, lights)
-                .chain_emitted;
+        sum += make_chained_receiver(scene, accel, ray_through(camera, width, height, x, y, offset),
+                                     rng, options, nullptr, lights)
+                   .chain_emitted;
     }
     return sum / float(samples);
 }

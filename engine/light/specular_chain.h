@@ -71,13 +71,18 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
                                       const ChainOptions& options, Rgb* emitted = nullptr,
                                       const LightSampler* lights = nullptr);
 
-// The light the chains of pixel (x, y) of a width × height image meet at one sub-pixel
-// position: `first`'s (the position's own chain) where options.emission_samples ≤ 1 or the ray
-// through the pixel's centre is not continued, else the mean of it and emission_samples − 1
-// chains through uniform random points of the pixel drawn from `rng` (each unbiased, and
-// whether to draw them does not depend on them).
-Rgb pixel_chain_emission(const scene::Scene& scene, const trace::Accel& accel, int width,
-                         int height, int x, int y, const ChainedReceiver& first, Rng& rng,
+// The light the chains of pixel (x, y) of a width × height view through `camera` meet at one
+// sub-pixel position: `first`'s (the position's own chain) where options.emission_samples ≤ 1
+// or the pixel's centre is not continued (pixel_centre_continues, which the caller evaluates
+// once per pixel and view), else the mean of it and emission_samples − 1 chains through uniform
+// random points of the pixel drawn from `rng`. Each is unbiased, and whether they are drawn does
+// not depend on them.
+bool pixel_centre_continues(const scene::Scene& scene, const trace::Accel& accel,
+                            const scene::Camera& camera, int width, int height, int x, int y,
+                            const ChainOptions& options);
+Rgb pixel_chain_emission(const scene::Scene& scene, const trace::Accel& accel,
+                         const scene::Camera& camera, int width, int height, int x, int y,
+                         bool centre_continues, const ChainedReceiver& first, Rng& rng,
                          const ChainOptions& options, const LightSampler* lights);
 
 // The generator of a pixel's chain at one sub-pixel position: the same on the CPU oracle and

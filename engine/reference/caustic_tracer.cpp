@@ -55,11 +55,8 @@ struct CausticTracer::Impl {
     CausticOptions options;
     bool is_active = false;
     uint64_t paths_per_pass = 0;
-    // The pinhole (header comment): eye, world-to-camera rotation, tan(yfov/2), aspect, 1/A_pix.
+    // The pinhole (header comment): the eye and 1/A_pix.
     Vec3 eye{0.0f};
-    Mat3 to_camera{1.0f};
-    float tan_half = 1.0f;
-    float aspect = 1.0f;
     float inv_pixel_area = 1.0f;
     float d_min2 = 0.0f;     // the compensation's d_min² (header comment); 0 without it
     bool lobe_wise = false;  // the compensation's share is the diffuse lobes' alone
@@ -83,9 +80,8 @@ struct CausticTracer::Impl {
                     light::scene_may_need_caustics(s, o.specular);
         const scene::Camera& camera = s.camera;
         eye = camera.position();
-        to_camera = glm::transpose(Mat3(camera.camera_to_world));  // rigid: R⁻¹ = Rᵀ
-        tan_half = std::tan(0.5f * camera.yfov);
-        aspect = float(o.width) / float(o.height);
+        const float tan_half = std::tan(0.5f * camera.yfov);
+        const float aspect = float(o.width) / float(o.height);
         const float area = sqr(2.0f * tan_half) * aspect / (float(o.width) * float(o.height));
         inv_pixel_area = 1.0f / area;
         d_min2 = sqr(o.clamp * s.bounds().diagonal());
@@ -101,15 +97,12 @@ struct CausticTracer::Impl {
         const Vec3 from_eye = p - eye;
         const float d2 = glm::dot(from_eye, from_eye);
         if (!(d2 > 0.0f)) return;
-        const float d = std::sqrt(d2);
-        const Vec3 local = to_camera * (from_eye / d);
-        const float cos_theta = -local.z;  // the camera looks down its −Z
+        const std::optional<scene::FilmPoint> projected =
+            scene::project_to_film(scene.camera, options.width, options.height, p);
         // Behind the eye, or nearer than the near plane, where camera rays start.
-        if (!(cos_theta > 0.0f) || !(cos_theta * d > scene.camera.znear)) return;
-        const float ndc_x = local.x / (cos_theta * tan_half * aspect);
-        const float ndc_y = local.y / (cos_theta * tan_half);
-        const Vec2 film(0.5f * (ndc_x + 1.0f) * float(options.width),
-                        0.5f * (1.0f - ndc_y) * float(options.height));
+        if (!projected || !(projected->cos_theta * std::sqrt(d2) > scene.camera.znear)) return;
+        const Vec2& film = projected->film;
+        const float cos_theta = projected->cos_theta;
         if (!(film.x >= 0.0f && film.x < float(options.width) && film.y >= 0.0f &&
               film.y < float(options.height)))
             return;

@@ -43,6 +43,11 @@ Rgb shade_pixel(const Gather& g, int x, int y) {
     if (n > 0) hi = std::max(hi, schedule.position_of(first + n - 1) + 1);
     Rgb emitted(0.0f);
     DVec3 sum(0.0);
+    // Which pixels the chains' light gets extra samples in (specular_chain.h): once per pixel.
+    const bool centre_continues =
+        g.show_emitters && g.options.chains.enabled() && g.options.chains.emission_samples > 1 &&
+        light::pixel_centre_continues(g.scene, g.accel, g.scene.camera, g.options.width,
+                                      g.options.height, x, y, g.options.chains);
     size_t i = 0;  // the first VPL not yet shaded; its position is ≥ p
     for (uint64_t p = lo; p < hi; ++p) {
         size_t end = i;
@@ -60,9 +65,9 @@ Rgb shade_pixel(const Gather& g, int x, int y) {
         const light::ChainedReceiver chained = light::make_chained_receiver(
             g.scene, g.accel, ray, rng, g.options.chains, emission ? &emitted : nullptr, g.lights);
         if (emission)
-            emitted +=
-                light::pixel_chain_emission(g.scene, g.accel, g.options.width, g.options.height, x,
-                                            y, chained, rng, g.options.chains, g.lights);
+            emitted += light::pixel_chain_emission(
+                g.scene, g.accel, g.scene.camera, g.options.width, g.options.height, x, y,
+                centre_continues, chained, rng, g.options.chains, g.lights);
         if (chained.receiver) {
             DVec3 part(0.0);
             for (size_t k = i; k < end; ++k) {

@@ -66,6 +66,10 @@ void ChainLayer::trace(const scene::Camera& camera, Vec2 offset, uint64_t positi
                        const light::ChainOptions& options, uint64_t seed) {
     auto* records = reinterpret_cast<ChainRecord*>(m_records.mapped());
     const uint64_t rays_before = m_accel.ray_count();
+    update_centres(camera, options);
+    const auto centre_continues = [&](uint64_t pixel) {
+        return !m_centres.empty() && m_centres[pixel] != 0;
+    };
     parallel_for(int64_t(m_height), 1, [&](int64_t begin, int64_t end) {
         for (int64_t y = begin; y < end; ++y) {
             for (uint32_t x = 0; x < m_width; ++x) {
@@ -79,14 +83,37 @@ void ChainLayer::trace(const scene::Camera& camera, Vec2 offset, uint64_t positi
                     m_lights.get());
                 // A pixel whose first vertex is rough keeps the G-buffer's receiver.
                 ChainRecord r = c.continued ? to_record(c) : ChainRecord{};
-                put(r.emitted,
-                    light::pixel_chain_emission(m_scene, m_accel, int(m_width), int(m_height),
-                                                int(x), int(y), c, rng, options, m_lights.get()));
+                put(r.emitted, light::pixel_chain_emission(m_scene, m_accel, camera, int(m_width),
+                                                           int(m_height), int(x), int(y),
+                                                           centre_continues(pixel), c, rng, options,
+                                                           m_lights.get()));
                 std::memcpy(&records[pixel], &r, sizeof(r));
             }
         }
     });
     m_rays += m_accel.ray_count() - rays_before;
+}
+
+void ChainLayer::update_centres(const scene::Camera& camera, const light::ChainOptions& options) {
+    if (options.emission_samples <= 1) {
+        m_centres.clear();
+        return;
+    }
+    const bool same = !m_centres.empty() && m_centres_roughness == options.max_roughness &&
+                      m_centres_camera.camera_to_world == camera.camera_to_world &&
+                      m_centres_camera.yfov == camera.yfov &&
+                      m_centres_camera.znear == camera.znear;
+    if (same) return;
+    m_centres.assign(size_t(m_width) * m_height, 0);
+    parallel_for(int64_t(m_height), 1, [&](int64_t begin, int64_t end) {
+        for (int64_t y = begin; y < end; ++y) {
+            for (uint32_t x = 0; x < m_width; ++x)
+                m_centres[size_t(y) * m_width + x] = light::pixel_centre_continues(
+                    m_scene, m_accel, camera, int(m_width), int(m_height), int(x), int(y), options);
+        }
+    });
+    m_centres_camera = camera;
+    m_centres_roughness = options.max_roughness;
 }
 
 }  // namespace mvpl::render

@@ -8,6 +8,7 @@
 // Built only for scenes with a material that may be continued. Vulkan-free to include.
 #include <cstdint>
 #include <memory>
+#include <vector>
 
 #include "engine/core/math.h"
 #include "engine/gpu/buffer.h"
@@ -53,6 +54,13 @@ private:
     uint32_t m_height;
     gpu::Buffer m_records;  // host-visible ChainRecord per pixel
     uint64_t m_rays = 0;
+    // Per pixel, whether the ray through its centre is continued (light::pixel_centre_continues)
+    // for the view and chain roughness below: computed once per view, not per position; empty
+    // without extra samples (ChainOptions::emission_samples ≤ 1).
+    void update_centres(const scene::Camera& camera, const light::ChainOptions& options);
+    std::vector<uint8_t> m_centres;
+    scene::Camera m_centres_camera;
+    float m_centres_roughness = -1.0f;
 };
 
 }  // namespace mvpl::render

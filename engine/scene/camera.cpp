@@ -19,6 +19,24 @@ CameraRay generate_camera_ray(const Camera& camera, int width, int height, const
     return {camera.position() + near * dir, dir};
 }
 
+std::optional<FilmPoint> project_to_film(const Camera& camera, int width, int height,
+                                         const Vec3& p) {
+    const Vec3 from_eye = p - camera.position();
+    const float d = glm::length(from_eye);
+    if (!(d > 0.0f)) return std::nullopt;
+    const Mat3 to_camera = glm::transpose(Mat3(camera.camera_to_world));  // rigid: R⁻¹ = Rᵀ
+    const Vec3 local = to_camera * (from_eye / d);
+    const float cos_theta = -local.z;  // the camera looks down its −Z
+    if (!(cos_theta > 0.0f)) return std::nullopt;
+    const float tan_half = std::tan(0.5f * camera.yfov);
+    const float aspect = float(width) / float(height);
+    const float ndc_x = local.x / (cos_theta * tan_half * aspect);
+    const float ndc_y = local.y / (cos_theta * tan_half);
+    return FilmPoint{
+        Vec2(0.5f * (ndc_x + 1.0f) * float(width), 0.5f * (1.0f - ndc_y) * float(height)),
+        cos_theta};
+}
+
 Camera frame_bounds(const Bounds& bounds) {
     Camera camera;
     if (bounds.empty()) return camera;

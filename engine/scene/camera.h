@@ -1,4 +1,6 @@
 #pragma once
+#include <optional>
+
 #include "engine/core/math.h"
 #include "engine/scene/bounds.h"
 #include "engine/scene/scene.h"
@@ -15,6 +17,16 @@ struct CameraRay {
     Vec3 direction;  // unit
 };
 CameraRay generate_camera_ray(const Camera& camera, int width, int height, const Vec2& film);
+
+// The inverse of generate_camera_ray: where the line from the eye to `p` crosses the image plane,
+// in film pixels (possibly outside the image), and the cosine between that line and the view
+// axis; none where p is not in front of the eye.
+struct FilmPoint {
+    Vec2 film;
+    float cos_theta;
+};
+std::optional<FilmPoint> project_to_film(const Camera& camera, int width, int height,
+                                         const Vec3& p);
 
 // A camera outside the bounds looking at their centre from a three-quarter view (from +X, +Y,
 // +Z: 45° round, 30° up, as glTF viewers frame a model), far enough that the bounding sphere

@@ -289,8 +289,10 @@ TEST(SpecularChain, MoreSubPixelSamplesIntegrateAHighlightWithoutBias) {
                 const light::ChainedReceiver first =
                     light::make_chained_receiver(s, accel, ray, rng, one, nullptr, &lights);
                 sum_one += luminance(first.chain_emitted);
-                sum_eight += luminance(light::pixel_chain_emission(s, accel, kSize, kSize, x, y,
-                                                                   first, rng, eight, &lights));
+                const bool centre =
+                    light::pixel_centre_continues(s, accel, s.camera, kSize, kSize, x, y, eight);
+                sum_eight += luminance(light::pixel_chain_emission(
+                    s, accel, s.camera, kSize, kSize, x, y, centre, first, rng, eight, &lights));
                 ++n;
             }
         }

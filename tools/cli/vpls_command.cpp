@@ -60,13 +60,10 @@ struct View {
             film = Vec2((p.x - x0) / metres_per_pixel, (p.z - z0) / metres_per_pixel);
             return true;
         }
-        const Vec3 c = Vec3(glm::inverse(camera.camera_to_world) * Vec4(p, 1.0f));
-        if (!(c.z < 0.0f)) return false;
-        const float tan_half = std::tan(0.5f * camera.yfov);
-        const float aspect = float(width) / float(height);
-        const float ndc_x = c.x / (-c.z * tan_half * aspect);
-        const float ndc_y = c.y / (-c.z * tan_half);
-        film = Vec2((ndc_x + 1.0f) * 0.5f * float(width), (1.0f - ndc_y) * 0.5f * float(height));
+        const std::optional<scene::FilmPoint> projected =
+            scene::project_to_film(camera, width, height, p);
+        if (!projected) return false;
+        film = projected->film;
         return true;
     }
 };
