@@ -12,7 +12,13 @@ namespace mvpl::render {
 std::vector<IsmPoint> sample_ism_points(const ShadowClusters& casters, uint32_t count,
                                         uint64_t seed) {
     const std::vector<Vec3>& p = casters.positions();
-    const std::vector<uint32_t>& idx = casters.indices();
+    // The full triangles only (each group's level 0), in cluster order.
+    CasterRanges ranges;
+    casters.level_ranges(Vec3(0.0f), LodChoice{}, ranges);
+    std::vector<uint32_t> idx;
+    for (const gpu::IndexRange& r : ranges.full)
+        idx.insert(idx.end(), casters.indices().begin() + r.first_index,
+                   casters.indices().begin() + r.first_index + r.index_count);
     const size_t triangles = idx.size() / 3;
     // The running sum of the areas, in double: a million small triangles would round away in
     // float.

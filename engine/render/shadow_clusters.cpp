@@ -31,58 +31,105 @@ uint64_t morton_code(const Vec3& p, const Vec3& lo, const Vec3& extent) {
     return code;
 }
 
-// Appends the mesh's positions to `positions` and its triangles, as indices into them, to
-// `triangles`: welded and simplified when `simplify_error` > 0 and the mesh is large enough.
-void add_mesh(const scene::Mesh& mesh, float simplify_error, std::vector<Vec3>& positions,
-              std::vector<uint32_t>& triangles) {
-    const uint32_t base = uint32_t(positions.size());
-    if (!(simplify_error > 0.0f) || mesh.triangle_count() < ShadowClusters::kProxyMinTriangles) {
-        positions.insert(positions.end(), mesh.positions.begin(), mesh.positions.end());
-        for (const uint32_t i : mesh.indices)
-            triangles.push_back(base + i);
-        return;
+// A sphere around the given points: the centre of their box, with the radius rounded up so that
+// it contains every point.
+void bound(const std::vector<Vec3>& positions, const uint32_t* indices, size_t count, Vec3& centre,
+           float& radius) {
+    Vec3 lo(INFINITY);
+    Vec3 hi(-INFINITY);
+    for (size_t i = 0; i < count; ++i) {
+        lo = glm::min(lo, positions[indices[i]]);
+        hi = glm::max(hi, positions[indices[i]]);
     }
-    // Seams of normals and texture coordinates split vertices that shadows need not tell apart;
-    // welded, the simplifier sees one surface instead of patches with locked borders.
-    std::vector<uint32_t> remap(mesh.positions.size());
-    const size_t unique =
-        meshopt_generateVertexRemap(remap.data(), mesh.indices.data(), mesh.indices.size(),
-                                    mesh.positions.data(), mesh.positions.size(), sizeof(Vec3));
-    std::vector<Vec3> welded(unique);
-    meshopt_remapVertexBuffer(welded.data(), mesh.positions.data(), mesh.positions.size(),
-                              sizeof(Vec3), remap.data());
-    std::vector<uint32_t> indices(mesh.indices.size());
-    meshopt_remapIndexBuffer(indices.data(), mesh.indices.data(), mesh.indices.size(),
-                             remap.data());
-    // The error bound decides where it stops, not the triangle count.
-    std::vector<uint32_t> simplified(indices.size());
-    const size_t count =
-        meshopt_simplify(simplified.data(), indices.data(), indices.size(), &welded[0].x,
-                         welded.size(), sizeof(Vec3), 3, simplify_error, 0, nullptr);
-    positions.insert(positions.end(), welded.begin(), welded.end());
+    centre = 0.5f * (lo + hi);
+    radius = 0.0f;
     for (size_t i = 0; i < count; ++i)
-        triangles.push_back(base + simplified[i]);
+        radius = std::max(radius, glm::length(positions[indices[i]] - centre));
+    radius = radius * (1.0f + 1e-5f) + 1e-30f;
 }
 
-}  // namespace
+// Whether a sphere may reach cube face `face` of a VPL at `position` and, with a normal, the
+// half-space it lights, tilted down by the margin.
+bool sphere_visible(const Vec3& centre, float radius, const Vec3& position, uint32_t face,
+                    const Vec3* lit_normal, float sin_margin) {
+    const int axis = int(face / 2);
+    const float sign = face % 2 == 0 ? 1.0f : -1.0f;
+    const int u = (axis + 1) % 3;
+    const int v = (axis + 2) % 3;
+    // The face's frustum: sign·r_axis ≥ |r_u| and ≥ |r_v|; its four planes through the VPL have
+    // unit normals (sign·e_axis ± e_u)/√2 and (sign·e_axis ± e_v)/√2.
+    constexpr float kInvSqrt2 = 0.70710678f;
+    const Vec3 r = centre - position;
+    const float along = sign * r[axis];
+    // Slack: the sphere plus the relative rounding of r (positions far from the origin).
+    const float slack = radius + 1e-5f * (std::abs(r.x) + std::abs(r.y) + std::abs(r.z));
+    if ((along - std::abs(r[u])) * kInvSqrt2 < -slack) return false;
+    if ((along - std::abs(r[v])) * kInvSqrt2 < -slack) return false;
+    // A sphere wholly below the plane tilted down by the margin is never looked up.
+    return !lit_normal ||
+           glm::dot(*lit_normal, r) >= -slack - sin_margin * (glm::length(r) + radius);
+}
 
-ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_triangles,
-                               float simplify_error) {
-    std::vector<uint32_t> triangles;  // three indices each, into m_positions
-    for (const scene::Mesh& mesh : scene.meshes) {
-        // Masked and blended meshes cast shadows through ShadowPass's alpha-tested draws.
-        if (mesh.material >= 0 && size_t(mesh.material) < scene.materials.size() &&
-            scene.materials[size_t(mesh.material)].alpha_mode != scene::AlphaMode::Opaque)
-            continue;
-        add_mesh(mesh, simplify_error, m_positions, triangles);
+void append_range(std::vector<gpu::IndexRange>& out, const ShadowCluster& c) {
+    if (!out.empty() && out.back().first_index + out.back().index_count == c.first_index) {
+        out.back().index_count += c.index_count;
+    } else {
+        out.push_back({c.first_index, c.index_count});
     }
+}
+
+// meshoptimizer's error measures how far the kept vertices moved from the planes of the triangles
+// they replace; the new triangles' interiors stray farther (on a sphere, whose vertices stay on
+// it, up to 1.8× at the first level, 1.1–1.3× at coarser ones: tests/render/test_shadow_lod.cpp).
+constexpr float kQuadricErrorFactor = 2.0f;
+
+// The levels of a large mesh after its full triangles, each as indices into `welded`, with its
+// error bound relative to the welded vertices' extent (meshopt_simplifyScale).
+struct SimplifiedLevel {
+    std::vector<uint32_t> indices;
+    float relative_error = 0.0f;
+};
+
+std::vector<SimplifiedLevel> simplified_levels(const std::vector<Vec3>& welded,
+                                               const std::vector<uint32_t>& indices,
+                                               bool lock_border) {
+    std::vector<SimplifiedLevel> levels;
+    const std::vector<uint32_t>* input = &indices;
+    float input_error = 0.0f;
+    float target = ShadowClusters::kProxyError;
+    for (uint32_t k = 1; k < ShadowClusters::kMaxLevels;
+         ++k, target *= ShadowClusters::kLodErrorStep) {
+        // Each level simplifies the previous one, so its distance from the mesh is at most the
+        // sum of the steps' errors (each measured against its own input).
+        std::vector<uint32_t> out(input->size());
+        float step_error = 0.0f;
+        const size_t count =
+            meshopt_simplify(out.data(), input->data(), input->size(), &welded[0].x, welded.size(),
+                             sizeof(Vec3), 3, target - input_error,
+                             lock_border ? unsigned(meshopt_SimplifyLockBorder) : 0u, &step_error);
+        if (count == 0) break;
+        // A level that saves less than a quarter is not worth its clusters; level 1 is the
+        // surface VPLs' proxy and always kept.
+        if (k > 1 && double(count) > 0.75 * double(input->size())) continue;
+        out.resize(count);
+        levels.push_back({std::move(out), input_error + step_error});
+        input = &levels.back().indices;
+        input_error = levels.back().relative_error;
+        if (count <= 3 * 16) break;
+    }
+    return levels;
+}
+
+// The order of triangles along a Morton curve of their centroids.
+std::vector<uint32_t> morton_order(const std::vector<Vec3>& positions,
+                                   const std::vector<uint32_t>& triangles) {
     const size_t count = triangles.size() / 3;
     Vec3 lo(INFINITY);
     Vec3 hi(-INFINITY);
     std::vector<Vec3> centroids(count);
     for (size_t t = 0; t < count; ++t) {
-        centroids[t] = (m_positions[triangles[3 * t]] + m_positions[triangles[3 * t + 1]] +
-                        m_positions[triangles[3 * t + 2]]) /
+        centroids[t] = (positions[triangles[3 * t]] + positions[triangles[3 * t + 1]] +
+                        positions[triangles[3 * t + 2]]) /
                        3.0f;
         lo = glm::min(lo, centroids[t]);
         hi = glm::max(hi, centroids[t]);
@@ -94,61 +141,153 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
     std::iota(order.begin(), order.end(), 0u);
     std::stable_sort(order.begin(), order.end(),
                      [&codes](uint32_t a, uint32_t b) { return codes[a] < codes[b]; });
-    m_indices.reserve(triangles.size());
+    return order;
+}
+
+}  // namespace
+
+void ShadowClusters::add_level(ShadowGroup& group, const std::vector<uint32_t>& triangles,
+                               float error, uint32_t cluster_triangles) {
+    const size_t count = triangles.size() / 3;
+    const std::vector<uint32_t> order = morton_order(m_positions, triangles);
+    const size_t first_index = m_indices.size();
     for (const uint32_t t : order) {
         for (int k = 0; k < 3; ++k)
             m_indices.push_back(triangles[3 * t + k]);
     }
+    ShadowLevel level;
+    level.first_cluster = uint32_t(m_clusters.size());
+    level.triangle_count = uint32_t(count);
+    level.error = error;
     const uint32_t per_cluster = std::max(cluster_triangles, 1u);
     for (size_t first = 0; first < count; first += per_cluster) {
         const size_t last = std::min(count, first + per_cluster);
-        Vec3 c_lo(INFINITY);
-        Vec3 c_hi(-INFINITY);
-        for (size_t i = 3 * first; i < 3 * last; ++i) {
-            c_lo = glm::min(c_lo, m_positions[m_indices[i]]);
-            c_hi = glm::max(c_hi, m_positions[m_indices[i]]);
-        }
         ShadowCluster c;
-        c.centre = 0.5f * (c_lo + c_hi);
-        for (size_t i = 3 * first; i < 3 * last; ++i)
-            c.radius = std::max(c.radius, glm::length(m_positions[m_indices[i]] - c.centre));
-        // Rounding of the centre and of the distances: the sphere must contain every vertex.
-        c.radius = c.radius * (1.0f + 1e-5f) + 1e-30f;
-        c.first_index = uint32_t(3 * first);
+        bound(m_positions, &m_indices[first_index + 3 * first], 3 * (last - first), c.centre,
+              c.radius);
+        c.first_index = uint32_t(first_index + 3 * first);
         c.index_count = uint32_t(3 * (last - first));
         m_clusters.push_back(c);
     }
+    level.cluster_count = uint32_t(m_clusters.size()) - level.first_cluster;
+    group.levels.push_back(level);
+}
+
+ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_triangles,
+                               bool levels_of_detail) {
+    ShadowGroup small;
+    std::vector<uint32_t> small_triangles;  // three indices each, into m_positions
+    for (const scene::Mesh& mesh : scene.meshes) {
+        // Masked and blended meshes cast shadows through ShadowPass's alpha-tested draws.
+        if (mesh.material >= 0 && size_t(mesh.material) < scene.materials.size() &&
+            scene.materials[size_t(mesh.material)].alpha_mode != scene::AlphaMode::Opaque)
+            continue;
+        const uint32_t base = uint32_t(m_positions.size());
+        m_positions.insert(m_positions.end(), mesh.positions.begin(), mesh.positions.end());
+        std::vector<uint32_t> full(mesh.indices.size());
+        for (size_t i = 0; i < full.size(); ++i)
+            full[i] = base + mesh.indices[i];
+        if (!levels_of_detail || mesh.triangle_count() < kLodMinTriangles) {
+            small_triangles.insert(small_triangles.end(), full.begin(), full.end());
+            continue;
+        }
+        // Seams of normals and texture coordinates split vertices that shadows need not tell
+        // apart; welded, the simplifier sees one surface instead of patches with locked borders.
+        std::vector<uint32_t> remap(mesh.positions.size());
+        const size_t unique =
+            meshopt_generateVertexRemap(remap.data(), mesh.indices.data(), mesh.indices.size(),
+                                        mesh.positions.data(), mesh.positions.size(), sizeof(Vec3));
+        std::vector<Vec3> welded(unique);
+        meshopt_remapVertexBuffer(welded.data(), mesh.positions.data(), mesh.positions.size(),
+                                  sizeof(Vec3), remap.data());
+        std::vector<uint32_t> indices(mesh.indices.size());
+        meshopt_remapIndexBuffer(indices.data(), mesh.indices.data(), mesh.indices.size(),
+                                 remap.data());
+        const float scale = meshopt_simplifyScale(&welded[0].x, welded.size(), sizeof(Vec3));
+        const uint32_t welded_base = uint32_t(m_positions.size());
+        m_positions.insert(m_positions.end(), welded.begin(), welded.end());
+        // A mesh much larger than a chunk is cut into chunks along a Morton curve, each its own
+        // group, so that the part of a large model near a VPL keeps its triangles while the rest
+        // is simplified. Their borders are locked (meshopt_SimplifyLockBorder): every level of a
+        // chunk meets its neighbours' at the same edges, without cracks for light to pass.
+        const size_t triangles = mesh.triangle_count();
+        const size_t chunks =
+            triangles >= 2 * kLodChunkTriangles ? triangles / kLodChunkTriangles : 1;
+        const std::vector<uint32_t> order = morton_order(welded, indices);
+        for (size_t k = 0; k < chunks; ++k) {
+            std::vector<uint32_t> chunk_full;
+            std::vector<uint32_t> chunk_welded;
+            for (size_t o = k * triangles / chunks; o < (k + 1) * triangles / chunks; ++o) {
+                for (int v = 0; v < 3; ++v) {
+                    chunk_full.push_back(full[3 * size_t(order[o]) + v]);
+                    chunk_welded.push_back(indices[3 * size_t(order[o]) + v]);
+                }
+            }
+            ShadowGroup group;
+            bound(m_positions, chunk_full.data(), chunk_full.size(), group.centre, group.radius);
+            add_level(group, chunk_full, 0.0f, cluster_triangles);
+            for (SimplifiedLevel& level : simplified_levels(welded, chunk_welded, chunks > 1)) {
+                for (uint32_t& i : level.indices)
+                    i += welded_base;
+                add_level(group, level.indices, kQuadricErrorFactor * level.relative_error * scale,
+                          cluster_triangles);
+            }
+            m_groups.push_back(std::move(group));
+        }
+    }
+    if (!small_triangles.empty()) {
+        bound(m_positions, small_triangles.data(), small_triangles.size(), small.centre,
+              small.radius);
+        add_level(small, small_triangles, 0.0f, cluster_triangles);
+        m_groups.push_back(std::move(small));
+    }
+}
+
+size_t ShadowClusters::triangle_count(uint32_t level) const {
+    size_t count = 0;
+    for (const ShadowGroup& g : m_groups)
+        count += g.levels[std::min<size_t>(level, g.levels.size() - 1)].triangle_count;
+    return count;
+}
+
+uint32_t ShadowClusters::level_for(const ShadowGroup& g, const Vec3& position,
+                                   const LodChoice& lod) const {
+    const float distance = std::max(glm::length(g.centre - position) - g.radius, 0.0f);
+    const float allowed = std::max(lod.error_per_distance * distance, lod.error_anywhere);
+    uint32_t level = std::min<uint32_t>(lod.min_level, uint32_t(g.levels.size()) - 1);
+    // Without an allowance, not even a level that happens to be exact (a flat mesh's) is taken:
+    // levels of detail off draw what they drew before.
+    if (!(allowed > 0.0f)) return level;
+    while (level + 1 < g.levels.size() && g.levels[level + 1].error <= allowed)
+        ++level;
+    return level;
 }
 
 void ShadowClusters::visible_ranges(const Vec3& position, uint32_t face, const Vec3* lit_normal,
-                                    float margin_angle, std::vector<gpu::IndexRange>& out) const {
+                                    float margin_angle, const LodChoice& lod,
+                                    CasterRanges& out) const {
     out.clear();
-    const int axis = int(face / 2);
-    const float sign = face % 2 == 0 ? 1.0f : -1.0f;
-    const int u = (axis + 1) % 3;
-    const int v = (axis + 2) % 3;
-    // The face's frustum: sign·r_axis ≥ |r_u| and ≥ |r_v|; its four planes through the VPL have
-    // unit normals (sign·e_axis ± e_u)/√2 and (sign·e_axis ± e_v)/√2.
-    constexpr float kInvSqrt2 = 0.70710678f;
     const float sin_margin = std::sin(std::min(margin_angle, 1.5f));
-    for (const ShadowCluster& c : m_clusters) {
-        const Vec3 r = c.centre - position;
-        const float along = sign * r[axis];
-        // Slack: the sphere plus the relative rounding of r (positions far from the origin).
-        const float slack = c.radius + 1e-5f * (std::abs(r.x) + std::abs(r.y) + std::abs(r.z));
-        const bool in_frustum = (along - std::abs(r[u])) * kInvSqrt2 >= -slack &&
-                                (along - std::abs(r[v])) * kInvSqrt2 >= -slack;
-        bool lit = true;
-        if (lit_normal) {
-            // A sphere wholly below the plane tilted down by the margin is never looked up.
-            lit = glm::dot(*lit_normal, r) >= -slack - sin_margin * (glm::length(r) + c.radius);
+    for (const ShadowGroup& g : m_groups) {
+        if (!sphere_visible(g.centre, g.radius, position, face, lit_normal, sin_margin)) continue;
+        const ShadowLevel& level = g.levels[level_for(g, position, lod)];
+        std::vector<gpu::IndexRange>& ranges = level.error > 0.0f ? out.simplified : out.full;
+        for (uint32_t i = 0; i < level.cluster_count; ++i) {
+            const ShadowCluster& c = m_clusters[level.first_cluster + i];
+            if (sphere_visible(c.centre, c.radius, position, face, lit_normal, sin_margin))
+                append_range(ranges, c);
         }
-        if (!in_frustum || !lit) continue;
-        if (!out.empty() && out.back().first_index + out.back().index_count == c.first_index) {
-            out.back().index_count += c.index_count;
-        } else {
-            out.push_back({c.first_index, c.index_count});
-        }
+    }
+}
+
+void ShadowClusters::level_ranges(const Vec3& position, const LodChoice& lod,
+                                  CasterRanges& out) const {
+    out.clear();
+    for (const ShadowGroup& g : m_groups) {
+        const ShadowLevel& level = g.levels[level_for(g, position, lod)];
+        std::vector<gpu::IndexRange>& ranges = level.error > 0.0f ? out.simplified : out.full;
+        for (uint32_t i = 0; i < level.cluster_count; ++i)
+            append_range(ranges, m_clusters[level.first_cluster + i]);
     }
 }
 

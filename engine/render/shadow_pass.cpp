@@ -88,43 +88,31 @@ gpu::Buffer upload_buffer(gpu::Context& context, const std::vector<T>& data, gpu
 
 }  // namespace
 
-ShadowPass::Casters ShadowPass::upload(gpu::Context& context, const ShadowClusters& clusters,
-                                       const char* name) {
-    Casters c;
-    c.clusters = &clusters;
-    c.positions = upload_buffer(context, clusters.positions(), gpu::BufferUsage::vertex,
-                                std::string(name) + " positions");
-    c.indices = upload_buffer(context, clusters.indices(), gpu::BufferUsage::index,
-                              std::string(name) + " indices");
-    return c;
-}
-
 ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
-                       const ShadowClusters& clusters, uint32_t resolution, uint32_t max_batch,
-                       bool culling, const ShadowClusters* proxy, bool hemicube,
-                       uint32_t indirect_resolution, uint32_t ism_resolution, uint32_t ism_points,
-                       bool ism_emitters)
+                       const ShadowClusters& clusters, const ShadowPassOptions& options)
     : m_geometry(&geometry),
-      m_full(upload(context, clusters, "shadow casters")),
-      m_proxy(proxy ? upload(context, *proxy, "shadow proxy") : Casters{}),
-      m_culling(culling),
-      m_hemicube(hemicube),
-      m_indirect_resolution(indirect_resolution),
-      m_ism_emitters(ism_emitters),
-      m_cubes(context,
-              {resolution, resolution, 6 * max_batch, gpu::Format::r32_float,
-               gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
-              "shadow cubes"),
+      m_clusters(&clusters),
+      m_options(options),
+      m_positions(upload_buffer(context, clusters.positions(), gpu::BufferUsage::vertex,
+                                "shadow caster positions")),
+      m_indices(upload_buffer(context, clusters.indices(), gpu::BufferUsage::index,
+                              "shadow caster indices")),
+      m_cubes(
+          context,
+          {options.resolution, options.resolution, 6 * options.max_batch, gpu::Format::r32_float,
+           gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
+          "shadow cubes"),
       m_depth(context,
-              {resolution, resolution, 6, gpu::Format::d32_float, gpu::ImageUsage::depth_attachment,
-               false},
+              {options.resolution, options.resolution, 6, gpu::Format::d32_float,
+               gpu::ImageUsage::depth_attachment, false},
               "shadow depth"),
       m_ortho(context,
-              {resolution, resolution, std::max(max_batch, 2u), gpu::Format::r32_float,
-               gpu::ImageUsage::color_attachment | gpu::ImageUsage::sampled, false},
+              {options.resolution, options.resolution, std::max(options.max_batch, 2u),
+               gpu::Format::r32_float, gpu::ImageUsage::color_attachment | gpu::ImageUsage::sampled,
+               false},
               "directional shadow maps"),
       m_ortho_depth(context,
-                    {resolution, resolution, 1, gpu::Format::d32_float,
+                    {options.resolution, options.resolution, 1, gpu::Format::d32_float,
                      gpu::ImageUsage::depth_attachment, false},
                     "directional shadow depth"),
       m_pipeline(std::make_unique<gpu::GraphicsPipeline>(
@@ -145,11 +133,11 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
     if (m_masked_draws.empty()) {
         // The imperfect faces fit in the cube layers: the largest power of two not above either.
         uint32_t side = 0;
-        for (uint32_t p = 1; p <= std::min(ism_resolution, resolution); p *= 2)
+        for (uint32_t p = 1; p <= std::min(options.ism_resolution, options.resolution); p *= 2)
             side = p;
         if (side >= 2) {
-            m_ism = std::make_unique<IsmPass>(context, sample_ism_points(clusters, ism_points),
-                                              side, max_batch);
+            m_ism = std::make_unique<IsmPass>(
+                context, sample_ism_points(clusters, options.ism_points), side, options.max_batch);
         }
         return;
     }
@@ -198,15 +186,38 @@ void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline&
 
 ShadowPass::~ShadowPass() = default;
 
+template <typename Push, typename Flag>
+void ShadowPass::draw_casters(gpu::CommandList& cmd, const gpu::GraphicsPipeline& pipeline,
+                              Push& push, Flag& simplified) {
+    for (const bool coarse : {false, true}) {
+        const std::vector<gpu::IndexRange>& ranges = coarse ? m_ranges.simplified : m_ranges.full;
+        if (ranges.empty()) continue;
+        for (const gpu::IndexRange& r : ranges)
+            m_triangles_drawn += r.index_count / 3;
+        simplified = Flag(coarse ? 1 : 0);
+        gpu::draw_indexed(cmd, pipeline, m_positions, m_indices, gpu::push_bytes(push), ranges);
+    }
+    // The masked draws that may follow are never simplified.
+    simplified = Flag(0);
+}
+
 bool ShadowPass::uses_ism(const light::Vpl& vpl) const {
-    return m_ism && (vpl.path_length > 0 || m_ism_emitters) &&
+    return m_ism && (vpl.path_length > 0 || m_options.ism_emitters) &&
            vpl.type != light::VplType::Directional;
 }
 
 uint32_t ShadowPass::face_resolution(const light::Vpl& vpl) const {
     if (uses_ism(vpl)) return std::min(m_ism->resolution(), resolution());
-    if (vpl.path_length == 0 || m_indirect_resolution == 0) return resolution();
-    return std::min(m_indirect_resolution, resolution());
+    if (vpl.path_length == 0 || m_options.indirect_resolution == 0) return resolution();
+    return std::min(m_options.indirect_resolution, resolution());
+}
+
+LodChoice ShadowPass::lod_choice(const light::Vpl& vpl, uint32_t res) const {
+    LodChoice lod;
+    lod.min_level = m_options.proxy && vpl.path_length > 0 ? 1 : 0;
+    // A face's texel spans at most 2 / res radians, at its centre.
+    if (m_options.lod) lod.error_per_distance = kLodFootprint * 2.0f / float(res);
+    return lod;
 }
 
 void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
@@ -252,7 +263,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
             const uint32_t res = face_resolution(vpl);
             const gpu::RenderArea viewport{0, 0, res, res};
             gpu::RenderArea area = viewport;
-            if (hemisphere && m_hemicube) {
+            if (hemisphere && m_options.hemicube) {
                 const std::optional<FaceRect> rect = lit_face_rect(vpl.normal, face, res);
                 if (!rect) continue;
                 area = {rect->x, rect->y, rect->width, rect->height};
@@ -264,23 +275,19 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
                 &m_cubes, 6 * i + face, {kShadowNoOccluder, 0.0f, 0.0f, 0.0f}};
             const gpu::DepthTarget depth{&m_depth, face, 0.0f};
             gpu::begin_rendering(cmd, std::span(&color, 1), &depth, &area, &viewport);
-            const ShadowPush push{{vpl.position.x, vpl.position.y, vpl.position.z, m_near},
-                                  {face, 0u, 0u, 0u}};
+            ShadowPush push{{vpl.position.x, vpl.position.y, vpl.position.z, m_near},
+                            {face, 0u, 0u, 0u}};
             // Materials do not matter for distances: one index buffer for the whole scene, of
-            // which the face draws the clusters it can see.
-            const Casters& casters = m_proxy.clusters && vpl.path_length > 0 ? m_proxy : m_full;
-            if (m_culling) {
+            // which the face draws the clusters it can see at their levels.
+            const LodChoice lod = lod_choice(vpl, res);
+            if (m_options.culling) {
                 // A face's texel spans at most 2/resolution radians.
-                casters.clusters->visible_ranges(vpl.position, face,
-                                                 hemisphere ? &vpl.normal : nullptr,
-                                                 2.0f / float(res), m_ranges);
+                m_clusters->visible_ranges(vpl.position, face, hemisphere ? &vpl.normal : nullptr,
+                                           2.0f / float(res), lod, m_ranges);
             } else {
-                m_ranges.assign(1, casters.clusters->all());
+                m_clusters->level_ranges(vpl.position, lod, m_ranges);
             }
-            for (const gpu::IndexRange& r : m_ranges)
-                m_triangles_drawn += r.index_count / 3;
-            gpu::draw_indexed(cmd, *m_pipeline, casters.positions, casters.indices,
-                              gpu::push_bytes(push), m_ranges);
+            draw_casters(cmd, *m_pipeline, push, push.face[3]);
             if (m_masked_pipeline) {
                 draw_masked(cmd, *m_masked_pipeline, m_masked_set, gpu::push_bytes(push),
                             offsetof(ShadowPush, face) + sizeof(uint32_t), false);
@@ -300,13 +307,15 @@ void ShadowPass::record_directional(gpu::CommandList& cmd, const light::Vpl& vpl
     const gpu::ColorTarget color{&m_ortho, layer, {kShadowNoOccluder, 0.0f, 0.0f, 0.0f}};
     const gpu::DepthTarget depth{&m_ortho_depth, 0, 0.0f};
     gpu::begin_rendering(cmd, std::span(&color, 1), &depth);
-    const OrthoPush push{{f.u.x, f.u.y, f.u.z, f.origin.x},
-                         {f.v.x, f.v.y, f.v.z, f.origin.y},
-                         {f.dir.x, f.dir.y, f.dir.z, f.origin.z},
-                         {f.extent, f.depth, 0.0f, 0.0f}};
-    const gpu::IndexRange all = m_full.clusters->all();
-    gpu::draw_indexed(cmd, *m_ortho_pipeline, m_full.positions, m_full.indices,
-                      gpu::push_bytes(push), std::span(&all, 1));
+    OrthoPush push{{f.u.x, f.u.y, f.u.z, f.origin.x},
+                   {f.v.x, f.v.y, f.v.z, f.origin.y},
+                   {f.dir.x, f.dir.y, f.dir.z, f.origin.z},
+                   {f.extent, f.depth, 0.0f, 0.0f}};
+    // The map's texels are extent / resolution wide wherever a mesh stands.
+    LodChoice lod;
+    if (m_options.lod) lod.error_anywhere = kLodFootprint * f.extent / float(resolution());
+    m_clusters->level_ranges(vpl.position, lod, m_ranges);
+    draw_casters(cmd, *m_ortho_pipeline, push, push.extents[2]);
     if (m_masked_ortho_pipeline) {
         draw_masked(cmd, *m_masked_ortho_pipeline, m_masked_ortho_set, gpu::push_bytes(push),
                     offsetof(OrthoPush, extents) + 2 * sizeof(float), true);

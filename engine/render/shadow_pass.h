@@ -47,25 +47,45 @@ class SceneGeometry;
 // The distance a shadow texel holds where no surface was rendered.
 inline constexpr float kShadowNoOccluder = 3.0e38f;
 
+// resolution: the side of a cube face in texels; max_batch: cubes in the array.
+struct ShadowPassOptions {
+    uint32_t resolution = 256;
+    uint32_t max_batch = 32;
+    // Whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle.
+    bool culling = true;
+    // Surface VPLs (path length ≥ 1) draw the large meshes' level 1 at least (the shadow proxy),
+    // while emitter VPLs, whose shadows are the sharpest, may draw their full triangles.
+    bool proxy = true;
+    // Each VPL draws each large mesh at the coarsest level whose error stays below
+    // kLodFootprint of a texel's footprint at the mesh's distance (shadow_clusters.h); false:
+    // level 0, or the proxy.
+    bool lod = true;
+    // Area and Surface VPLs draw only the texels of each face that their lit hemisphere can
+    // reach (hemicube.h); false: every face that is not wholly behind them, in full.
+    bool hemicube = true;
+    // The face side of VPLs with path length ≥ 1, drawn into the first rows and columns of
+    // their layers (0, or not below resolution: the same as emitters').
+    uint32_t indirect_resolution = 0;
+    // The face side of the imperfect maps of path length ≥ 1 (0: none; else a power of two ≤
+    // kMaxIsmResolution, and it takes precedence over indirect_resolution), splatted from
+    // ism_points points sampled over the clusters' full triangles; ism_emitters: emitter VPLs
+    // (not directional ones) too (an experiment: docs/results.md, "Imperfect shadow maps").
+    uint32_t ism_resolution = 0;
+    uint32_t ism_points = IsmPass::kDefaultPoints;
+    bool ism_emitters = false;
+};
+
 class ShadowPass {
 public:
-    // resolution: the side of a cube face in texels; max_batch: cubes in the array; culling:
-    // whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle;
-    // proxy (may be null): the simplified casters that surface VPLs (path length ≥ 1) draw,
-    // while emitter VPLs, whose shadows are the sharpest, draw `clusters`; hemicube: Area and
-    // Surface VPLs draw only the texels of each face that their lit hemisphere can reach
-    // (hemicube.h), false: every face that is not wholly behind them, in full;
-    // indirect_resolution: the face side of VPLs with path length ≥ 1, drawn into the first rows
-    // and columns of their layers (0, or not below resolution: the same as emitters');
-    // ism_resolution: the face side of the imperfect maps of path length ≥ 1 (0: none; else a
-    // power of two ≤ kMaxIsmResolution, and it takes precedence over indirect_resolution),
-    // splatted from ism_points points sampled over `clusters`; ism_emitters: emitter VPLs (not
-    // directional ones) too (an experiment: docs/results.md, "Imperfect shadow maps").
+    // A simplified mesh may move the surface by this many texel footprints (d · 2 / resolution
+    // on a face, extent / resolution on an orthographic map): the shading pass's shadow tests
+    // allow as much depth in front of a receiver (kLodFootprint in shading_template.glsl), and a
+    // texel at a face's corner is a third of the centre's wide, so a silhouette moves by less
+    // than one texel.
+    static constexpr float kLodFootprint = 0.25f;
+
     ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
-               uint32_t resolution, uint32_t max_batch, bool culling = true,
-               const ShadowClusters* proxy = nullptr, bool hemicube = true,
-               uint32_t indirect_resolution = 0, uint32_t ism_resolution = 0,
-               uint32_t ism_points = IsmPass::kDefaultPoints, bool ism_emitters = false);
+               const ShadowPassOptions& options);
     ~ShadowPass();
     ShadowPass(const ShadowPass&) = delete;
     ShadowPass& operator=(const ShadowPass&) = delete;
@@ -100,26 +120,25 @@ public:
 private:
     void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
 
-    // Shadow casters on the GPU.
-    struct Casters {
-        const ShadowClusters* clusters = nullptr;
-        gpu::Buffer positions;
-        gpu::Buffer indices;
-    };
-    static Casters upload(gpu::Context& context, const ShadowClusters& clusters, const char* name);
+    // Draws m_ranges: the full levels' with `simplified` (a member of push) 0, the simplified
+    // levels' with 1 (shadow.frag marks their texels).
+    template <typename Push, typename Flag>
+    void draw_casters(gpu::CommandList& cmd, const gpu::GraphicsPipeline& pipeline, Push& push,
+                      Flag& simplified);
+    // The level of detail vpl draws with faces of side `res`.
+    LodChoice lod_choice(const light::Vpl& vpl, uint32_t res) const;
 
     const SceneGeometry* m_geometry;
-    Casters m_full;
-    Casters m_proxy;  // clusters null without a proxy
-    bool m_culling;
-    bool m_hemicube;
-    uint32_t m_indirect_resolution;
-    std::vector<gpu::IndexRange> m_ranges;  // scratch, per face
+    const ShadowClusters* m_clusters;
+    ShadowPassOptions m_options;
+    // The shadow casters on the GPU, every level.
+    gpu::Buffer m_positions;
+    gpu::Buffer m_indices;
+    CasterRanges m_ranges;  // scratch, per face
     uint64_t m_triangles_drawn = 0;
     uint64_t m_texels_drawn = 0;
     uint64_t m_ism_vpls = 0;
-    std::unique_ptr<IsmPass> m_ism;  // null without imperfect maps
-    bool m_ism_emitters = false;
+    std::unique_ptr<IsmPass> m_ism;       // null without imperfect maps
     std::vector<light::Vpl> m_ism_batch;  // scratch: this batch's VPLs with imperfect maps
     std::vector<uint32_t> m_ism_slots;    // and their cubes
     gpu::Image m_cubes;

@@ -53,17 +53,6 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
         .count();
 }
 
-// The shadow proxy of the scene's large meshes, or null when none is large enough.
-std::unique_ptr<ShadowClusters> make_proxy(const scene::Scene& s) {
-    for (const scene::Mesh& m : s.meshes) {
-        if (m.triangle_count() >= ShadowClusters::kProxyMinTriangles) {
-            return std::make_unique<ShadowClusters>(s, ShadowClusters::kClusterTriangles,
-                                                    ShadowClusters::kProxyError);
-        }
-    }
-    return nullptr;
-}
-
 }  // namespace
 
 SubpixelSchedule subpixel_schedule(const RenderOptions& options) {
@@ -80,7 +69,6 @@ struct VplRenderer::Impl {
           camera(s.camera),
           geometry(c, s),
           clusters(s),
-          proxy(make_proxy(s)),
           culling(s) {}
 
     gpu::Context* context;
@@ -88,8 +76,7 @@ struct VplRenderer::Impl {
     const trace::Accel* accel;  // null: no specular chains
     scene::Camera camera;
     SceneGeometry geometry;
-    ShadowClusters clusters;
-    std::unique_ptr<ShadowClusters> proxy;  // null when no mesh is large enough for one
+    ShadowClusters clusters;  // with the large meshes' levels of detail
     VplCulling culling;
     // Passes are kept between renders with the same sizes (pipelines compile in ~100 ms).
     std::unique_ptr<GBufferPass> g_buffer;
@@ -159,14 +146,23 @@ struct VplRenderer::Impl {
         }
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
             o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
-            o.shadow_proxy != built_for.shadow_proxy || o.hemicube != built_for.hemicube ||
+            o.shadow_proxy != built_for.shadow_proxy || o.shadow_lod != built_for.shadow_lod ||
+            o.hemicube != built_for.hemicube ||
             o.indirect_shadow_resolution != built_for.indirect_shadow_resolution ||
             o.ism != built_for.ism || o.ism_resolution != built_for.ism_resolution ||
             o.ism_points != built_for.ism_points || o.ism_emitters != built_for.ism_emitters) {
-            shadow = std::make_unique<ShadowPass>(
-                *context, geometry, clusters, o.shadow_resolution, o.batch, o.shadow_culling,
-                o.shadow_proxy ? proxy.get() : nullptr, o.hemicube, o.indirect_shadow_resolution,
-                o.ism ? o.ism_resolution : 0, o.ism_points, o.ism_emitters);
+            ShadowPassOptions so;
+            so.resolution = o.shadow_resolution;
+            so.max_batch = o.batch;
+            so.culling = o.shadow_culling;
+            so.proxy = o.shadow_proxy;
+            so.lod = o.shadow_lod;
+            so.hemicube = o.hemicube;
+            so.indirect_resolution = o.indirect_shadow_resolution;
+            so.ism_resolution = o.ism ? o.ism_resolution : 0;
+            so.ism_points = o.ism_points;
+            so.ism_emitters = o.ism_emitters;
+            shadow = std::make_unique<ShadowPass>(*context, geometry, clusters, so);
             shading.reset();
         }
         if (o.surface_vpls != built_for.surface_vpls) shading.reset();

@@ -62,6 +62,10 @@ struct RenderOptions {
     // Surface VPLs draw the simplified shadow proxy of the scene's large meshes
     // (shadow_clusters.h); false: every VPL draws the full geometry.
     bool shadow_proxy = true;
+    // Each VPL draws each large mesh at the coarsest level of detail whose error stays below a
+    // quarter of a shadow texel's footprint at the mesh's distance (shadow_clusters.h); false:
+    // full meshes, or the proxy.
+    bool shadow_lod = true;
     // Area and Surface VPLs draw only the part of each cube face that their lit hemisphere can
     // reach (hemicube.h); false: whole faces (the A/B of mvpl bench --sweep).
     bool hemicube = true;

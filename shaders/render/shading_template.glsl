@@ -82,6 +82,18 @@ const float kSlopeBias = 1.0;
 const float kMaxSlope = 4.0;
 const float kNormalOffset = 1.0;
 const float kJunctionReach = 4.0;
+// Texels drawn from a simplified level of detail hold their distance negated (shadow.frag): such a
+// surface lies up to this many footprints from the full one (ShadowPass::kLodFootprint), so a
+// receiver on the full surface is not shadowed by its own coarser copy standing that far in front
+// of it. The plane test's kFootprintBias covers it already; the junction lookups and the
+// orthographic maps' test allow it for those texels only, so that thin walls (never simplified)
+// shadow as before.
+const float kLodFootprint = 0.25;
+
+// The distance a shadow texel holds, and the depth its level of detail may stand in front.
+vec2 stored_distance(float texel_value, float footprint) {
+    return vec2(abs(texel_value), texel_value < 0.0 ? kLodFootprint * footprint : 0.0);
+}
 
 // The cube texel that holds direction w, found as Vulkan's cube sampling finds it (spec, "Cube Map
 // Face Selection", the projection shadow.vert renders with), nearest filtering and clamp to edge:
@@ -133,18 +145,19 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
     const float footprint = d * (2.0 / res);  // a texel's angle at the face's centre: 2 / res
     const vec3 w = to_receiver / d;
     const CubeTexel ct = cube_texel(w, res);
-    const float stored =
-        imageLoad(shadow_cubes, ivec3(ct.texel.xy, 6 * int(cube) + ct.texel.z)).r;
+    const vec2 stored = stored_distance(
+        imageLoad(shadow_cubes, ivec3(ct.texel.xy, 6 * int(cube) + ct.texel.z)).r, footprint);
     const vec3 wc = ct.centre;
     const float along = dot(ng, wc);
     const float d_plane = dot(ng, to_receiver) / along;
     const float cos_r = abs(dot(ng, w));
     bool lit;
     if (abs(along) > 0.05 * cos_r && d_plane > 0.5 * d && d_plane < 2.0 * d) {
-        lit = stored >= d_plane - (kConstantBias * d + kFootprintBias * footprint);
+        // kFootprintBias ≥ kLodFootprint: the allowance of simplified casters is in it.
+        lit = stored.x >= d_plane - (kConstantBias * d + kFootprintBias * footprint);
     } else {
         const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
-        lit = stored >= d - d * (kConstantBias + kSlopeBias * (2.0 / res) * tan_r);
+        lit = stored.x >= d - d * (kConstantBias + kSlopeBias * (2.0 / res) * tan_r) - stored.y;
     }
 
 //@if thin_walls
@@ -154,9 +167,12 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
     const vec3 lookup = to_receiver + towards_vpl * (kNormalOffset * footprint * sin_g);
     const float d_lookup = length(lookup);
     const CubeTexel moved = cube_texel(lookup / d_lookup, res);
-    const float in_front =
-        d_lookup - imageLoad(shadow_cubes, ivec3(moved.texel.xy, 6 * int(cube) + moved.texel.z)).r;
-    if (in_front > kConstantBias * d_lookup && in_front < kJunctionReach * footprint) lit = false;
+    const vec2 near = stored_distance(
+        imageLoad(shadow_cubes, ivec3(moved.texel.xy, 6 * int(cube) + moved.texel.z)).r,
+        footprint);
+    const float in_front = d_lookup - near.x;
+    if (in_front > kConstantBias * d_lookup + near.y && in_front < kJunctionReach * footprint)
+        lit = false;
 //@endif
     return lit ? 1.0 : 0.0;
 }
@@ -169,21 +185,23 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
 // bias, which is what lets a wall's foot pass the first.
 float directional_visibility(uint layer, GpuVpl v, vec3 p, vec3 ng) {
     const vec3 map = vec3(dot(p, v.shading_normal), dot(p, v.wi), dot(p, v.normal)) - v.position;
-    const float stored = textureLod(ortho_shadows, vec3(map.xy / v.map_extent, float(layer)), 0.0).r;
+    const float texel = v.map_extent / float(textureSize(ortho_shadows, 0).x);
+    const vec2 stored = stored_distance(
+        textureLod(ortho_shadows, vec3(map.xy / v.map_extent, float(layer)), 0.0).r, texel);
     const float cos_r = abs(dot(ng, v.normal));
     const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
-    const float texel = v.map_extent / float(textureSize(ortho_shadows, 0).x);
-    const float bias = kConstantBias * map.z + kSlopeBias * texel * tan_r;
-    bool lit = stored >= map.z - bias;
+    const float bias = kConstantBias * map.z + kSlopeBias * texel * tan_r + stored.y;
+    bool lit = stored.x >= map.z - bias;
 //@if thin_walls
     const float cos_g = dot(ng, v.normal);
     const vec3 towards_light = cos_g <= 0.0 ? ng : -ng;
     const float sin_g = sqrt(max(0.0, 1.0 - cos_g * cos_g));
     const vec3 q = p + towards_light * (kNormalOffset * texel * sin_g);
     const vec3 moved = vec3(dot(q, v.shading_normal), dot(q, v.wi), dot(q, v.normal)) - v.position;
-    const float in_front =
-        moved.z - textureLod(ortho_shadows, vec3(moved.xy / v.map_extent, float(layer)), 0.0).r;
-    if (in_front > kConstantBias * moved.z &&
+    const vec2 near = stored_distance(
+        textureLod(ortho_shadows, vec3(moved.xy / v.map_extent, float(layer)), 0.0).r, texel);
+    const float in_front = moved.z - near.x;
+    if (in_front > kConstantBias * moved.z + near.y &&
         in_front < (kJunctionReach + kSlopeBias * tan_r) * texel)
         lit = false;
 //@endif

@@ -8,7 +8,7 @@
 layout(push_constant) uniform ShadowPushBlock { ShadowPush pc; };
 
 layout(location = 0) in vec3 in_position;
-layout(location = 0) out vec3 out_offset;
+layout(location = 0) out vec4 out_offset;  // w: −1 for a simplified level (face.w)
 #ifdef MVPL_MASKED
 // The alpha-tested pipeline of scenes with masked materials (shadow_masked.frag): face.y is the
 // material of the draw.
@@ -32,7 +32,7 @@ void main() {
         case 4u: m = vec3(r.x, -r.y, r.z); break;
         default: m = vec3(-r.x, -r.y, -r.z); break;
     }
-    out_offset = r;
+    out_offset = vec4(r, pc.face.w != 0u ? -1.0 : 1.0);
 #ifdef MVPL_MASKED
     out_uv = in_uv;
     out_color = in_color;

@@ -7,7 +7,7 @@
 //@insert bindings
 //@insert materials
 
-layout(location = 0) in vec3 in_offset;
+layout(location = 0) in vec4 in_offset;  // w: +1 (masked meshes are never simplified)
 layout(location = 1) in vec4 in_uv;
 layout(location = 2) in vec4 in_color;
 layout(location = 3) flat in uint in_material;
@@ -25,5 +25,5 @@ void main() {
     s.b = vec3(0.0, 1.0, 0.0);
     s.n = vec3(0.0, 0.0, 1.0);
     if (alpha_cut(in_material, s, in_position, in_seed)) discard;
-    out_distance = length(in_offset);
+    out_distance = length(in_offset.xyz);
 }

@@ -8,7 +8,7 @@
 layout(push_constant) uniform OrthoPushBlock { OrthoPush pc; };
 
 layout(location = 0) in vec3 in_position;
-layout(location = 0) out vec3 out_offset;
+layout(location = 0) out vec4 out_offset;
 #ifdef MVPL_MASKED
 // The alpha-tested pipeline of scenes with masked materials (shadow_masked.frag): extents.z is
 // the material of the draw.
@@ -25,7 +25,12 @@ void main() {
     const float u = dot(in_position, pc.u_origin.xyz) - pc.u_origin.w;
     const float v = dot(in_position, pc.v_origin.xyz) - pc.v_origin.w;
     const float w = dot(in_position, pc.dir_origin.xyz) - pc.dir_origin.w;
-    out_offset = vec3(w, 0.0, 0.0);
+#ifdef MVPL_MASKED
+    out_offset = vec4(w, 0.0, 0.0, 1.0);
+#else
+    // extents.z: 1 for a simplified level of detail (shadow.frag negates its distances).
+    out_offset = vec4(w, 0.0, 0.0, pc.extents.z > 0.5 ? -1.0 : 1.0);
+#endif
 #ifdef MVPL_MASKED
     out_uv = in_uv;
     out_color = in_color;

@@ -37,7 +37,8 @@ const uint kEmissionChains = 2u;      // add the chain records' emitted radiance
 struct ShadowPush {
     vec4 vpl_near;  // xyz: the VPL's position; w: the near distance (geometry closer is ignored)
     uvec4 face;     // x: cube face, +X −X +Y −Y +Z −Z; y: the material, z: the seed of glTF
-                    // BLEND's hash (alpha-tested pipeline, shadow_masked.frag)
+                    // BLEND's hash (alpha-tested pipeline, shadow_masked.frag); w: 1 for the
+                    // casters of a simplified level of detail
 };
 
 // The orthographic map of a directional VPL (shadow_pass.cpp; shaders/render/shadow_ortho.vert).
@@ -46,7 +47,8 @@ struct OrthoPush {
     vec4 v_origin;    // map y axis and origin
     vec4 dir_origin;  // direction of travel and the near plane's w
     vec4 extents;     // x: window side, y: depth range; z: the material, w: the seed of glTF
-                      // BLEND's hash, as floats (alpha-tested pipeline, shadow_masked.frag)
+                      // BLEND's hash, as floats (alpha-tested pipeline, shadow_masked.frag);
+                      // other pipelines' z: 1 for the casters of a simplified level of detail
 };
 
 // A batch of the shading pass (engine/render/shading_pass.cpp;

@@ -146,8 +146,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
-    // indirect faces of half the side, specular chains, imperfect shadow maps.
-    ASSERT_EQ(j["sweep"].size(), 23u);
+    // indirect faces of half the side, specular chains, imperfect shadow maps, levels of detail.
+    ASSERT_EQ(j["sweep"].size(), 24u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -188,6 +188,12 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_LT(j["sweep"][22]["shadow_triangles_per_vpl"].get<double>(),
               j["render"]["shadow_triangles_per_vpl"].get<double>());
     EXPECT_GT(j["sweep"][22]["shadow_triangles_per_vpl"].get<double>(), 0.0);
+    // Levels of detail on by default and off when switched (the Cornell box's meshes are all
+    // below the threshold: the same triangles either way).
+    EXPECT_TRUE(j["render"]["shadow_lod"].get<bool>());
+    EXPECT_FALSE(j["sweep"][23]["shadow_lod"].get<bool>());
+    EXPECT_EQ(j["sweep"][23]["shadow_triangles_per_vpl"].get<double>(),
+              j["render"]["shadow_triangles_per_vpl"].get<double>());
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());

@@ -56,21 +56,31 @@ TEST(ShadowClusters, CullingKeepsEveryTriangleThatReachesTheFace) {
     const scene::Bounds b = s.bounds();
     std::mt19937 rng(7);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
-    std::vector<gpu::IndexRange> ranges;
+    CasterRanges ranges;
+    // The triangles of every group's full level: what LodChoice{} draws.
+    std::vector<bool> full(idx.size() / 3, false);
+    clusters.level_ranges(Vec3(0.0f), LodChoice{}, ranges);
+    ASSERT_TRUE(ranges.simplified.empty());
+    for (const gpu::IndexRange& r : ranges.full) {
+        for (uint32_t t = r.first_index / 3; t < (r.first_index + r.index_count) / 3; ++t)
+            full[t] = true;
+    }
     size_t kept = 0, total = 0;
     for (int trial = 0; trial < 12; ++trial) {
         const Vec3 p = b.lo + Vec3(u(rng), u(rng), u(rng)) * (b.hi - b.lo);
         const Vec3 n = glm::normalize(Vec3(u(rng), u(rng), u(rng)) - 0.5f);
         for (uint32_t face = 0; face < 6; ++face) {
             for (const Vec3* normal : {static_cast<const Vec3*>(nullptr), &n}) {
-                clusters.visible_ranges(p, face, normal, 0.0f, ranges);
+                clusters.visible_ranges(p, face, normal, 0.0f, LodChoice{}, ranges);
+                ASSERT_TRUE(ranges.simplified.empty());
                 std::vector<bool> drawn(idx.size() / 3, false);
-                for (const gpu::IndexRange& r : ranges) {
+                for (const gpu::IndexRange& r : ranges.full) {
                     for (uint32_t t = r.first_index / 3; t < (r.first_index + r.index_count) / 3;
                          ++t)
                         drawn[t] = true;
                 }
                 for (size_t t = 0; t < drawn.size(); ++t) {
+                    if (!full[t]) continue;  // a coarser level's
                     total += 1;
                     kept += drawn[t] ? 1 : 0;
                     if (drawn[t]) continue;
@@ -127,12 +137,15 @@ scene::Scene box_with_dense_sphere() {
 
 TEST(ShadowProxy, SimplifiesLargeMeshesOnly) {
     const scene::Scene s = box_with_dense_sphere();
-    const ShadowClusters full(s);
-    const ShadowClusters proxy(s, ShadowClusters::kClusterTriangles, ShadowClusters::kProxyError);
-    EXPECT_EQ(full.triangle_count(), s.triangle_count());
+    const ShadowClusters clusters(s);
+    EXPECT_EQ(clusters.triangle_count(0), s.triangle_count());
     // The sphere shrinks; the box's walls (small meshes) are kept as they are.
-    EXPECT_LT(proxy.triangle_count(), full.triangle_count() / 3);
-    EXPECT_GT(proxy.triangle_count(), s.triangle_count() - s.meshes.back().triangle_count());
+    EXPECT_LT(clusters.triangle_count(1), s.triangle_count() / 3);
+    EXPECT_GT(clusters.triangle_count(1), s.triangle_count() - s.meshes.back().triangle_count());
+    // Without levels of detail, one level of everything.
+    const ShadowClusters flat(s, ShadowClusters::kClusterTriangles, false);
+    EXPECT_EQ(flat.triangle_count(1), s.triangle_count());
+    EXPECT_EQ(flat.groups().size(), 1u);
 }
 
 // The proxy's error is the shadow maps' business only where surface VPLs are shadowed: images

@@ -50,6 +50,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.shadows = shadows;
     ro.shadow_culling = c.shadow_culling;
     ro.shadow_proxy = c.shadow_proxy;
+    ro.shadow_lod = c.shadow_lod;
     ro.interleave = uint32_t(c.interleave);
     ro.hemicube = c.hemicube;
     ro.vpl_culling = c.vpl_culling;
@@ -203,6 +204,7 @@ int run_bench(const Args& args) {
     config.batch = renderer_args.batch;
     config.shadow_culling = !renderer_args.no_shadow_culling;
     config.shadow_proxy = !renderer_args.no_shadow_proxy;
+    config.shadow_lod = !renderer_args.no_shadow_lod;
     config.jitter = !renderer_args.no_jitter;
     // The throughput of the levers: interleaving on unless asked otherwise, chains or not (the
     // sweep shows it off); `mvpl render` leaves it off where chains are traced (option_groups.h).
@@ -263,6 +265,9 @@ int run_bench(const Args& args) {
         sweep_configs.push_back(c);
         c = config;
         c.ism = !config.ism;
+        sweep_configs.push_back(c);
+        c = config;
+        c.shadow_lod = !config.shadow_lod;
         sweep_configs.push_back(c);
     }
 

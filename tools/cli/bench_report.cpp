@@ -61,6 +61,7 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"batch\": " + std::to_string(r.config.batch) + ",\n";
     s += i + "\"shadow_culling\": " + (r.config.shadow_culling ? "true" : "false") + ",\n";
     s += i + "\"shadow_proxy\": " + (r.config.shadow_proxy ? "true" : "false") + ",\n";
+    s += i + "\"shadow_lod\": " + (r.config.shadow_lod ? "true" : "false") + ",\n";
     s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
     s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
     s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
@@ -101,7 +102,8 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
 
 std::string bench_levers(const BenchConfig& c) {
     return std::string("culling ") + (c.shadow_culling ? "on" : "off") + ", proxy " +
-           (c.shadow_proxy ? "on" : "off") + ", hemicube " + (c.hemicube ? "on" : "off") +
+           (c.shadow_proxy ? "on" : "off") + ", levels of detail " +
+           (c.shadow_lod ? "on" : "off") + ", hemicube " + (c.hemicube ? "on" : "off") +
            ", VPL culling " + (c.vpl_culling ? "on" : "off") + ", interleave " +
            std::to_string(c.interleave) + ", indirect faces " +
            (c.indirect_shadow_resolution > 0

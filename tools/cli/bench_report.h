@@ -15,6 +15,7 @@ struct BenchConfig {
     int batch = 32;
     bool shadow_culling = true;  // render::RenderOptions::shadow_culling
     bool shadow_proxy = true;    // render::RenderOptions::shadow_proxy
+    bool shadow_lod = true;      // render::RenderOptions::shadow_lod
     bool jitter = true;          // a G-buffer per batch (false with --no-jitter: one per render)
     int interleave = 1;          // render::RenderOptions::interleave
     bool hemicube = true;        // render::RenderOptions::hemicube

@@ -52,6 +52,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.vsl_radius = vsl();
     o.shadow_culling = !no_shadow_culling;
     o.shadow_proxy = !no_shadow_proxy;
+    o.shadow_lod = !no_shadow_lod;
     o.jitter = !no_jitter;
     o.chains.max_roughness = no_chains ? -1.0f : chain_roughness;
     o.chains.emission_samples = chain_samples;
@@ -81,6 +82,10 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-shadow-proxy", &args.no_shadow_proxy,
                     "surface VPLs draw the full geometry into their shadow maps (default: the "
                     "simplified proxy of meshes of 4096+ triangles)");
+    parser.add_flag("--no-shadow-lod", &args.no_shadow_lod,
+                    "shadow maps draw meshes of 4096+ triangles in full (or as the proxy) "
+                    "(default: each at the coarsest level of detail whose error stays below a "
+                    "quarter of a shadow texel at its distance)");
     parser.add_flag("--no-hemicube", &args.no_hemicube,
                     "surface and area VPLs draw whole shadow cube faces (default: only the part "
                     "their lit hemisphere reaches)");

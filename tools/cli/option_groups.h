@@ -28,6 +28,7 @@ struct RendererArgs {
     bool no_jitter = !render::RenderOptions{}.jitter;
     bool no_shadow_culling = false;
     bool no_shadow_proxy = false;
+    bool no_shadow_lod = false;
     float chain_roughness = light::kDefaultChainRoughness;
     bool no_chains = false;
     int chain_samples = light::kDefaultChainEmissionSamples;
