@@ -48,6 +48,16 @@ void bound(const std::vector<Vec3>& positions, const uint32_t* indices, size_t c
     radius = radius * (1.0f + 1e-5f) + 1e-30f;
 }
 
+void bound_box(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices, Vec3& lo,
+               Vec3& hi) {
+    lo = Vec3(INFINITY);
+    hi = Vec3(-INFINITY);
+    for (const uint32_t i : indices) {
+        lo = glm::min(lo, positions[i]);
+        hi = glm::max(hi, positions[i]);
+    }
+}
+
 // Whether a sphere may reach cube face `face` of a VPL at `position` and, with a normal, the
 // half-space it lights, tilted down by the margin.
 bool sphere_visible(const Vec3& centre, float radius, const Vec3& position, uint32_t face,
@@ -225,6 +235,7 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
             }
             ShadowGroup group;
             bound(m_positions, chunk_full.data(), chunk_full.size(), group.centre, group.radius);
+            bound_box(m_positions, chunk_full, group.lo, group.hi);
             add_level(group, chunk_full, 0.0f, cluster_triangles);
             for (SimplifiedLevel& level : simplified_levels(welded, chunk_welded, chunks > 1)) {
                 for (uint32_t& i : level.indices)
@@ -238,6 +249,7 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
     if (!small_triangles.empty()) {
         bound(m_positions, small_triangles.data(), small_triangles.size(), small.centre,
               small.radius);
+        bound_box(m_positions, small_triangles, small.lo, small.hi);
         add_level(small, small_triangles, 0.0f, cluster_triangles);
         m_groups.push_back(std::move(small));
     }
@@ -252,7 +264,7 @@ size_t ShadowClusters::triangle_count(uint32_t level) const {
 
 uint32_t ShadowClusters::level_for(const ShadowGroup& g, const Vec3& position,
                                    const LodChoice& lod) const {
-    const float distance = std::max(glm::length(g.centre - position) - g.radius, 0.0f);
+    const float distance = glm::length(glm::max(glm::max(g.lo - position, position - g.hi), 0.0f));
     const float allowed = std::max(lod.error_per_distance * distance, lod.error_anywhere);
     uint32_t level = std::min<uint32_t>(lod.min_level, uint32_t(g.levels.size()) - 1);
     // Without an allowance, not even a level that happens to be exact (a flat mesh's) is taken:

@@ -37,15 +37,19 @@ struct ShadowLevel {
     float error = 0.0f;  // how far its surface may lie from the mesh's, world units (0: full)
 };
 
-// A mesh with its levels, or the pooled small meshes (one level); the sphere bounds every level.
+// A mesh or a chunk of one with its levels, or the pooled small meshes (one level). The sphere
+// (for culling) and the box (for the distance that chooses a level) bound every level: a
+// simplified level keeps a subset of the full level's vertices.
 struct ShadowGroup {
     Vec3 centre{0.0f};
     float radius = 0.0f;
+    Vec3 lo{0.0f};
+    Vec3 hi{0.0f};
     std::vector<ShadowLevel> levels;
 };
 
 // Which level a group draws: the coarsest whose error is at most
-// max(error_per_distance × the distance from the VPL to the group's sphere, error_anywhere), and
+// max(error_per_distance × the distance from the VPL to the group's box, error_anywhere), and
 // at least min_level (or the group's coarsest, where it has fewer levels).
 struct LodChoice {
     float error_per_distance = 0.0f;

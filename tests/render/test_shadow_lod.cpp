@@ -132,7 +132,8 @@ TEST(ShadowLevels, TheLevelFollowsTheDistance) {
     uint32_t previous = 0;
     for (const float radii : {0.0f, 0.01f, 0.1f, 0.5f, 1.0f, 4.0f, 16.0f, 1e3f}) {
         const float distance = radii * g.radius;
-        const Vec3 at = g.centre + Vec3(0.0f, g.radius + distance, 0.0f);
+        // Above the middle of the group's box: `distance` from it.
+        const Vec3 at(g.centre.x, g.hi.y + distance, g.centre.z);
         const uint32_t level = clusters.level_for(g, at, lod);
         EXPECT_GE(level, previous) << "distance " << distance;
         EXPECT_LE(g.levels[level].error, lod.error_per_distance * distance * 1.0001f);
