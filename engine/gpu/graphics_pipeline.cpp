@@ -128,8 +128,9 @@ GraphicsPipeline::GraphicsPipeline(Context& context, std::span<const uint32_t> v
         VkPipelineRasterizationStateCreateInfo raster{};
         raster.sType = VK_STRUCTURE_TYPE_PIPELINE_RASTERIZATION_STATE_CREATE_INFO;
         raster.polygonMode = VK_POLYGON_MODE_FILL;
-        raster.cullMode = VK_CULL_MODE_NONE;
-        raster.frontFace = VK_FRONT_FACE_COUNTER_CLOCKWISE;
+        raster.cullMode = m_layout.cull_back ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE;
+        raster.frontFace =
+            m_layout.front_clockwise ? VK_FRONT_FACE_CLOCKWISE : VK_FRONT_FACE_COUNTER_CLOCKWISE;
         raster.lineWidth = 1.0f;
 
         VkPipelineMultisampleStateCreateInfo multisample{};

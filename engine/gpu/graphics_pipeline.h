@@ -6,8 +6,9 @@
 // The shape is what the render passes need and no more: one interleaved vertex buffer, push
 // constants visible to both stages (per-draw data fits in 128 bytes, the guaranteed push-constant
 // size), optionally one descriptor set of sampled images for the fragment stage (the textures
-// that alpha-tested materials read; bind_images), no culling (shadow maps keep back faces; the
-// G-buffer discards those of one-sided materials per draw, in its fragment stage), dynamic
+// that alpha-tested materials read; bind_images), no culling unless asked (shadow maps keep back
+// faces but those of closed solids; the G-buffer discards those of one-sided materials per draw,
+// in its fragment stage), dynamic
 // viewport and scissor, no blending. Depth is reversed (compare GREATER, clear to 0, z_ndc = near /
 // distance): floats then resolve depth with the same relative precision at every distance, which an
 // infinite far plane and any scene scale need.
@@ -42,6 +43,10 @@ struct GraphicsLayout {
     std::vector<Format> color_formats;  // fragment output location i writes attachment i
     bool depth = false;                 // a d32_float depth attachment, test GREATER and write
     uint32_t push_constant_bytes = 0;   // one range, vertex and fragment stages
+    // Discard back faces (shadow maps of closed solids, ShadowPass); front faces wind clockwise
+    // in the framebuffer when front_clockwise, else counter-clockwise (Vulkan's "positive area").
+    bool cull_back = false;
+    bool front_clockwise = false;
     // Set 0 of the fragment stage, binding i; sampled_image only (nearest, clamp to edge: the
     // generated texture code filters and wraps itself). Empty: no descriptor set.
     std::vector<BindingType> bindings;

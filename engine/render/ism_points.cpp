@@ -16,9 +16,11 @@ std::vector<IsmPoint> sample_ism_points(const ShadowClusters& casters, uint32_t 
     CasterRanges ranges;
     casters.level_ranges(Vec3(0.0f), LodChoice{}, ranges);
     std::vector<uint32_t> idx;
-    for (const gpu::IndexRange& r : ranges.full)
-        idx.insert(idx.end(), casters.indices().begin() + r.first_index,
-                   casters.indices().begin() + r.first_index + r.index_count);
+    for (const std::vector<gpu::IndexRange>& kind : ranges.by_kind) {
+        for (const gpu::IndexRange& r : kind)
+            idx.insert(idx.end(), casters.indices().begin() + r.first_index,
+                       casters.indices().begin() + r.first_index + r.index_count);
+    }
     const size_t triangles = idx.size() / 3;
     // The running sum of the areas, in double: a million small triangles would round away in
     // float.

@@ -2,6 +2,8 @@
 
 #include <meshoptimizer.h>
 
+#include "engine/render/closed_surface.h"
+
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -78,6 +80,22 @@ bool sphere_visible(const Vec3& centre, float radius, const Vec3& position, uint
     // A sphere wholly below the plane tilted down by the margin is never looked up.
     return !lit_normal ||
            glm::dot(*lit_normal, r) >= -slack - sin_margin * (glm::length(r) + radius);
+}
+
+// Which of CasterRanges' lists a level of g goes to for a VPL at `position` (at infinity: a
+// directional one).
+size_t caster_kind(const ShadowGroup& g, const ShadowLevel& level, const Vec3& position,
+                   bool at_infinity) {
+    size_t kind = level.error > 0.0f ? CasterRanges::kSimplified : 0;
+    if (g.solid) {
+        // Strictly outside the solid's box, by a margin for the rounding of a VPL that lies on
+        // the solid's extreme point.
+        const Vec3 margin = 1e-5f * (g.solid_hi - g.solid_lo) + 1e-30f;
+        const bool outside = glm::any(glm::lessThan(position, g.solid_lo - margin)) ||
+                             glm::any(glm::greaterThan(position, g.solid_hi + margin));
+        if (at_infinity || outside) kind |= CasterRanges::kFrontOnly;
+    }
+    return kind;
 }
 
 void append_range(std::vector<gpu::IndexRange>& out, const ShadowCluster& c) {
@@ -224,6 +242,9 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
         const size_t chunks =
             triangles >= 2 * kLodChunkTriangles ? triangles / kLodChunkTriangles : 1;
         const std::vector<uint32_t> order = morton_order(welded, indices);
+        const bool solid = bounds_solid(welded, indices);
+        Vec3 solid_lo, solid_hi;
+        bound_box(m_positions, full, solid_lo, solid_hi);
         for (size_t k = 0; k < chunks; ++k) {
             std::vector<uint32_t> chunk_full;
             std::vector<uint32_t> chunk_welded;
@@ -236,6 +257,9 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
             ShadowGroup group;
             bound(m_positions, chunk_full.data(), chunk_full.size(), group.centre, group.radius);
             bound_box(m_positions, chunk_full, group.lo, group.hi);
+            group.solid = solid;
+            group.solid_lo = solid_lo;
+            group.solid_hi = solid_hi;
             add_level(group, chunk_full, 0.0f, cluster_triangles);
             for (SimplifiedLevel& level : simplified_levels(welded, chunk_welded, chunks > 1)) {
                 for (uint32_t& i : level.indices)
@@ -283,7 +307,7 @@ void ShadowClusters::visible_ranges(const Vec3& position, uint32_t face, const V
     for (const ShadowGroup& g : m_groups) {
         if (!sphere_visible(g.centre, g.radius, position, face, lit_normal, sin_margin)) continue;
         const ShadowLevel& level = g.levels[level_for(g, position, lod)];
-        std::vector<gpu::IndexRange>& ranges = level.error > 0.0f ? out.simplified : out.full;
+        std::vector<gpu::IndexRange>& ranges = out.by_kind[caster_kind(g, level, position, false)];
         for (uint32_t i = 0; i < level.cluster_count; ++i) {
             const ShadowCluster& c = m_clusters[level.first_cluster + i];
             if (sphere_visible(c.centre, c.radius, position, face, lit_normal, sin_margin))
@@ -292,12 +316,13 @@ void ShadowClusters::visible_ranges(const Vec3& position, uint32_t face, const V
     }
 }
 
-void ShadowClusters::level_ranges(const Vec3& position, const LodChoice& lod,
-                                  CasterRanges& out) const {
+void ShadowClusters::level_ranges(const Vec3& position, const LodChoice& lod, CasterRanges& out,
+                                  bool at_infinity) const {
     out.clear();
     for (const ShadowGroup& g : m_groups) {
         const ShadowLevel& level = g.levels[level_for(g, position, lod)];
-        std::vector<gpu::IndexRange>& ranges = level.error > 0.0f ? out.simplified : out.full;
+        std::vector<gpu::IndexRange>& ranges =
+            out.by_kind[caster_kind(g, level, position, at_infinity)];
         for (uint32_t i = 0; i < level.cluster_count; ++i)
             append_range(ranges, m_clusters[level.first_cluster + i]);
     }

@@ -13,6 +13,7 @@
 // texel's footprint at the group's distance (LodChoice): a mesh far from the VPL covers few
 // texels, and its shadow does not need its triangles. The smaller meshes share one group of one
 // level. CPU only and Vulkan-free (the tests check the culling against brute force).
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -46,6 +47,12 @@ struct ShadowGroup {
     Vec3 lo{0.0f};
     Vec3 hi{0.0f};
     std::vector<ShadowLevel> levels;
+    // Whether its mesh bounds a solid (closed_surface.h), and the mesh's box: a VPL outside the
+    // box is outside the solid, and its shadow map needs only the mesh's front faces. The
+    // chunks of a solid meet at the same edges at every level, so any mix of levels stays closed.
+    bool solid = false;
+    Vec3 solid_lo{0.0f};
+    Vec3 solid_hi{0.0f};
 };
 
 // Which level a group draws: the coarsest whose error is at most
@@ -57,14 +64,26 @@ struct LodChoice {
     uint32_t min_level = 0;
 };
 
-// Index ranges to draw: of full levels, and of simplified ones (which the shadow pass marks, so
-// that the shading pass allows their error: ShadowPass::kLodFootprint).
+// Index ranges to draw, by kind: of full or simplified levels (which the shadow pass marks, so
+// that the shading pass allows their error: ShadowPass::kLodFootprint), with both faces or only
+// the faces towards the VPL (solids seen from outside).
 struct CasterRanges {
-    std::vector<gpu::IndexRange> full;
-    std::vector<gpu::IndexRange> simplified;
+    static constexpr size_t kSimplified = 1;
+    static constexpr size_t kFrontOnly = 2;
+    std::array<std::vector<gpu::IndexRange>, 4> by_kind;  // index: kSimplified | kFrontOnly bits
+    const std::vector<gpu::IndexRange>& full() const { return by_kind[0]; }
+    const std::vector<gpu::IndexRange>& simplified() const { return by_kind[kSimplified]; }
     void clear() {
-        full.clear();
-        simplified.clear();
+        for (std::vector<gpu::IndexRange>& r : by_kind)
+            r.clear();
+    }
+    size_t triangle_count() const {
+        size_t n = 0;
+        for (const std::vector<gpu::IndexRange>& ranges : by_kind) {
+            for (const gpu::IndexRange& r : ranges)
+                n += r.index_count / 3;
+        }
+        return n;
     }
 };
 
@@ -110,8 +129,9 @@ public:
     void visible_ranges(const Vec3& position, uint32_t face, const Vec3* lit_normal,
                         float margin_angle, const LodChoice& lod, CasterRanges& out) const;
     // Every cluster of each group's level for `lod` (no culling: orthographic maps, and faces
-    // with culling off).
-    void level_ranges(const Vec3& position, const LodChoice& lod, CasterRanges& out) const;
+    // with culling off). at_infinity: a directional VPL, outside every solid.
+    void level_ranges(const Vec3& position, const LodChoice& lod, CasterRanges& out,
+                      bool at_infinity = false) const;
 
 private:
     void add_level(ShadowGroup& group, const std::vector<uint32_t>& triangles, float error,

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cstring>
+#include <optional>
 
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/embedded_shaders.h"
@@ -47,8 +48,14 @@ bool face_behind(const Vec3& n, uint32_t face) {
     return true;
 }
 
-gpu::GraphicsLayout shadow_layout(uint32_t push_constant_bytes) {
+// front_clockwise: the cull-back variant for solids; a face turned towards the VPL winds clockwise
+// in a cube face's framebuffer (the map to (s_c, t_c, m_a) has determinant −1 on every face) and
+// counter-clockwise in an orthographic map's (u × v = the direction of travel: Frame's basis).
+gpu::GraphicsLayout shadow_layout(uint32_t push_constant_bytes,
+                                  std::optional<bool> front_clockwise = std::nullopt) {
     gpu::GraphicsLayout layout;
+    layout.cull_back = front_clockwise.has_value();
+    layout.front_clockwise = front_clockwise.value_or(false);
     layout.vertex_stride = sizeof(Vec3);
     layout.attributes = {{gpu::VertexFormat::float3, 0}};
     layout.color_formats = {gpu::Format::r32_float};
@@ -123,6 +130,14 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
           context, gpu::compile_embedded_shader("render/shadow_ortho.vert"),
           gpu::compile_embedded_shader("render/shadow.frag"), shadow_layout(sizeof(OrthoPush)),
           "directional shadow")),
+      m_front_pipeline(std::make_unique<gpu::GraphicsPipeline>(
+          context, gpu::compile_embedded_shader("render/shadow.vert"),
+          gpu::compile_embedded_shader("render/shadow.frag"),
+          shadow_layout(sizeof(ShadowPush), true), "shadow (front faces)")),
+      m_ortho_front_pipeline(std::make_unique<gpu::GraphicsPipeline>(
+          context, gpu::compile_embedded_shader("render/shadow_ortho.vert"),
+          gpu::compile_embedded_shader("render/shadow.frag"),
+          shadow_layout(sizeof(OrthoPush), false), "directional shadow (front faces)")),
       m_near(kNearFraction * std::max(geometry.bounds().diagonal(), 1e-30f)) {
     std::vector<bool> masked(geometry.graphs().size(), false);
     for (size_t i = 0; i < masked.size(); ++i)
@@ -187,15 +202,20 @@ void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline&
 ShadowPass::~ShadowPass() = default;
 
 template <typename Push, typename Flag>
-void ShadowPass::draw_casters(gpu::CommandList& cmd, const gpu::GraphicsPipeline& pipeline,
-                              Push& push, Flag& simplified) {
-    for (const bool coarse : {false, true}) {
-        const std::vector<gpu::IndexRange>& ranges = coarse ? m_ranges.simplified : m_ranges.full;
+void ShadowPass::draw_casters(gpu::CommandList& cmd, const gpu::GraphicsPipeline& both_faces,
+                              const gpu::GraphicsPipeline& front_faces, Push& push,
+                              Flag& simplified) {
+    for (size_t kind = 0; kind < m_ranges.by_kind.size(); ++kind) {
+        const std::vector<gpu::IndexRange>& ranges = m_ranges.by_kind[kind];
         if (ranges.empty()) continue;
-        for (const gpu::IndexRange& r : ranges)
+        const bool front_only = (kind & CasterRanges::kFrontOnly) != 0 && m_options.front_faces;
+        for (const gpu::IndexRange& r : ranges) {
             m_triangles_drawn += r.index_count / 3;
-        simplified = Flag(coarse ? 1 : 0);
-        gpu::draw_indexed(cmd, pipeline, m_positions, m_indices, gpu::push_bytes(push), ranges);
+            if (front_only) m_front_only_triangles += r.index_count / 3;
+        }
+        simplified = Flag((kind & CasterRanges::kSimplified) != 0 ? 1 : 0);
+        gpu::draw_indexed(cmd, front_only ? front_faces : both_faces, m_positions, m_indices,
+                          gpu::push_bytes(push), ranges);
     }
     // The masked draws that may follow are never simplified.
     simplified = Flag(0);
@@ -287,7 +307,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
             } else {
                 m_clusters->level_ranges(vpl.position, lod, m_ranges);
             }
-            draw_casters(cmd, *m_pipeline, push, push.face[3]);
+            draw_casters(cmd, *m_pipeline, *m_front_pipeline, push, push.face[3]);
             if (m_masked_pipeline) {
                 draw_masked(cmd, *m_masked_pipeline, m_masked_set, gpu::push_bytes(push),
                             offsetof(ShadowPush, face) + sizeof(uint32_t), false);
@@ -314,8 +334,8 @@ void ShadowPass::record_directional(gpu::CommandList& cmd, const light::Vpl& vpl
     // The map's texels are extent / resolution wide wherever a mesh stands.
     LodChoice lod;
     if (m_options.lod) lod.error_anywhere = kLodFootprint * f.extent / float(resolution());
-    m_clusters->level_ranges(vpl.position, lod, m_ranges);
-    draw_casters(cmd, *m_ortho_pipeline, push, push.extents[2]);
+    m_clusters->level_ranges(vpl.position, lod, m_ranges, true);
+    draw_casters(cmd, *m_ortho_pipeline, *m_ortho_front_pipeline, push, push.extents[2]);
     if (m_masked_ortho_pipeline) {
         draw_masked(cmd, *m_masked_ortho_pipeline, m_masked_ortho_set, gpu::push_bytes(push),
                     offsetof(OrthoPush, extents) + 2 * sizeof(float), true);

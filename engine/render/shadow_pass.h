@@ -60,6 +60,10 @@ struct ShadowPassOptions {
     // kLodFootprint of a texel's footprint at the mesh's distance (shadow_clusters.h); false:
     // level 0, or the proxy.
     bool lod = true;
+    // Large meshes that bound a solid (closed_surface.h) draw only their faces towards a VPL
+    // outside their box (the rasteriser culls the rest): the nearest surface along every ray
+    // from outside a solid is one of its front faces. false: both faces of everything.
+    bool front_faces = true;
     // Area and Surface VPLs draw only the texels of each face that their lit hemisphere can
     // reach (hemicube.h); false: every face that is not wholly behind them, in full.
     bool hemicube = true;
@@ -107,8 +111,11 @@ public:
     uint32_t max_batch() const { return m_cubes.layers() / 6; }
     // Surfaces closer than this to a VPL do not shadow (the near plane), relative to the scene.
     float near_distance() const { return m_near; }
-    // Triangles drawn into cube faces since construction (bench reports the culling's effect).
+    // Triangles drawn into cube faces and orthographic maps since construction (bench reports
+    // the culling's effect).
     uint64_t triangles_drawn() const { return m_triangles_drawn; }
+    // Of those, the triangles of solids drawn with their back faces culled (front_faces).
+    uint64_t front_only_triangles() const { return m_front_only_triangles; }
     // Cube-face texels cleared and drawn since construction (the hemicubes' effect).
     uint64_t texels_drawn() const { return m_texels_drawn; }
     // Whether VPL gets an imperfect map, and how many did since construction.
@@ -121,10 +128,10 @@ private:
     void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
 
     // Draws m_ranges: the full levels' with `simplified` (a member of push) 0, the simplified
-    // levels' with 1 (shadow.frag marks their texels).
+    // levels' with 1 (shadow.frag marks their texels); solids seen from outside with front_faces.
     template <typename Push, typename Flag>
-    void draw_casters(gpu::CommandList& cmd, const gpu::GraphicsPipeline& pipeline, Push& push,
-                      Flag& simplified);
+    void draw_casters(gpu::CommandList& cmd, const gpu::GraphicsPipeline& both_faces,
+                      const gpu::GraphicsPipeline& front_faces, Push& push, Flag& simplified);
     // The level of detail vpl draws with faces of side `res`.
     LodChoice lod_choice(const light::Vpl& vpl, uint32_t res) const;
 
@@ -136,6 +143,7 @@ private:
     gpu::Buffer m_indices;
     CasterRanges m_ranges;  // scratch, per face
     uint64_t m_triangles_drawn = 0;
+    uint64_t m_front_only_triangles = 0;
     uint64_t m_texels_drawn = 0;
     uint64_t m_ism_vpls = 0;
     std::unique_ptr<IsmPass> m_ism;       // null without imperfect maps
@@ -147,6 +155,9 @@ private:
     gpu::Image m_ortho_depth;
     std::unique_ptr<gpu::GraphicsPipeline> m_pipeline;
     std::unique_ptr<gpu::GraphicsPipeline> m_ortho_pipeline;
+    // The same, culling back faces: for solids seen from outside (front_faces).
+    std::unique_ptr<gpu::GraphicsPipeline> m_front_pipeline;
+    std::unique_ptr<gpu::GraphicsPipeline> m_ortho_front_pipeline;
     // Masked scenes only: the draws of masked materials, their pipelines and textures.
     void draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline& pipeline,
                      VkDescriptorSet set, std::span<const std::byte> push, size_t material_offset,

@@ -147,7 +147,7 @@ struct VplRenderer::Impl {
         if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
             o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
             o.shadow_proxy != built_for.shadow_proxy || o.shadow_lod != built_for.shadow_lod ||
-            o.hemicube != built_for.hemicube ||
+            o.backface_culling != built_for.backface_culling || o.hemicube != built_for.hemicube ||
             o.indirect_shadow_resolution != built_for.indirect_shadow_resolution ||
             o.ism != built_for.ism || o.ism_resolution != built_for.ism_resolution ||
             o.ism_points != built_for.ism_points || o.ism_emitters != built_for.ism_emitters) {
@@ -157,6 +157,7 @@ struct VplRenderer::Impl {
             so.culling = o.shadow_culling;
             so.proxy = o.shadow_proxy;
             so.lod = o.shadow_lod;
+            so.front_faces = o.backface_culling;
             so.hemicube = o.hemicube;
             so.indirect_resolution = o.indirect_shadow_resolution;
             so.ism_resolution = o.ism ? o.ism_resolution : 0;
@@ -269,6 +270,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     batch.add_emission = false;
     batch.chains = m.chains ? &m.chains->records() : nullptr;
     const uint64_t drawn_before = m.shadow->triangles_drawn();
+    const uint64_t front_before = m.shadow->front_only_triangles();
     const uint64_t texels_before = m.shadow->texels_drawn();
     const uint64_t ism_before = m.shadow->ism_vpls();
     std::vector<light::Vpl> kept;
@@ -328,6 +330,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     m.timings.batches += uint32_t(slices.size());
     m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
     m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
+    m.timings.shadow_front_only_triangles += m.shadow->front_only_triangles() - front_before;
     m.timings.shadow_texels += m.shadow->texels_drawn() - texels_before;
     m.timings.ism_vpls += m.shadow->ism_vpls() - ism_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));

@@ -35,14 +35,16 @@ void expect_rel(double actual, double expected, const char* what) {
 }
 
 // Every number anywhere in the document is finite and positive (counts, times, rates, bytes),
-// but for the count of culled VPLs and the specular chains' time, rays and roughness bound,
-// which are ≥ 0; the rest are strings (scene, device) and flags.
+// but for the count of culled VPLs, the specular chains' time, rays and roughness bound and the
+// share of triangles drawn front faces only (the Cornell box has no solid), which are ≥ 0; the rest
+// are strings (scene, device) and flags.
 void expect_positive_numbers(const json& j, const std::string& where) {
     if (j.is_object()) {
         for (const auto& [key, value] : j.items()) {
             // Counts that are 0 where a lever is off, and the chains' bound.
             if (key == "culled_vpls" || key == "ism_vpls" || key == "chain_ms" ||
-                key == "chain_rays" || key == "chain_roughness") {
+                key == "chain_rays" || key == "chain_roughness" ||
+                key == "shadow_front_only_share") {
                 EXPECT_GE(value.get<double>(), 0.0) << where;
                 continue;
             }
@@ -146,8 +148,9 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
-    // indirect faces of half the side, specular chains, imperfect shadow maps, levels of detail.
-    ASSERT_EQ(j["sweep"].size(), 24u);
+    // indirect faces of half the side, specular chains, imperfect shadow maps, levels of detail,
+    // back-face culling of solids.
+    ASSERT_EQ(j["sweep"].size(), 25u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -194,6 +197,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_FALSE(j["sweep"][23]["shadow_lod"].get<bool>());
     EXPECT_EQ(j["sweep"][23]["shadow_triangles_per_vpl"].get<double>(),
               j["render"]["shadow_triangles_per_vpl"].get<double>());
+    EXPECT_TRUE(j["render"]["backface_culling"].get<bool>());
+    EXPECT_FALSE(j["sweep"][24]["backface_culling"].get<bool>());
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());

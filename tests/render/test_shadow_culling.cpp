@@ -60,10 +60,12 @@ TEST(ShadowClusters, CullingKeepsEveryTriangleThatReachesTheFace) {
     // The triangles of every group's full level: what LodChoice{} draws.
     std::vector<bool> full(idx.size() / 3, false);
     clusters.level_ranges(Vec3(0.0f), LodChoice{}, ranges);
-    ASSERT_TRUE(ranges.simplified.empty());
-    for (const gpu::IndexRange& r : ranges.full) {
-        for (uint32_t t = r.first_index / 3; t < (r.first_index + r.index_count) / 3; ++t)
-            full[t] = true;
+    for (size_t kind = 0; kind < 4; ++kind) {
+        ASSERT_TRUE((kind & CasterRanges::kSimplified) == 0 || ranges.by_kind[kind].empty());
+        for (const gpu::IndexRange& r : ranges.by_kind[kind]) {
+            for (uint32_t t = r.first_index / 3; t < (r.first_index + r.index_count) / 3; ++t)
+                full[t] = true;
+        }
     }
     size_t kept = 0, total = 0;
     for (int trial = 0; trial < 12; ++trial) {
@@ -72,12 +74,13 @@ TEST(ShadowClusters, CullingKeepsEveryTriangleThatReachesTheFace) {
         for (uint32_t face = 0; face < 6; ++face) {
             for (const Vec3* normal : {static_cast<const Vec3*>(nullptr), &n}) {
                 clusters.visible_ranges(p, face, normal, 0.0f, LodChoice{}, ranges);
-                ASSERT_TRUE(ranges.simplified.empty());
                 std::vector<bool> drawn(idx.size() / 3, false);
-                for (const gpu::IndexRange& r : ranges.full) {
-                    for (uint32_t t = r.first_index / 3; t < (r.first_index + r.index_count) / 3;
-                         ++t)
-                        drawn[t] = true;
+                for (const std::vector<gpu::IndexRange>& kind : ranges.by_kind) {
+                    for (const gpu::IndexRange& r : kind) {
+                        for (uint32_t t = r.first_index / 3;
+                             t < (r.first_index + r.index_count) / 3; ++t)
+                            drawn[t] = true;
+                    }
                 }
                 for (size_t t = 0; t < drawn.size(); ++t) {
                     if (!full[t]) continue;  // a coarser level's

@@ -51,6 +51,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.shadow_culling = c.shadow_culling;
     ro.shadow_proxy = c.shadow_proxy;
     ro.shadow_lod = c.shadow_lod;
+    ro.backface_culling = c.backface_culling;
     ro.interleave = uint32_t(c.interleave);
     ro.hemicube = c.hemicube;
     ro.vpl_culling = c.vpl_culling;
@@ -120,6 +121,7 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.shading_ms = t.shading_ms;
     s.batches = t.batches;
     s.shadow_triangles = t.shadow_triangles;
+    s.shadow_front_only_triangles = t.shadow_front_only_triangles;
     s.shadow_texels = t.shadow_texels;
     s.culled_vpls = t.culled_vpls;
     s.ism_vpls = t.ism_vpls;
@@ -133,7 +135,8 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
                                  s.shading_ms,
                                  double(s.batches),
                                  double(s.shadow_triangles),
-                                 double(s.g_buffers)};
+                                 double(s.g_buffers),
+                                 double(s.shadow_front_only_triangles)};
         ranks.sum_all(sums);
         s.g_buffer_ms = sums[0];
         s.shadow_ms = sums[1];
@@ -141,6 +144,7 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
         s.batches = uint32_t(sums[3]);
         s.shadow_triangles = uint64_t(sums[4]);
         s.g_buffers = uint32_t(sums[5]);
+        s.shadow_front_only_triangles = uint64_t(sums[6]);
     }
     return s;
 }
@@ -205,6 +209,7 @@ int run_bench(const Args& args) {
     config.shadow_culling = !renderer_args.no_shadow_culling;
     config.shadow_proxy = !renderer_args.no_shadow_proxy;
     config.shadow_lod = !renderer_args.no_shadow_lod;
+    config.backface_culling = !renderer_args.no_backface_culling;
     config.jitter = !renderer_args.no_jitter;
     // The throughput of the levers: interleaving on unless asked otherwise, chains or not (the
     // sweep shows it off); `mvpl render` leaves it off where chains are traced (option_groups.h).
@@ -268,6 +273,9 @@ int run_bench(const Args& args) {
         sweep_configs.push_back(c);
         c = config;
         c.shadow_lod = !config.shadow_lod;
+        sweep_configs.push_back(c);
+        c = config;
+        c.backface_culling = !config.backface_culling;
         sweep_configs.push_back(c);
     }
 

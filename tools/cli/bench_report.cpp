@@ -62,6 +62,7 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"shadow_culling\": " + (r.config.shadow_culling ? "true" : "false") + ",\n";
     s += i + "\"shadow_proxy\": " + (r.config.shadow_proxy ? "true" : "false") + ",\n";
     s += i + "\"shadow_lod\": " + (r.config.shadow_lod ? "true" : "false") + ",\n";
+    s += i + "\"backface_culling\": " + (r.config.backface_culling ? "true" : "false") + ",\n";
     s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
     s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
     s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
@@ -83,6 +84,7 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
     s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
+    s += i + "\"shadow_front_only_share\": " + number(r.shadow_front_only_share) + ",\n";
     s += i + "\"jitter\": " + (r.config.jitter ? "true" : "false") + ",\n";
     s += i + "\"batches\": " + std::to_string(r.median.batches) + ",\n";
     s += i + "\"g_buffers\": " + std::to_string(r.median.g_buffers) + ",\n";
@@ -102,10 +104,10 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
 
 std::string bench_levers(const BenchConfig& c) {
     return std::string("culling ") + (c.shadow_culling ? "on" : "off") + ", proxy " +
-           (c.shadow_proxy ? "on" : "off") + ", levels of detail " +
-           (c.shadow_lod ? "on" : "off") + ", hemicube " + (c.hemicube ? "on" : "off") +
-           ", VPL culling " + (c.vpl_culling ? "on" : "off") + ", interleave " +
-           std::to_string(c.interleave) + ", indirect faces " +
+           (c.shadow_proxy ? "on" : "off") + ", levels of detail " + (c.shadow_lod ? "on" : "off") +
+           ", back faces of solids " + (c.backface_culling ? "culled" : "drawn") + ", hemicube " +
+           (c.hemicube ? "on" : "off") + ", VPL culling " + (c.vpl_culling ? "on" : "off") +
+           ", interleave " + std::to_string(c.interleave) + ", indirect faces " +
            (c.indirect_shadow_resolution > 0
                 ? std::to_string(std::min(c.indirect_shadow_resolution, c.shadow_resolution)) + "²"
                 : "as emitters'") +
@@ -150,12 +152,16 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
     r.median.chain_rays = samples.empty() ? 0 : samples.front().chain_rays;
     r.median.batches = samples.empty() ? 0 : samples.front().batches;
     r.median.shadow_triangles = samples.empty() ? 0 : samples.front().shadow_triangles;
+    r.median.shadow_front_only_triangles =
+        samples.empty() ? 0 : samples.front().shadow_front_only_triangles;
     r.median.shadow_texels = samples.empty() ? 0 : samples.front().shadow_texels;
     r.median.culled_vpls = samples.empty() ? 0 : samples.front().culled_vpls;
     r.median.ism_vpls = samples.empty() ? 0 : samples.front().ism_vpls;
     r.median.g_buffers = samples.empty() ? 0 : samples.front().g_buffers;
     const double n = double(vpls);
     r.shadow_triangles_per_vpl = ratio(double(r.median.shadow_triangles), n);
+    r.shadow_front_only_share =
+        ratio(double(r.median.shadow_front_only_triangles), double(r.median.shadow_triangles));
     r.shadow_texels_per_vpl = ratio(double(r.median.shadow_texels), n);
     r.shadow_ms_per_vpl = ratio(r.median.shadow_ms, n);
     r.shading_ms_per_vpl = ratio(r.median.shading_ms, n);
@@ -224,7 +230,8 @@ std::string bench_table(const BenchReport& b) {
                   "  render %dx%d, shadow %d², batch %d (%u batches): wall %.3f s\n"
                   "  levers           %s; %llu VPLs culled\n"
                   "    G-buffer       %8.2f ms  %u G-buffers\n"
-                  "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL, %.0f texels/VPL\n"
+                  "    shadow         %8.2f ms  %.3f ms/VPL, %.0f triangles/VPL (%.0f %% front "
+                  "faces only), %.0f texels/VPL\n"
                   "    shading        %8.2f ms  %.3f ms/VPL, %.1f M pixel·VPL/s\n"
                   "    chains (host)  %8.2f ms  %llu rays\n"
                   "  end to end       %8.3f s  %.1f VPL/s\n"
@@ -233,8 +240,9 @@ std::string bench_table(const BenchReport& b) {
                   m.median.batches, m.median.wall_s, bench_levers(m.config).c_str(),
                   static_cast<unsigned long long>(m.median.culled_vpls), m.median.g_buffer_ms,
                   m.median.g_buffers, m.median.shadow_ms, m.shadow_ms_per_vpl,
-                  m.shadow_triangles_per_vpl, m.shadow_texels_per_vpl, m.median.shading_ms,
-                  m.shading_ms_per_vpl, m.shading_pixel_vpls_per_s * 1e-6, m.median.chain_ms,
+                  m.shadow_triangles_per_vpl, 100.0 * m.shadow_front_only_share,
+                  m.shadow_texels_per_vpl, m.median.shading_ms, m.shading_ms_per_vpl,
+                  m.shading_pixel_vpls_per_s * 1e-6, m.median.chain_ms,
                   static_cast<unsigned long long>(m.median.chain_rays), m.end_to_end_s,
                   m.end_to_end_vpls_per_s, double(b.peak_host_bytes) / (1 << 20),
                   double(b.peak_device_bytes) / (1 << 20));

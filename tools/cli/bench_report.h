@@ -13,13 +13,14 @@ struct BenchConfig {
     int height = 512;
     int shadow_resolution = 256;
     int batch = 32;
-    bool shadow_culling = true;  // render::RenderOptions::shadow_culling
-    bool shadow_proxy = true;    // render::RenderOptions::shadow_proxy
-    bool shadow_lod = true;      // render::RenderOptions::shadow_lod
-    bool jitter = true;          // a G-buffer per batch (false with --no-jitter: one per render)
-    int interleave = 1;          // render::RenderOptions::interleave
-    bool hemicube = true;        // render::RenderOptions::hemicube
-    bool vpl_culling = true;     // render::RenderOptions::vpl_culling
+    bool shadow_culling = true;    // render::RenderOptions::shadow_culling
+    bool shadow_proxy = true;      // render::RenderOptions::shadow_proxy
+    bool shadow_lod = true;        // render::RenderOptions::shadow_lod
+    bool backface_culling = true;  // render::RenderOptions::backface_culling
+    bool jitter = true;            // a G-buffer per batch (false with --no-jitter: one per render)
+    int interleave = 1;            // render::RenderOptions::interleave
+    bool hemicube = true;          // render::RenderOptions::hemicube
+    bool vpl_culling = true;       // render::RenderOptions::vpl_culling
     int indirect_shadow_resolution = 0;  // render::RenderOptions::indirect_shadow_resolution
     // render::RenderOptions::chains: the roughness bound (negative: no specular chains) and the
     // light paths' --max-depth, which bounds them.
@@ -42,12 +43,13 @@ struct RenderSample {
     double shading_ms = 0.0;
     double wall_s = 0.0;  // host time of begin + accumulate + resolve (uploads, read-back)
     uint32_t batches = 0;
-    uint64_t shadow_triangles = 0;  // drawn into cube faces
-    uint64_t shadow_texels = 0;     // cube-face texels cleared and drawn
-    uint64_t culled_vpls = 0;       // VPLs that could not reach the view
-    uint64_t ism_vpls = 0;          // VPLs whose cubes were imperfect shadow maps
-    uint32_t g_buffers = 0;         // one per sub-pixel position
-    double chain_ms = 0.0;          // host time tracing specular chains (within wall_s)
+    uint64_t shadow_triangles = 0;             // drawn into cube faces and orthographic maps
+    uint64_t shadow_front_only_triangles = 0;  // of those, solids' with back faces culled
+    uint64_t shadow_texels = 0;                // cube-face texels cleared and drawn
+    uint64_t culled_vpls = 0;                  // VPLs that could not reach the view
+    uint64_t ism_vpls = 0;                     // VPLs whose cubes were imperfect shadow maps
+    uint32_t g_buffers = 0;                    // one per sub-pixel position
+    double chain_ms = 0.0;                     // host time tracing specular chains (within wall_s)
     uint64_t chain_rays = 0;
 };
 
@@ -58,6 +60,7 @@ struct RenderResult {
     RenderSample median;
     double shadow_ms_per_vpl = 0.0;
     double shadow_triangles_per_vpl = 0.0;
+    double shadow_front_only_share = 0.0;  // shadow_front_only_triangles / shadow_triangles
     double shadow_texels_per_vpl = 0.0;
     double shading_ms_per_vpl = 0.0;
     double shading_pixel_vpls_per_s = 0.0;  // width · height · VPLs / shading GPU seconds

@@ -53,6 +53,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_culling = !no_shadow_culling;
     o.shadow_proxy = !no_shadow_proxy;
     o.shadow_lod = !no_shadow_lod;
+    o.backface_culling = !no_backface_culling;
     o.jitter = !no_jitter;
     o.chains.max_roughness = no_chains ? -1.0f : chain_roughness;
     o.chains.emission_samples = chain_samples;
@@ -86,6 +87,9 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                     "shadow maps draw meshes of 4096+ triangles in full (or as the proxy) "
                     "(default: each at the coarsest level of detail whose error stays below a "
                     "quarter of a shadow texel at its distance)");
+    parser.add_flag("--no-backface-culling", &args.no_backface_culling,
+                    "shadow maps draw both faces of every triangle (default: closed meshes of "
+                    "4096+ triangles only their faces towards a VPL outside them; the same image)");
     parser.add_flag("--no-hemicube", &args.no_hemicube,
                     "surface and area VPLs draw whole shadow cube faces (default: only the part "
                     "their lit hemisphere reaches)");

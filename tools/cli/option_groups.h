@@ -29,6 +29,7 @@ struct RendererArgs {
     bool no_shadow_culling = false;
     bool no_shadow_proxy = false;
     bool no_shadow_lod = false;
+    bool no_backface_culling = false;
     float chain_roughness = light::kDefaultChainRoughness;
     bool no_chains = false;
     int chain_samples = light::kDefaultChainEmissionSamples;
