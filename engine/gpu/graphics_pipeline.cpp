@@ -155,11 +155,12 @@ GraphicsPipeline::GraphicsPipeline(Context& context, std::span<const uint32_t> v
         blend_state.attachmentCount = uint32_t(blend.size());
         blend_state.pAttachments = blend.data();
 
-        const VkDynamicState dynamic_states[] = {VK_DYNAMIC_STATE_VIEWPORT,
-                                                 VK_DYNAMIC_STATE_SCISSOR};
+        // The cull mode is core dynamic state in Vulkan 1.3 (VK_EXT_extended_dynamic_state).
+        const VkDynamicState dynamic_states[] = {
+            VK_DYNAMIC_STATE_VIEWPORT, VK_DYNAMIC_STATE_SCISSOR, VK_DYNAMIC_STATE_CULL_MODE};
         VkPipelineDynamicStateCreateInfo dynamic{};
         dynamic.sType = VK_STRUCTURE_TYPE_PIPELINE_DYNAMIC_STATE_CREATE_INFO;
-        dynamic.dynamicStateCount = 2;
+        dynamic.dynamicStateCount = m_layout.dynamic_cull ? 3 : 2;
         dynamic.pDynamicStates = dynamic_states;
 
         VkPipelineRenderingCreateInfo rendering{};
@@ -350,6 +351,12 @@ void bind(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vert
 }
 
 }  // namespace
+
+void set_cull_back(CommandList& cmd, const GraphicsPipeline& pipeline, bool cull) {
+    if (!pipeline.layout().dynamic_cull)
+        throw GpuError("set_cull_back with '" + pipeline.name() + "': its cull mode is fixed");
+    vkCmdSetCullMode(cmd.handle(), cull ? VK_CULL_MODE_BACK_BIT : VK_CULL_MODE_NONE);
+}
 
 void draw(CommandList& cmd, const GraphicsPipeline& pipeline, const Buffer& vertices,
           std::span<const std::byte> push_constants, uint32_t first_vertex, uint32_t vertex_count) {

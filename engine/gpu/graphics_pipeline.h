@@ -47,6 +47,8 @@ struct GraphicsLayout {
     // in the framebuffer when front_clockwise, else counter-clockwise (Vulkan's "positive area").
     bool cull_back = false;
     bool front_clockwise = false;
+    // Whether back faces are culled is set per draw instead (set_cull_back), cull_back ignored.
+    bool dynamic_cull = false;
     // Set 0 of the fragment stage, binding i; sampled_image only (nearest, clamp to edge: the
     // generated texture code filters and wraps itself). Empty: no descriptor set.
     std::vector<BindingType> bindings;
@@ -119,6 +121,10 @@ void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
                      const DepthTarget* depth, const RenderArea* area = nullptr,
                      const RenderArea* viewport = nullptr);
 void end_rendering(CommandList& cmd);
+
+// Culls back faces (or not) in the draws that follow, of a pipeline with dynamic_cull (inside
+// begin/end_rendering).
+void set_cull_back(CommandList& cmd, const GraphicsPipeline& pipeline, bool cull);
 
 // Binds pipeline and vertices, pushes push_constants (the layout's size) and draws
 // vertex_count vertices from first_vertex as a triangle list.

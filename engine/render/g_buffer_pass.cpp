@@ -31,6 +31,7 @@ gpu::GraphicsLayout g_buffer_layout(size_t textures) {
     layout.depth = true;
     layout.push_constant_bytes = sizeof(GBufferPush);
     layout.bindings.assign(textures, gpu::BindingType::sampled_image);
+    layout.dynamic_cull = true;
     return layout;
 }
 
@@ -142,6 +143,10 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec
         push.material_flags = m.double_sided ? 1u : 0u;
         push.seed = seed;
         push.material = draw.material;
+        // One-sided materials: the rasteriser drops the back faces that the fragment stage would
+        // discard (the same gl_FrontFacing), before their setup, which is most of a heavy
+        // scene's G-buffer on lavapipe (MetalRoughSpheresNoTextures: −36 %).
+        gpu::set_cull_back(cmd, *m_pipeline, !m.double_sided);
         gpu::draw(cmd, *m_pipeline, m_geometry->vertices(), gpu::push_bytes(push),
                   draw.first_vertex, draw.vertex_count);
     }
