@@ -1,5 +1,7 @@
 #include "engine/render/closed_surface.h"
 
+#include <meshoptimizer.h>
+
 #include <algorithm>
 
 namespace mvpl::render {
@@ -28,6 +30,18 @@ bool bounds_solid(const std::vector<Vec3>& positions, const std::vector<uint32_t
         if (!std::binary_search(edges.begin(), edges.end(), reverse)) return false;
     }
     return true;
+}
+
+bool bounds_solid(const scene::Mesh& mesh) {
+    if (mesh.positions.empty()) return false;
+    std::vector<uint32_t> remap(mesh.positions.size());
+    meshopt_generateVertexRemap(remap.data(), mesh.indices.data(), mesh.indices.size(),
+                                mesh.positions.data(), mesh.positions.size(), sizeof(Vec3));
+    std::vector<uint32_t> indices(mesh.indices.size());
+    meshopt_remapIndexBuffer(indices.data(), mesh.indices.data(), mesh.indices.size(),
+                             remap.data());
+    // The positions need not be compacted: the check only compares indices and sums volumes.
+    return bounds_solid(mesh.positions, indices);
 }
 
 }  // namespace mvpl::render

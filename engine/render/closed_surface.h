@@ -9,11 +9,14 @@
 #include <vector>
 
 #include "engine/core/math.h"
+#include "engine/scene/scene.h"
 
 namespace mvpl::render {
 
 // positions: welded (one index per distinct position), so that seams of normals or texture
 // coordinates do not open the surface; indices: three per triangle.
 bool bounds_solid(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices);
+// The same for a scene mesh, welded by position first.
+bool bounds_solid(const scene::Mesh& mesh);
 
 }  // namespace mvpl::render

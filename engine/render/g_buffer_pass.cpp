@@ -65,6 +65,18 @@ gpu::Image upload_texture(gpu::Context& context, const scene::Texture& t) {
     return image;
 }
 
+// Whether the camera and its near plane's window lie outside the box of draw: its clipping then
+// cannot open the solid to a view of its inside.
+bool outside(const scene::Camera& camera, float aspect, const GeometryDraw& draw) {
+    const Vec3 eye(camera.camera_to_world[3]);
+    const float tan_half = std::tan(0.5f * camera.yfov);
+    const float znear = camera.znear > 0.0f ? camera.znear : 1e-4f;
+    // The near window's corners, as far from the eye as camera_view_projection puts them.
+    const float reach = znear * std::sqrt(1.0f + tan_half * tan_half * (1.0f + aspect * aspect));
+    return glm::any(glm::lessThan(eye, draw.lo - reach)) ||
+           glm::any(glm::greaterThan(eye, draw.hi + reach));
+}
+
 }  // namespace
 
 Mat4 camera_view_projection(const scene::Camera& camera, uint32_t width, uint32_t height,
@@ -119,7 +131,8 @@ GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, u
 
 GBufferPass::~GBufferPass() = default;
 
-void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec2 subpixel) {
+void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec2 subpixel,
+                         bool cull_solids) {
     std::array<gpu::ColorTarget, kGBufferLayerCount> colors;
     for (uint32_t i = 0; i < kGBufferLayerCount; ++i)
         colors[i] = {&m_image, i, {0.0f, 0.0f, 0.0f, 0.0f}};
@@ -145,8 +158,13 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec
         push.material = draw.material;
         // One-sided materials: the rasteriser drops the back faces that the fragment stage would
         // discard (the same gl_FrontFacing), before their setup, which is most of a heavy
-        // scene's G-buffer on lavapipe (MetalRoughSpheresNoTextures: −36 %).
-        gpu::set_cull_back(cmd, *m_pipeline, !m.double_sided);
+        // scene's G-buffer on lavapipe (MetalRoughSpheresNoTextures: −36 %). Solids seen from
+        // outside hide their back faces behind their front faces, double-sided or not.
+        const bool cull =
+            !m.double_sided ||
+            (cull_solids && draw.solid && outside(camera, float(width()) / float(height()), draw));
+        gpu::set_cull_back(cmd, *m_pipeline, cull);
+        if (cull) m_front_only_triangles += draw.vertex_count / 3;
         gpu::draw(cmd, *m_pipeline, m_geometry->vertices(), gpu::push_bytes(push),
                   draw.first_vertex, draw.vertex_count);
     }

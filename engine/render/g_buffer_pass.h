@@ -72,7 +72,12 @@ public:
     GBufferPass(const GBufferPass&) = delete;
     GBufferPass& operator=(const GBufferPass&) = delete;
 
-    void record(gpu::CommandList& cmd, const scene::Camera& camera, Vec2 subpixel = Vec2(0.5f));
+    // cull_solids: the back faces of solids (GeometryDraw::solid) are culled where the camera is
+    // outside their box, as those of one-sided materials always are; the same image.
+    void record(gpu::CommandList& cmd, const scene::Camera& camera, Vec2 subpixel = Vec2(0.5f),
+                bool cull_solids = true);
+    // Triangles drawn with their back faces culled since construction.
+    uint64_t front_only_triangles() const { return m_front_only_triangles; }
 
     const gpu::Image& image() const { return m_image; }
     uint32_t width() const { return m_image.width(); }
@@ -91,6 +96,7 @@ private:
     std::vector<gpu::Image> m_textures;
     // The fragment stage's textures (GBufferSources::fragment_textures): masked scenes only.
     std::vector<gpu::Image> m_fragment_textures;
+    uint64_t m_front_only_triangles = 0;
 };
 
 }  // namespace mvpl::render

@@ -2,6 +2,7 @@
 
 #include "engine/gpu/gpu_error.h"
 #include "engine/material/scene_materials.h"
+#include "engine/render/closed_surface.h"
 #include "engine/render/host_vec3.h"
 
 namespace mvpl::render {
@@ -76,6 +77,15 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
             }
         }
         draw.vertex_count = uint32_t(vertices.size()) - draw.first_vertex;
+        if (mesh.triangle_count() >= kSolidMinTriangles && bounds_solid(mesh)) {
+            draw.solid = true;
+            draw.lo = Vec3(INFINITY);
+            draw.hi = Vec3(-INFINITY);
+            for (const uint32_t i : mesh.indices) {
+                draw.lo = glm::min(draw.lo, mesh.positions[i]);
+                draw.hi = glm::max(draw.hi, mesh.positions[i]);
+            }
+        }
         if (draw.vertex_count > 0) m_draws.push_back(draw);
     }
     if (vertices.empty()) throw gpu::GpuError("scene '" + scene.path + "' has no triangles");

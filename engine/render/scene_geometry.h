@@ -36,15 +36,24 @@ struct GeometryMaterial {
     bool double_sided = false;
 };
 
-// A run of vertices drawn with one material.
+// A run of vertices drawn with one material: one mesh.
 struct GeometryDraw {
     uint32_t first_vertex = 0;
     uint32_t vertex_count = 0;
     uint32_t material = 0;
+    // A mesh of kSolidMinTriangles or more that bounds a solid (closed_surface.h), and its box:
+    // seen from outside the box, its back faces lie behind its front faces.
+    bool solid = false;
+    Vec3 lo{0.0f};
+    Vec3 hi{0.0f};
 };
 
 class SceneGeometry {
 public:
+    // Below this, whether a mesh bounds a solid is not worth finding out (its back faces cost
+    // little to draw); the shadow clusters' levels of detail start there too.
+    static constexpr size_t kSolidMinTriangles = 4096;
+
     SceneGeometry(gpu::Context& context, const scene::Scene& scene);
 
     const gpu::Buffer& vertices() const { return m_vertices; }

@@ -99,7 +99,9 @@ struct VplRenderer::Impl {
     void record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index) {
         const uint32_t scope = timer.begin(cmd, "g-buffer");
         const Vec2 offset = subpixel_schedule(options).position(index);
-        g_buffer->record(cmd, view_camera, offset);
+        const uint64_t front_only = g_buffer->front_only_triangles();
+        g_buffer->record(cmd, view_camera, offset, options.backface_culling);
+        timings.g_buffer_front_only_triangles += g_buffer->front_only_triangles() - front_only;
         if (chains) {
             // The GPU is idle: each batch is submitted and waited for (accumulate()).
             const auto start = std::chrono::steady_clock::now();

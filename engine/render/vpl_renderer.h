@@ -67,7 +67,8 @@ struct RenderOptions {
     // full meshes, or the proxy.
     bool shadow_lod = true;
     // Large meshes that bound a solid draw only their faces towards a VPL outside their box
-    // (ShadowPassOptions::front_faces; the same image); false: both faces of everything.
+    // (ShadowPassOptions::front_faces), and towards the camera outside it into the G-buffer (as
+    // one-sided materials always do); the same image. false: both faces of solids.
     bool backface_culling = true;
     // Area and Surface VPLs draw only the part of each cube face that their lit hemisphere can
     // reach (hemicube.h); false: whole faces (the A/B of mvpl bench --sweep).
@@ -119,11 +120,13 @@ struct RenderTimings {
     uint32_t batches = 0;
     uint64_t shadow_triangles = 0;  // triangles drawn into cube faces and orthographic maps
     uint64_t shadow_front_only_triangles = 0;  // of those, solids' with their back faces culled
-    uint64_t shadow_texels = 0;                // cube-face texels cleared and drawn
-    uint64_t culled_vpls = 0;                  // VPLs that could not reach the view (vpl_culling.h)
-    uint64_t ism_vpls = 0;                     // VPLs whose cubes were imperfect shadow maps
-    uint32_t g_buffers = 0;                    // G-buffers drawn: one per sub-pixel position
-    double chain_ms = 0.0;                     // host time tracing specular chains (in wall_ms)
+    // G-buffer triangles drawn with their back faces culled (one-sided materials and solids).
+    uint64_t g_buffer_front_only_triangles = 0;
+    uint64_t shadow_texels = 0;  // cube-face texels cleared and drawn
+    uint64_t culled_vpls = 0;    // VPLs that could not reach the view (vpl_culling.h)
+    uint64_t ism_vpls = 0;       // VPLs whose cubes were imperfect shadow maps
+    uint32_t g_buffers = 0;      // G-buffers drawn: one per sub-pixel position
+    double chain_ms = 0.0;       // host time tracing specular chains (in wall_ms)
     uint64_t chain_rays = 0;
 };
 

@@ -87,7 +87,15 @@ TEST(ClosedSurface, ClosedOutwardMeshesBoundASolid) {
     EXPECT_FALSE(bounds_solid(quad.positions, quad.indices));
 }
 
-// The Cornell box with a dense torus (6144 triangles) standing on its floor.
+// A double-sided material: only a solid's closedness lets the G-buffer cull its back faces.
+int add_double_sided(scene::Scene& s) {
+    scene::Material m = test::diffuse_material(Rgb(0.6f));
+    m.double_sided = true;
+    s.materials.push_back(m);
+    return int(s.materials.size()) - 1;
+}
+
+// The Cornell box with a dense, double-sided torus (6144 triangles) standing on its floor.
 scene::Scene box_with_torus() {
     scene::Scene s = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
     const scene::Bounds b = s.bounds();
@@ -96,6 +104,7 @@ scene::Scene box_with_torus() {
     s.meshes.push_back(
         solid_torus(b.lo + Vec3(0.5f, 0.0f, 0.5f) * extent + Vec3(0.0f, 0.12f * size, 0.0f),
                     0.25f * size, 0.1f * size));
+    s.meshes.back().material = add_double_sided(s);
     return s;
 }
 
@@ -136,6 +145,8 @@ void expect_same_image(gpu::Context& context, const scene::Scene& s, const light
         const Image without = renderer.render(vpls, o, &both);
         EXPECT_GT(culled.shadow_front_only_triangles, 0u);
         EXPECT_EQ(both.shadow_front_only_triangles, 0u);
+        // The double-sided solids in the G-buffer too (one-sided materials are culled anyway).
+        EXPECT_GT(culled.g_buffer_front_only_triangles, both.g_buffer_front_only_triangles);
         EXPECT_EQ(culled.shadow_triangles, both.shadow_triangles);
         size_t differing = 0;
         for (size_t i = 0; i < with.pixels().size(); ++i)
@@ -210,6 +221,7 @@ TEST_F(SolidCullingTest, OrthographicMapsAreTheSameWithBackFacesCulled) {
     sun.direction = glm::normalize(Vec3(0.5f, -1.0f, 0.3f));
     s.lights = {sun};
     s.camera = test::look_at(Vec3(0.0f, 4.0f, 4.0f), Vec3(0.0f), 0.9f);
+    s.meshes[1].material = s.meshes[2].material = add_double_sided(s);
     expect_same_image(context(), s, test::monte_carlo_vpls(s, 32, 3, 5));
 }
 
