@@ -193,17 +193,10 @@ TEST_F(ShadowLodTest, CubeFacesDrawFewerTrianglesAtTheFullMapsError) {
 // A floor with dense spheres under a directional light: each directional VPL draws an
 // orthographic map of the whole scene, where a sphere covers a few texels.
 TEST_F(ShadowLodTest, OrthographicMapsDrawFewerTrianglesAtTheFullMapsError) {
-    scene::Scene s;
-    s.materials = {test::diffuse_material(Rgb(0.7f))};
-    s.meshes = {test::make_quad(Vec3(-3, 0, -3), Vec3(0, 0, 6), Vec3(6, 0, 0), 0)};
+    std::vector<scene::Mesh> spheres;
     for (const Vec3& c : {Vec3(-1.0f, 0.3f, 0.0f), Vec3(0.8f, 0.5f, -0.6f), Vec3(0.4f, 0.3f, 1.2f)})
-        s.meshes.push_back(test::make_icosphere(c, 0.3f, 5, false, 0));
-    scene::Light sun;
-    sun.type = scene::LightType::Directional;
-    sun.intensity = Rgb(2.0f);
-    sun.direction = glm::normalize(Vec3(0.5f, -1.0f, 0.3f));
-    s.lights = {sun};
-    s.camera = test::look_at(Vec3(0.0f, 4.0f, 4.0f), Vec3(0.0f), 0.9f);
+        spheres.push_back(test::make_icosphere(c, 0.3f, 5, false, 0));
+    const scene::Scene s = test::floor_under_sun(std::move(spheres));
     const LodErrors e = lod_errors(context(), s, test::monte_carlo_vpls(s, 64, 3, 5));
     EXPECT_LT(e.lod_triangles, e.full_triangles / 4);
     EXPECT_LE(e.lod, 1.2 * e.full) << "full maps " << e.full;

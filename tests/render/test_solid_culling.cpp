@@ -210,17 +210,9 @@ TEST_F(SolidCullingTest, CubeFacesAreTheSameWithBackFacesCulled) {
 
 // Orthographic maps: a torus and a sphere on a floor under a directional light.
 TEST_F(SolidCullingTest, OrthographicMapsAreTheSameWithBackFacesCulled) {
-    scene::Scene s;
-    s.materials = {test::diffuse_material(Rgb(0.7f))};
-    s.meshes = {test::make_quad(Vec3(-3, 0, -3), Vec3(0, 0, 6), Vec3(6, 0, 0), 0),
-                solid_torus(Vec3(-0.5f, 0.35f, 0.0f), 1.0f, 0.3f),
-                test::make_icosphere(Vec3(1.2f, 0.5f, 1.0f), 0.5f, 5, false, 0)};
-    scene::Light sun;
-    sun.type = scene::LightType::Directional;
-    sun.intensity = Rgb(2.0f);
-    sun.direction = glm::normalize(Vec3(0.5f, -1.0f, 0.3f));
-    s.lights = {sun};
-    s.camera = test::look_at(Vec3(0.0f, 4.0f, 4.0f), Vec3(0.0f), 0.9f);
+    scene::Scene s =
+        test::floor_under_sun({solid_torus(Vec3(-0.5f, 0.35f, 0.0f), 1.0f, 0.3f),
+                               test::make_icosphere(Vec3(1.2f, 0.5f, 1.0f), 0.5f, 5, false, 0)});
     s.meshes[1].material = s.meshes[2].material = add_double_sided(s);
     expect_same_image(context(), s, test::monte_carlo_vpls(s, 32, 3, 5));
 }

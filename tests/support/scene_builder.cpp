@@ -81,6 +81,21 @@ scene::Scene make_integrating_sphere(float albedo, float radius, float intensity
     return s;
 }
 
+scene::Scene floor_under_sun(std::vector<scene::Mesh> objects) {
+    scene::Scene s;
+    s.materials = {diffuse_material(Rgb(0.7f))};
+    s.meshes = {make_quad(Vec3(-3, 0, -3), Vec3(0, 0, 6), Vec3(6, 0, 0), 0)};
+    for (scene::Mesh& m : objects)
+        s.meshes.push_back(std::move(m));
+    scene::Light sun;
+    sun.type = scene::LightType::Directional;
+    sun.intensity = Rgb(2.0f);
+    sun.direction = glm::normalize(Vec3(0.5f, -1.0f, 0.3f));
+    s.lights = {sun};
+    s.camera = look_at(Vec3(0.0f, 4.0f, 4.0f), Vec3(0.0f), 0.9f);
+    return s;
+}
+
 scene::Camera look_at(const Vec3& eye, const Vec3& target, float yfov) {
     const Vec3 back = glm::normalize(eye - target);
     Vec3 up(0, 1, 0);

@@ -1,5 +1,7 @@
 #pragma once
 // Programmatic scenes for tests whose answer is known analytically.
+#include <vector>
+
 #include "engine/scene/scene.h"
 
 namespace mvpl::test {
@@ -16,6 +18,10 @@ scene::Mesh make_icosphere(const Vec3& center, float radius, int subdivisions, b
 // inward faces) of albedo a and radius R, the camera inside: every visible point has
 // L = a·I / (π R² (1 − a)).
 scene::Scene make_integrating_sphere(float albedo, float radius, float intensity);
+// A 6 × 6 Lambertian floor (material 0, albedo 0.7) at y = 0 with `objects` on it (materials
+// from 0 on), under a directional light of 2 W/m² travelling along (0.5, −1, 0.3), seen from
+// (0, 4, 4).
+scene::Scene floor_under_sun(std::vector<scene::Mesh> objects);
 // A camera at `eye` looking at `target` with +Y up.
 scene::Camera look_at(const Vec3& eye, const Vec3& target, float yfov);
 // Scales every length of the scene by s (geometry, lights, camera). Radiance is scale-invariant;
