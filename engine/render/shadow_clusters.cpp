@@ -2,11 +2,11 @@
 
 #include <meshoptimizer.h>
 
-#include "engine/render/closed_surface.h"
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
+
+#include "engine/render/closed_surface.h"
 
 namespace mvpl::render {
 
