@@ -83,6 +83,16 @@ TEST(Cli, ReferenceWritesExrAndPng) {
         run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr) + " --region 4,2,8,6");
     ASSERT_EQ(region.exit_code, 0) << region.err;
     EXPECT_NE(region.out.find("relMSE 0\n"), std::string::npos) << region.out;
+    // --and-ref: two identical references differ by nothing, so their noise's share is 0.
+    const auto two = run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr) +
+                              " --and-ref " + shell_quote(again));
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    EXPECT_NE(two.out.find("reference_noise 0\n"), std::string::npos) << two.out;
+    EXPECT_NE(two.out.find("relMSE_vs_truth 0\n"), std::string::npos) << two.out;
+    expect_one_line_error(
+        run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr) + " --and-ref " +
+                 shell_quote(MVPL_ASSETS_DIR "/cornell-box/ref-cbox-d6-4096.exr")),
+        "differs");
     expect_one_line_error(
         run_mvpl("compare " + shell_quote(again) + " " + shell_quote(exr) + " --region 20,0,8,8"),
         "region");

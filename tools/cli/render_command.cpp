@@ -13,6 +13,7 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/device_info.h"
+#include "sampler/metropolis_budget.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/device_choice.h"
@@ -196,6 +197,10 @@ int run_render(const Args& args) {
         }
     });
     if (!parsed) return 0;
+    if (a.sampler_name == "metropolis") {
+        sampler::scale_pool_for_budget(a.settings, double(a.time_budget), parser.given("--chains"),
+                                       parser.given("--bootstrap"));
+    }
     RenderJob job = make_job(a, *session);
     job.renderer = renderer.get();
 

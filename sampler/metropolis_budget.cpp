@@ -1,0 +1,18 @@
+#include "sampler/metropolis_budget.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mvpl::sampler {
+
+void scale_pool_for_budget(SamplerSettings& settings, double seconds, bool chains_given,
+                           bool bootstrap_given) {
+    if (!(seconds > kPoolBudgetSeconds)) return;
+    const double scale = std::min(seconds / kPoolBudgetSeconds, kMaxPoolScale);
+    if (!chains_given) settings.chains = int(std::lround(double(settings.chains) * scale));
+    if (!bootstrap_given) {
+        settings.bootstrap = uint64_t(std::llround(double(settings.bootstrap) * scale));
+    }
+}
+
+}  // namespace mvpl::sampler

@@ -1,0 +1,45 @@
+// The Metropolis start pool by time budget (sampler/metropolis_budget.h).
+#include <gtest/gtest.h>
+
+#include "sampler/metropolis_budget.h"
+
+namespace mvpl::sampler {
+namespace {
+
+SamplerSettings scaled(double seconds, bool chains_given = false, bool bootstrap_given = false) {
+    SamplerSettings s;
+    scale_pool_for_budget(s, seconds, chains_given, bootstrap_given);
+    return s;
+}
+
+TEST(MetropolisBudget, ShortBudgetsKeepTheDefaults) {
+    const MetropolisOptions defaults;
+    for (const double seconds : {0.0, 1.0, 8.0, kPoolBudgetSeconds}) {
+        EXPECT_EQ(scaled(seconds).chains, defaults.chains) << seconds;
+        EXPECT_EQ(scaled(seconds).bootstrap, defaults.bootstrap) << seconds;
+    }
+}
+
+// 30 s: twice the pool; 60 s: four times, the measured setting; longer: no more than four times,
+// which keeps the chains inside --chains' range (1..4096).
+TEST(MetropolisBudget, LongBudgetsScaleThePool) {
+    const MetropolisOptions defaults;
+    EXPECT_EQ(scaled(30.0).chains, 2 * defaults.chains);
+    EXPECT_EQ(scaled(30.0).bootstrap, 2 * defaults.bootstrap);
+    EXPECT_EQ(scaled(60.0).chains, 4 * defaults.chains);
+    EXPECT_EQ(scaled(60.0).bootstrap, 4 * defaults.bootstrap);
+    EXPECT_EQ(scaled(600.0).chains, 4 * defaults.chains);
+    EXPECT_EQ(scaled(600.0).bootstrap, 4 * defaults.bootstrap);
+    EXPECT_LE(scaled(1e6).chains, 4096);
+}
+
+TEST(MetropolisBudget, ChosenValuesStay) {
+    const MetropolisOptions defaults;
+    EXPECT_EQ(scaled(60.0, true, false).chains, defaults.chains);
+    EXPECT_EQ(scaled(60.0, true, false).bootstrap, 4 * defaults.bootstrap);
+    EXPECT_EQ(scaled(60.0, false, true).chains, 4 * defaults.chains);
+    EXPECT_EQ(scaled(60.0, false, true).bootstrap, defaults.bootstrap);
+}
+
+}  // namespace
+}  // namespace mvpl::sampler
