@@ -7,27 +7,48 @@
 namespace mvpl::render {
 
 bool bounds_solid(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices) {
-    // Each directed edge (a, b) once, as a key; a closed, consistently wound surface holds (b, a)
-    // exactly once too.
-    std::vector<uint64_t> edges;
-    edges.reserve(indices.size());
+    // The directed edges (a, b) grouped by a, as compressed rows: a few per vertex, so that
+    // finding (b, a) among b's is a short scan (no sort: this runs on every large mesh at
+    // start-up).
+    const size_t vertices = positions.size();
+    std::vector<uint32_t> first(vertices + 1, 0);
     double volume = 0.0;  // six times the signed volume (divergence theorem)
-    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
-        const uint32_t v[3] = {indices[t], indices[t + 1], indices[t + 2]};
+    size_t edges = 0;
+    auto degenerate = [&](size_t t) {
         // A triangle with a repeated vertex covers nothing; it may sit in a fan at a pole.
-        if (v[0] == v[1] || v[1] == v[2] || v[2] == v[0]) continue;
-        for (int e = 0; e < 3; ++e)
-            edges.push_back(uint64_t(v[e]) << 32 | v[(e + 1) % 3]);
-        const glm::dvec3 a(positions[v[0]]), b(positions[v[1]]), c(positions[v[2]]);
+        return indices[t] == indices[t + 1] || indices[t + 1] == indices[t + 2] ||
+               indices[t + 2] == indices[t];
+    };
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        if (degenerate(t)) continue;
+        for (int e = 0; e < 3; ++e) {
+            if (indices[t + e] >= vertices) return false;
+            ++first[indices[t + e] + 1];
+        }
+        edges += 3;
+        const glm::dvec3 a(positions[indices[t]]), b(positions[indices[t + 1]]),
+            c(positions[indices[t + 2]]);
         volume += glm::dot(a, glm::cross(b, c));
     }
-    if (edges.empty() || !(volume > 0.0)) return false;
-    std::sort(edges.begin(), edges.end());
-    // A directed edge twice: two triangles wound the same way along it, or more than two on it.
-    if (std::adjacent_find(edges.begin(), edges.end()) != edges.end()) return false;
-    for (const uint64_t e : edges) {
-        const uint64_t reverse = (e & 0xffffffffull) << 32 | e >> 32;
-        if (!std::binary_search(edges.begin(), edges.end(), reverse)) return false;
+    if (edges == 0 || !(volume > 0.0)) return false;
+    for (size_t v = 0; v < vertices; ++v)
+        first[v + 1] += first[v];
+    std::vector<uint32_t> to(edges);
+    std::vector<uint32_t> fill(first.begin(), first.end() - 1);
+    for (size_t t = 0; t + 2 < indices.size(); t += 3) {
+        if (degenerate(t)) continue;
+        for (int e = 0; e < 3; ++e)
+            to[fill[indices[t + e]]++] = indices[t + (e + 1) % 3];
+    }
+    // Closed and consistently wound: each directed edge (a, b) once, and (b, a) once. A directed
+    // edge twice means two triangles wound the same way along it, or more than two on it.
+    for (size_t a = 0; a < vertices; ++a) {
+        for (uint32_t i = first[a]; i < first[a + 1]; ++i) {
+            const uint32_t b = to[i];
+            if (std::count(to.begin() + first[a], to.begin() + first[a + 1], b) != 1) return false;
+            if (std::count(to.begin() + first[b], to.begin() + first[b + 1], uint32_t(a)) != 1)
+                return false;
+        }
     }
     return true;
 }

@@ -77,7 +77,11 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
             }
         }
         draw.vertex_count = uint32_t(vertices.size()) - draw.first_vertex;
-        if (mesh.triangle_count() >= kSolidMinTriangles && bounds_solid(mesh)) {
+        // Masked and blended materials show their back faces through their holes.
+        const bool opaque =
+            mesh.material < 0 || size_t(mesh.material) >= scene.materials.size() ||
+            scene.materials[size_t(mesh.material)].alpha_mode == scene::AlphaMode::Opaque;
+        if (opaque && mesh.triangle_count() >= kSolidMinTriangles && bounds_solid(mesh)) {
             draw.solid = true;
             draw.lo = Vec3(INFINITY);
             draw.hi = Vec3(-INFINITY);

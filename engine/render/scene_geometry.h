@@ -41,8 +41,8 @@ struct GeometryDraw {
     uint32_t first_vertex = 0;
     uint32_t vertex_count = 0;
     uint32_t material = 0;
-    // A mesh of kSolidMinTriangles or more that bounds a solid (closed_surface.h), and its box:
-    // seen from outside the box, its back faces lie behind its front faces.
+    // An opaque mesh of kSolidMinTriangles or more that bounds a solid (closed_surface.h), and
+    // its box: seen from outside the box, its back faces lie behind its front faces.
     bool solid = false;
     Vec3 lo{0.0f};
     Vec3 hi{0.0f};

@@ -111,38 +111,55 @@ void append_range(std::vector<gpu::IndexRange>& out, const ShadowCluster& c) {
 // it, up to 1.8× at the first level, 1.1–1.3× at coarser ones: tests/render/test_shadow_lod.cpp).
 constexpr float kQuadricErrorFactor = 2.0f;
 
-// The levels of a large mesh after its full triangles, each as indices into `welded`, with its
-// error bound relative to the welded vertices' extent (meshopt_simplifyScale).
+// The levels of a large mesh (or a chunk of one) after its full triangles, each as indices into
+// `welded`, with meshoptimizer's estimate of its error in world units.
 struct SimplifiedLevel {
     std::vector<uint32_t> indices;
-    float relative_error = 0.0f;
+    float error = 0.0f;
 };
 
+// indices: the chunk's triangles, into `welded`; mesh_scale: the mesh's meshopt_simplifyScale,
+// which the levels' target errors (kProxyError, …) are fractions of.
 std::vector<SimplifiedLevel> simplified_levels(const std::vector<Vec3>& welded,
                                                const std::vector<uint32_t>& indices,
-                                               bool lock_border) {
+                                               float mesh_scale, bool lock_border) {
+    // The chunk's own vertices: meshoptimizer's work and memory grow with the vertex buffer it
+    // is given, and a chunk uses a few percent of a large mesh's.
+    std::vector<uint32_t> used(indices);
+    std::sort(used.begin(), used.end());
+    used.erase(std::unique(used.begin(), used.end()), used.end());
+    std::vector<Vec3> local(used.size());
+    for (size_t i = 0; i < used.size(); ++i)
+        local[i] = welded[used[i]];
+    std::vector<uint32_t> local_indices(indices.size());
+    for (size_t i = 0; i < indices.size(); ++i)
+        local_indices[i] =
+            uint32_t(std::lower_bound(used.begin(), used.end(), indices[i]) - used.begin());
+    const float scale = meshopt_simplifyScale(&local[0].x, local.size(), sizeof(Vec3));
     std::vector<SimplifiedLevel> levels;
-    const std::vector<uint32_t>* input = &indices;
-    float input_error = 0.0f;
-    float target = ShadowClusters::kProxyError;
+    std::vector<uint32_t> input = std::move(local_indices);
+    float input_error = 0.0f;  // world units
+    float target = ShadowClusters::kProxyError * mesh_scale;
     for (uint32_t k = 1; k < ShadowClusters::kMaxLevels;
          ++k, target *= ShadowClusters::kLodErrorStep) {
         // Each level simplifies the previous one, so its distance from the mesh is at most the
-        // sum of the steps' errors (each measured against its own input).
-        std::vector<uint32_t> out(input->size());
+        // sum of the steps' errors (each measured against its own input, relative to `scale`).
+        std::vector<uint32_t> out(input.size());
         float step_error = 0.0f;
         const size_t count =
-            meshopt_simplify(out.data(), input->data(), input->size(), &welded[0].x, welded.size(),
-                             sizeof(Vec3), 3, target - input_error,
+            meshopt_simplify(out.data(), input.data(), input.size(), &local[0].x, local.size(),
+                             sizeof(Vec3), 3, (target - input_error) / scale,
                              lock_border ? unsigned(meshopt_SimplifyLockBorder) : 0u, &step_error);
         if (count == 0) break;
         // A level that saves less than a quarter is not worth its clusters; level 1 is the
         // surface VPLs' proxy and always kept.
-        if (k > 1 && double(count) > 0.75 * double(input->size())) continue;
+        if (k > 1 && double(count) > 0.75 * double(input.size())) continue;
         out.resize(count);
-        levels.push_back({std::move(out), input_error + step_error});
-        input = &levels.back().indices;
-        input_error = levels.back().relative_error;
+        input = out;
+        input_error += step_error * scale;
+        for (uint32_t& i : out)
+            i = used[i];
+        levels.push_back({std::move(out), input_error});
         if (count <= 3 * 16) break;
     }
     return levels;
@@ -261,10 +278,11 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
             group.solid_lo = solid_lo;
             group.solid_hi = solid_hi;
             add_level(group, chunk_full, 0.0f, cluster_triangles);
-            for (SimplifiedLevel& level : simplified_levels(welded, chunk_welded, chunks > 1)) {
+            for (SimplifiedLevel& level :
+                 simplified_levels(welded, chunk_welded, scale, chunks > 1)) {
                 for (uint32_t& i : level.indices)
                     i += welded_base;
-                add_level(group, level.indices, kQuadricErrorFactor * level.relative_error * scale,
+                add_level(group, level.indices, kQuadricErrorFactor * level.error,
                           cluster_triangles);
             }
             m_groups.push_back(std::move(group));
