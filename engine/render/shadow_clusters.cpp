@@ -137,23 +137,32 @@ std::vector<SimplifiedLevel> simplified_levels(const std::vector<Vec3>& welded,
             uint32_t(std::lower_bound(used.begin(), used.end(), indices[i]) - used.begin());
     const float scale = meshopt_simplifyScale(&local[0].x, local.size(), sizeof(Vec3));
     std::vector<SimplifiedLevel> levels;
-    std::vector<uint32_t> input = std::move(local_indices);
+    std::vector<uint32_t> input;
     float input_error = 0.0f;  // world units
-    float target = ShadowClusters::kProxyError * mesh_scale;
-    for (uint32_t k = 1; k < ShadowClusters::kMaxLevels;
-         ++k, target *= ShadowClusters::kLodErrorStep) {
-        // Each level simplifies the previous one, so its distance from the mesh is at most the
-        // sum of the steps' errors (each measured against its own input, relative to `scale`).
+    for (uint32_t k = 1; k < ShadowClusters::kMaxLevels; ++k) {
+        // Levels up to the proxy from the full triangles (a chain through the finest level made
+        // the proxy larger); the coarser ones from the previous level, so that a level's distance
+        // from the mesh is at most the sum of the steps' errors (each measured against its own
+        // input, relative to `scale`).
+        float target = ShadowClusters::kProxyError * mesh_scale;
+        if (k < ShadowClusters::kProxyLevel) target = ShadowClusters::kFinestError * mesh_scale;
+        for (uint32_t j = ShadowClusters::kProxyLevel; j < k; ++j)
+            target *= ShadowClusters::kLodErrorStep;
+        if (k <= ShadowClusters::kProxyLevel) {
+            input = local_indices;
+            input_error = 0.0f;
+        }
         std::vector<uint32_t> out(input.size());
         float step_error = 0.0f;
         const size_t count =
             meshopt_simplify(out.data(), input.data(), input.size(), &local[0].x, local.size(),
                              sizeof(Vec3), 3, (target - input_error) / scale,
                              lock_border ? unsigned(meshopt_SimplifyLockBorder) : 0u, &step_error);
-        if (count == 0) break;
-        // A level that saves less than a quarter is not worth its clusters; level 1 is the
-        // surface VPLs' proxy and always kept.
-        if (k > 1 && double(count) > 0.75 * double(input.size())) continue;
+        if (count == 0) break;  // nothing left at that error: the coarser levels would be empty
+        // A level that saves less than a quarter is not worth its clusters; those up to the
+        // surface VPLs' proxy are always kept, so that the proxy is the same level everywhere.
+        if (k > ShadowClusters::kProxyLevel && double(count) > 0.75 * double(input.size()))
+            continue;
         out.resize(count);
         input = out;
         input_error += step_error * scale;

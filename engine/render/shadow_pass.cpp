@@ -234,7 +234,7 @@ uint32_t ShadowPass::face_resolution(const light::Vpl& vpl) const {
 
 LodChoice ShadowPass::lod_choice(const light::Vpl& vpl, uint32_t res) const {
     LodChoice lod;
-    lod.min_level = m_options.proxy && vpl.path_length > 0 ? 1 : 0;
+    lod.min_level = m_options.proxy && vpl.path_length > 0 ? ShadowClusters::kProxyLevel : 0;
     // A face's texel spans at most 2 / res radians, at its centre.
     if (m_options.lod) lod.error_per_distance = kLodFootprint * 2.0f / float(res);
     return lod;

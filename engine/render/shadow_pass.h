@@ -53,7 +53,8 @@ struct ShadowPassOptions {
     uint32_t max_batch = 32;
     // Whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle.
     bool culling = true;
-    // Surface VPLs (path length ≥ 1) draw the large meshes' level 1 at least (the shadow proxy),
+    // Surface VPLs (path length ≥ 1) draw the large meshes' ShadowClusters::kProxyLevel at least
+    // (the shadow proxy),
     // while emitter VPLs, whose shadows are the sharpest, may draw their full triangles.
     bool proxy = true;
     // Each VPL draws each large mesh at the coarsest level whose error stays below

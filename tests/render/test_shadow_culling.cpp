@@ -143,11 +143,13 @@ TEST(ShadowProxy, SimplifiesLargeMeshesOnly) {
     const ShadowClusters clusters(s);
     EXPECT_EQ(clusters.triangle_count(0), s.triangle_count());
     // The sphere shrinks; the box's walls (small meshes) are kept as they are.
-    EXPECT_LT(clusters.triangle_count(1), s.triangle_count() / 3);
-    EXPECT_GT(clusters.triangle_count(1), s.triangle_count() - s.meshes.back().triangle_count());
+    const uint32_t proxy = ShadowClusters::kProxyLevel;
+    EXPECT_LT(clusters.triangle_count(proxy), s.triangle_count() / 3);
+    EXPECT_GT(clusters.triangle_count(proxy),
+              s.triangle_count() - s.meshes.back().triangle_count());
     // Without levels of detail, one level of everything.
     const ShadowClusters flat(s, ShadowClusters::kClusterTriangles, false);
-    EXPECT_EQ(flat.triangle_count(1), s.triangle_count());
+    EXPECT_EQ(flat.triangle_count(proxy), s.triangle_count());
     EXPECT_EQ(flat.groups().size(), 1u);
 }
 

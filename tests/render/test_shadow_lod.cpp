@@ -55,29 +55,37 @@ TEST(ShadowLevels, EachLevelKeepsItsErrorBoundOnASphere) {
         const ShadowGroup& g = clusters.groups()[chunk];
         ASSERT_GE(g.levels.size(), 4u);
         EXPECT_EQ(g.levels[0].error, 0.0f);
-        for (size_t k = 1; k < g.levels.size(); ++k) {
-            const ShadowLevel& level = g.levels[k];
-            EXPECT_LT(level.triangle_count, g.levels[k - 1].triangle_count) << "level " << k;
-            EXPECT_GT(level.error, g.levels[k - 1].error) << "level " << k;
-            // The vertices are the sphere's, so the simplified surface lies inside it: its distance
-            // from the sphere is largest inside a triangle. Sampled at the centroid and the edges'
-            // midpoints (a flat triangle's farthest point from a concentric sphere is its foot of
-            // the perpendicular from the centre, inside it for these near-equilateral ones: the
-            // centroid is within a few percent of it).
-            float deepest = 0.0f;
+        // The vertices are the sphere's, so a level's surface lies inside it: its distance from
+        // the sphere is largest inside a triangle. Sampled at the centroid and the edges'
+        // midpoints (a flat triangle's farthest point from a concentric sphere is its foot of the
+        // perpendicular from the centre, inside it for these near-equilateral ones: the centroid
+        // is within a few percent of it).
+        auto deepest = [&](const ShadowLevel& level) {
+            float depth = 0.0f;
             for (uint32_t c = 0; c < level.cluster_count; ++c) {
                 const ShadowCluster& cl = clusters.clusters()[level.first_cluster + c];
                 for (uint32_t i = cl.first_index; i < cl.first_index + cl.index_count; i += 3) {
                     const Vec3 a = p[idx[i]], b = p[idx[i + 1]], d = p[idx[i + 2]];
                     for (const Vec3& x :
                          {(a + b + d) / 3.0f, 0.5f * (a + b), 0.5f * (b + d), 0.5f * (a + d)})
-                        deepest = std::max(deepest, sphere.radius - glm::length(x - sphere.centre));
+                        depth = std::max(depth, sphere.radius - glm::length(x - sphere.centre));
                 }
             }
-            // The bound holds (level 0, the icosphere itself, lies 2.4·10⁻⁴ R inside the sphere:
-            // included), and it is not loose by more than 4×.
-            EXPECT_LE(deepest, level.error) << "level " << k << " of " << g.levels.size();
-            EXPECT_GT(deepest, 0.25f * level.error) << "level " << k;
+            return depth;
+        };
+        // The full level, the icosphere itself, lies 2.4·10⁻⁴ R inside the sphere.
+        const float mesh_depth = deepest(g.levels[0]);
+        EXPECT_LT(mesh_depth, 3e-4f * sphere.radius);
+        for (size_t k = 1; k < g.levels.size(); ++k) {
+            const ShadowLevel& level = g.levels[k];
+            EXPECT_LT(level.triangle_count, g.levels[k - 1].triangle_count) << "level " << k;
+            EXPECT_GT(level.error, g.levels[k - 1].error) << "level " << k;
+            // The bound holds from the mesh (so from the sphere, adding the mesh's own depth),
+            // and it is not loose by more than 4×.
+            const float depth = deepest(level);
+            EXPECT_LE(depth, level.error + mesh_depth)
+                << "level " << k << " of " << g.levels.size();
+            EXPECT_GT(depth, 0.25f * level.error) << "level " << k;
         }
     }
 }
@@ -145,9 +153,10 @@ TEST(ShadowLevels, TheLevelFollowsTheDistance) {
     EXPECT_EQ(previous, g.levels.size() - 1);  // far enough: the coarsest
     // At the mesh itself, only the proxy's minimum level; without an allowance, that level even
     // far away.
-    lod.min_level = 1;
-    EXPECT_EQ(clusters.level_for(g, g.centre, lod), 1u);
-    EXPECT_EQ(clusters.level_for(g, g.centre + Vec3(1e3f), LodChoice{0.0f, 0.0f, 1}), 1u);
+    const uint32_t proxy = ShadowClusters::kProxyLevel;
+    lod.min_level = proxy;
+    EXPECT_EQ(clusters.level_for(g, g.centre, lod), proxy);
+    EXPECT_EQ(clusters.level_for(g, g.centre + Vec3(1e3f), LodChoice{0.0f, 0.0f, proxy}), proxy);
     EXPECT_EQ(clusters.level_for(g, g.centre + Vec3(1e3f), LodChoice{}), 0u);
 }
 
