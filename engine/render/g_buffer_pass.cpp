@@ -158,8 +158,9 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec
         push.material = draw.material;
         // One-sided materials: the rasteriser drops the back faces that the fragment stage would
         // discard (the same gl_FrontFacing), before their setup, which is most of a heavy
-        // scene's G-buffer on lavapipe (MetalRoughSpheresNoTextures: −36 %). Solids seen from
-        // outside hide their back faces behind their front faces, double-sided or not.
+        // scene's G-buffer on lavapipe. Solids seen from outside hide their back faces behind
+        // their front faces, double-sided or not (MetalRoughSpheresNoTextures' double-sided
+        // spheres: −36 %).
         const bool cull =
             !m.double_sided ||
             (cull_solids && draw.solid && outside(camera, float(width()) / float(height()), draw));
