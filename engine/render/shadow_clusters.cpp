@@ -33,31 +33,36 @@ uint64_t morton_code(const Vec3& p, const Vec3& lo, const Vec3& extent) {
     return code;
 }
 
-// A sphere around the given points: the centre of their box, with the radius rounded up so that
-// it contains every point.
-void bound(const std::vector<Vec3>& positions, const uint32_t* indices, size_t count, Vec3& centre,
-           float& radius) {
-    Vec3 lo(INFINITY);
-    Vec3 hi(-INFINITY);
+// The box of the given points, and a sphere around them: the box's centre, with the radius
+// rounded up so that it contains every point.
+struct Bound {
+    Vec3 lo{INFINITY};
+    Vec3 hi{-INFINITY};
+    Vec3 centre{0.0f};
+    float radius = 0.0f;
+};
+
+Bound bound(const std::vector<Vec3>& positions, const uint32_t* indices, size_t count) {
+    Bound b;
     for (size_t i = 0; i < count; ++i) {
-        lo = glm::min(lo, positions[indices[i]]);
-        hi = glm::max(hi, positions[indices[i]]);
+        b.lo = glm::min(b.lo, positions[indices[i]]);
+        b.hi = glm::max(b.hi, positions[indices[i]]);
     }
-    centre = 0.5f * (lo + hi);
-    radius = 0.0f;
+    b.centre = 0.5f * (b.lo + b.hi);
     for (size_t i = 0; i < count; ++i)
-        radius = std::max(radius, glm::length(positions[indices[i]] - centre));
-    radius = radius * (1.0f + 1e-5f) + 1e-30f;
+        b.radius = std::max(b.radius, glm::length(positions[indices[i]] - b.centre));
+    b.radius = b.radius * (1.0f + 1e-5f) + 1e-30f;
+    return b;
 }
 
-void bound_box(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices, Vec3& lo,
-               Vec3& hi) {
-    lo = Vec3(INFINITY);
-    hi = Vec3(-INFINITY);
-    for (const uint32_t i : indices) {
-        lo = glm::min(lo, positions[i]);
-        hi = glm::max(hi, positions[i]);
-    }
+// A group's sphere and box.
+void bound_group(const std::vector<Vec3>& positions, const std::vector<uint32_t>& indices,
+                 ShadowGroup& group) {
+    const Bound b = bound(positions, indices.data(), indices.size());
+    group.centre = b.centre;
+    group.radius = b.radius;
+    group.lo = b.lo;
+    group.hi = b.hi;
 }
 
 // Whether a sphere may reach cube face `face` of a VPL at `position` and, with a normal, the
@@ -217,8 +222,9 @@ void ShadowClusters::add_level(ShadowGroup& group, const std::vector<uint32_t>& 
     for (size_t first = 0; first < count; first += per_cluster) {
         const size_t last = std::min(count, first + per_cluster);
         ShadowCluster c;
-        bound(m_positions, &m_indices[first_index + 3 * first], 3 * (last - first), c.centre,
-              c.radius);
+        const Bound b = bound(m_positions, &m_indices[first_index + 3 * first], 3 * (last - first));
+        c.centre = b.centre;
+        c.radius = b.radius;
         c.first_index = uint32_t(first_index + 3 * first);
         c.index_count = uint32_t(3 * (last - first));
         m_clusters.push_back(c);
@@ -269,8 +275,7 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
             triangles >= 2 * kLodChunkTriangles ? triangles / kLodChunkTriangles : 1;
         const std::vector<uint32_t> order = morton_order(welded, indices);
         const bool solid = bounds_solid(welded, indices);
-        Vec3 solid_lo, solid_hi;
-        bound_box(m_positions, full, solid_lo, solid_hi);
+        const Bound mesh_box = bound(m_positions, full.data(), full.size());
         for (size_t k = 0; k < chunks; ++k) {
             std::vector<uint32_t> chunk_full;
             std::vector<uint32_t> chunk_welded;
@@ -281,11 +286,10 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
                 }
             }
             ShadowGroup group;
-            bound(m_positions, chunk_full.data(), chunk_full.size(), group.centre, group.radius);
-            bound_box(m_positions, chunk_full, group.lo, group.hi);
+            bound_group(m_positions, chunk_full, group);
             group.solid = solid;
-            group.solid_lo = solid_lo;
-            group.solid_hi = solid_hi;
+            group.solid_lo = mesh_box.lo;
+            group.solid_hi = mesh_box.hi;
             add_level(group, chunk_full, 0.0f, cluster_triangles);
             for (SimplifiedLevel& level :
                  simplified_levels(welded, chunk_welded, scale, chunks > 1)) {
@@ -298,9 +302,7 @@ ShadowClusters::ShadowClusters(const scene::Scene& scene, uint32_t cluster_trian
         }
     }
     if (!small_triangles.empty()) {
-        bound(m_positions, small_triangles.data(), small_triangles.size(), small.centre,
-              small.radius);
-        bound_box(m_positions, small_triangles, small.lo, small.hi);
+        bound_group(m_positions, small_triangles, small);
         add_level(small, small_triangles, 0.0f, cluster_triangles);
         m_groups.push_back(std::move(small));
     }

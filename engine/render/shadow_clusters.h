@@ -72,18 +72,9 @@ struct CasterRanges {
     static constexpr size_t kFrontOnly = 2;
     std::array<std::vector<gpu::IndexRange>, 4> by_kind;  // index: kSimplified | kFrontOnly bits
     const std::vector<gpu::IndexRange>& full() const { return by_kind[0]; }
-    const std::vector<gpu::IndexRange>& simplified() const { return by_kind[kSimplified]; }
     void clear() {
         for (std::vector<gpu::IndexRange>& r : by_kind)
             r.clear();
-    }
-    size_t triangle_count() const {
-        size_t n = 0;
-        for (const std::vector<gpu::IndexRange>& ranges : by_kind) {
-            for (const gpu::IndexRange& r : ranges)
-                n += r.index_count / 3;
-        }
-        return n;
     }
 };
 
