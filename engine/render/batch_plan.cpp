@@ -4,6 +4,11 @@
 
 namespace mvpl::render {
 
+uint32_t default_batches_per_position(size_t triangles) {
+    const size_t per = (triangles + kTrianglesPerPosition - 1) / kTrianglesPerPosition;
+    return uint32_t(std::clamp<size_t>(per, 1, kMaxBatchesPerPosition));
+}
+
 std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptions& options,
                                 std::span<const uint64_t> index) {
     const SubpixelSchedule schedule = subpixel_schedule(options);

@@ -26,4 +26,15 @@ struct Slice {
 std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptions& options,
                                 std::span<const uint64_t> index = {});
 
+// The batches that share a sub-pixel position (RenderOptions::batches_per_position) by default in
+// a scene of `triangles`: one per kTrianglesPerPosition started, at most kMaxBatchesPerPosition.
+// A G-buffer draws every triangle at full detail, where a batch's shadow maps draw levels of
+// detail: on lavapipe the dragon's 202 k triangles cost 49 ms a G-buffer at 512² against
+// ≈ 190 ms a batch of 32 VPLs, so a position per batch spent a fifth of the render on G-buffers
+// (docs/results.md, "Sub-pixel positions of heavy scenes"). Small scenes keep one per batch, the
+// anti-aliasing's finest schedule.
+inline constexpr size_t kTrianglesPerPosition = 65536;
+inline constexpr uint32_t kMaxBatchesPerPosition = 8;
+uint32_t default_batches_per_position(size_t triangles);
+
 }  // namespace mvpl::render

@@ -165,9 +165,10 @@ void GBufferPass::record(gpu::CommandList& cmd, const scene::Camera& camera, Vec
             !m.double_sided ||
             (cull_solids && draw.solid && outside(camera, float(width()) / float(height()), draw));
         gpu::set_cull_back(cmd, *m_pipeline, cull);
-        if (cull) m_front_only_triangles += draw.vertex_count / 3;
-        gpu::draw(cmd, *m_pipeline, m_geometry->vertices(), gpu::push_bytes(push),
-                  draw.first_vertex, draw.vertex_count);
+        if (cull) m_front_only_triangles += draw.index_count / 3;
+        const gpu::IndexRange range{draw.first_index, draw.index_count};
+        gpu::draw_indexed(cmd, *m_pipeline, m_geometry->vertices(), m_geometry->indices(),
+                          gpu::push_bytes(push), std::span(&range, 1));
     }
     gpu::end_rendering(cmd);
     if (m_material_pipeline) {

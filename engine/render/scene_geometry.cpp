@@ -27,10 +27,13 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
     }
 
     std::vector<GeometryVertex> vertices;
-    vertices.reserve(scene.triangle_count() * 3);
+    std::vector<uint32_t> indices;
+    std::vector<GeometryVertex> corners;
     for (const scene::Mesh& mesh : scene.meshes) {
         GeometryDraw draw;
-        draw.first_vertex = uint32_t(vertices.size());
+        draw.first_index = uint32_t(indices.size());
+        corners.clear();
+        corners.reserve(mesh.triangle_count() * 3);
         draw.material = mesh.material >= 0 && size_t(mesh.material) < m_materials.size()
                             ? uint32_t(mesh.material)
                             : 0u;
@@ -72,11 +75,17 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
                 const Vec4 color = mesh.colors.empty() ? Vec4(1.0f) : mesh.colors[idx[k]];
                 for (int c = 0; c < 4; ++c)
                     v.color[c] = color[c];
-                vertices.push_back(v);
+                corners.push_back(v);
                 m_bounds.extend(mesh.positions[idx[k]]);
             }
         }
-        draw.vertex_count = uint32_t(vertices.size()) - draw.first_vertex;
+        IndexedTriangles mesh_triangles = index_triangles(corners);
+        const uint32_t base = uint32_t(vertices.size());
+        vertices.insert(vertices.end(), mesh_triangles.vertices.begin(),
+                        mesh_triangles.vertices.end());
+        for (const uint32_t i : mesh_triangles.indices)
+            indices.push_back(base + i);
+        draw.index_count = uint32_t(indices.size()) - draw.first_index;
         // Masked and blended materials show their back faces through their holes.
         const bool opaque =
             mesh.material < 0 || size_t(mesh.material) >= scene.materials.size() ||
@@ -90,7 +99,7 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
                 draw.hi = glm::max(draw.hi, mesh.positions[i]);
             }
         }
-        if (draw.vertex_count > 0) m_draws.push_back(draw);
+        if (draw.index_count > 0) m_draws.push_back(draw);
     }
     if (vertices.empty()) throw gpu::GpuError("scene '" + scene.path + "' has no triangles");
     m_vertex_count = uint32_t(vertices.size());
@@ -98,6 +107,9 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
         gpu::Buffer(context, vertices.size() * sizeof(GeometryVertex), gpu::BufferUsage::vertex,
                     gpu::MemoryLocation::device, "scene vertices");
     m_vertices.upload(vertices);
+    m_indices = gpu::Buffer(context, indices.size() * sizeof(uint32_t), gpu::BufferUsage::index,
+                            gpu::MemoryLocation::device, "scene indices");
+    m_indices.upload(indices);
 }
 
 void dump_scene_shaders(const std::string& dir, const SceneGeometry& geometry, bool surface_vpls) {

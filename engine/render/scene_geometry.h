@@ -1,34 +1,20 @@
 #pragma once
 // The scene's triangles on the GPU, uploaded once and shared by the G-buffer and shadow passes.
 //
-// The vertex buffer is de-indexed (three vertices per triangle): the G-buffer needs each
-// triangle's winding normal, and a per-triangle attribute needs either de-indexing or
-// gl_PrimitiveID in the fragment shader (which needs the geometry-shader feature). Memory is
-// 84 bytes × 3 per triangle, 25 MB for 100k triangles.
+// Indexed, each triangle's winding normal in its first (provoking) vertex (geometry_vertex.h):
+// about 84 bytes of vertex and 12 of index per triangle, against 3 × 84 de-indexed.
 #include <cstdint>
 #include <vector>
 
 #include "engine/gpu/buffer.h"
 #include "engine/material/closure.h"
 #include "engine/material/node_graph.h"
+#include "engine/render/geometry_vertex.h"
 #include "engine/render/shader_program.h"
 #include "engine/scene/bounds.h"
 #include "engine/scene/scene.h"
 
 namespace mvpl::render {
-
-// One vertex as the passes read it (locations 0 to 5).
-struct GeometryVertex {
-    float position[3];
-    float normal[3];       // interpolated vertex normal (the shading normal)
-    float face_normal[3];  // the triangle's winding normal, the same at its three vertices
-    float uv[4];           // TEXCOORD_0, TEXCOORD_1 (0 where the mesh has none)
-    // As trace::make_interaction: TANGENT.xyz, else the triangle's ∂p/∂u from TEXCOORD_0, else
-    // 0 (the fragment shader orthonormalises it); w = the tangent sign of the first vertex.
-    float tangent[4];
-    float color[4];  // COLOR_0 (linear RGBA), white where the mesh has none
-};
-static_assert(sizeof(GeometryVertex) == 84);
 
 // What the host side draws a material with (the GPU reads the rest from the material graph).
 struct GeometryMaterial {
@@ -36,10 +22,10 @@ struct GeometryMaterial {
     bool double_sided = false;
 };
 
-// A run of vertices drawn with one material: one mesh.
+// A run of indices drawn with one material: one mesh.
 struct GeometryDraw {
-    uint32_t first_vertex = 0;
-    uint32_t vertex_count = 0;
+    uint32_t first_index = 0;  // into SceneGeometry::indices(), which hold absolute vertices
+    uint32_t index_count = 0;
     uint32_t material = 0;
     // An opaque mesh of kSolidMinTriangles or more that bounds a solid (closed_surface.h), and
     // its box: seen from outside the box, its back faces lie behind its front faces.
@@ -57,6 +43,7 @@ public:
     SceneGeometry(gpu::Context& context, const scene::Scene& scene);
 
     const gpu::Buffer& vertices() const { return m_vertices; }
+    const gpu::Buffer& indices() const { return m_indices; }
     const std::vector<GeometryDraw>& draws() const { return m_draws; }
     const std::vector<GeometryMaterial>& materials() const { return m_materials; }
     // The scene's material graphs, in material order (what the G-buffer shader resolves).
@@ -78,6 +65,7 @@ public:
 
 private:
     gpu::Buffer m_vertices;
+    gpu::Buffer m_indices;
     std::vector<GeometryDraw> m_draws;
     std::vector<GeometryMaterial> m_materials;
     std::vector<material::MaterialGraph> m_graphs;

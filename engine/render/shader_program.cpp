@@ -225,13 +225,6 @@ GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGra
     std::vector<std::string> enabled;
     if (out.color_handoff) enabled.emplace_back("color_handoff");
     if (out.alpha_tested) enabled.emplace_back("alpha_tested");
-    // A discard costs early depth testing: only scenes that draw a one-sided material get it.
-    for (size_t i = 0; i < graphs.size(); ++i) {
-        if ((drawn.empty() || (i < drawn.size() && drawn[i])) && !graphs[i].double_sided) {
-            enabled.emplace_back("one_sided");
-            break;
-        }
-    }
     out.functions = code.node_functions;
     const std::string push =
         expand_template(gpu::embedded_shader("render/g_buffer_push.glsl"), {}, {});

@@ -193,9 +193,10 @@ void ShadowPass::draw_masked(gpu::CommandList& cmd, const gpu::GraphicsPipeline&
             const uint32_t values[2] = {draw.material, seed};
             std::memcpy(bytes.data() + material_offset, values, sizeof(values));
         }
-        gpu::draw(cmd, pipeline, m_geometry->vertices(), bytes, draw.first_vertex,
-                  draw.vertex_count);
-        m_triangles_drawn += draw.vertex_count / 3;
+        const gpu::IndexRange range{draw.first_index, draw.index_count};
+        gpu::draw_indexed(cmd, pipeline, m_geometry->vertices(), m_geometry->indices(), bytes,
+                          std::span(&range, 1));
+        m_triangles_drawn += draw.index_count / 3;
     }
 }
 

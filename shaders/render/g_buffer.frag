@@ -41,10 +41,6 @@ void main() {
     // Counter-clockwise front faces through a y-flipped projection: the winding normal points
     // towards the camera (tests/render check this against a CPU ray cast).
     const bool front = gl_FrontFacing;
-//@if one_sided
-    // glTF doubleSided: false — the camera does not see back faces (trace::Accel::intersect_camera).
-    if (!front && (pc.material_flags & 1u) == 0u) discard;
-//@endif
 
     // As trace::make_interaction: the tangent Gram-Schmidt-ed against ns, else Frame(ns).s; and
     // as reference::make_shading_point the bitangent sign · ns × t.

@@ -68,6 +68,13 @@ void expect_consistent_render(const json& r, const json& paths, const std::strin
     EXPECT_EQ(
         r["batches"].get<int64_t>(),
         (paths["vpls"].get<int64_t>() + r["batch"].get<int64_t>() - 1) / r["batch"].get<int64_t>());
+    // A G-buffer per sub-pixel position: batch × batches_per_position VPLs each.
+    const int64_t per_position =
+        r["batch"].get<int64_t>() * r["batches_per_position"].get<int64_t>();
+    EXPECT_EQ(r["g_buffers"].get<int64_t>(),
+              r["jitter"].get<bool>()
+                  ? (paths["vpls"].get<int64_t>() + per_position - 1) / per_position
+                  : 1);
     expect_rel(r["shadow_ms_per_vpl"], r["shadow_ms"].get<double>() / vpls, "shadow ms/VPL");
     expect_rel(r["shading_ms_per_vpl"], r["shading_ms"].get<double>() / vpls, "shading ms/VPL");
     expect_rel(r["shading_pixel_vpls_per_s"],
@@ -119,6 +126,28 @@ TEST_F(Bench, WritesValidJsonWithPositiveNumbers) {
     EXPECT_EQ(j["render"]["height"], 24);
     EXPECT_EQ(j["render"]["shadow_resolution"], 16);
     EXPECT_EQ(j["render"]["batch"], 8);
+    // The scene's default: the Cornell box's 38 triangles keep a position per batch.
+    EXPECT_EQ(j["render"]["batches_per_position"], 1);
+}
+
+// --batches-per-position N: N batches share each G-buffer (expect_consistent_render counts them).
+TEST(BenchPositions, BatchesShareAGBufferAsAsked) {
+    const std::string json_path = (std::filesystem::temp_directory_path() /
+                                   ("mvpl_bench_bpp_" + std::to_string(::getpid()) + ".json"))
+                                      .string();
+    const test::CommandResult r = test::run_mvpl_gpu(
+        "bench " + shell_quote(kCbox) +
+        " --res 32x24 --shadow-res 16 --batch 4 --vpls 16 --repeat 1 --batches-per-position 3"
+        " --quiet --json " +
+        shell_quote(json_path));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(json_path);
+    const json j = json::parse(in);
+    std::filesystem::remove(json_path);
+    EXPECT_EQ(j["render"]["batches_per_position"], 3);
+    // 16 paths leave more than 12 VPLs: at least two positions of 12.
+    EXPECT_GE(j["render"]["g_buffers"].get<int>(), 2);
+    expect_consistent_render(j["render"], j["light_paths"], "render");
 }
 
 TEST_F(Bench, RatesAgreeWithCountsAndTimes) {

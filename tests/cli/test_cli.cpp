@@ -54,6 +54,8 @@ TEST(Cli, OutOfRangeAndRepeatedOptionsAreRefused) {
     expect_one_line_error(run_mvpl("render " + kCbox + " --chain-samples 65"), "--chain-samples");
     expect_one_line_error(run_mvpl("render " + kCbox + " --interleave -1"), "--interleave");
     expect_one_line_error(run_mvpl("render " + kCbox + " --interleave 9"), "--interleave");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --batches-per-position -1"),
+                          "--batches-per-position");
 }
 
 TEST(Cli, ReferenceWritesExrAndPng) {

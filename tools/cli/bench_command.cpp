@@ -46,6 +46,7 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.shadow_resolution = uint32_t(c.shadow_resolution);
     ro.batch = uint32_t(c.batch);
     ro.jitter = c.jitter;
+    ro.batches_per_position = uint32_t(std::max(c.batches_per_position, 1));
     ro.clamp = clamp;
     ro.shadows = shadows;
     ro.shadow_culling = c.shadow_culling;
@@ -211,6 +212,7 @@ int run_bench(const Args& args) {
     config.shadow_lod = !renderer_args.no_shadow_lod;
     config.backface_culling = !renderer_args.no_backface_culling;
     config.jitter = !renderer_args.no_jitter;
+    config.batches_per_position = renderer_args.batches_per_position;
     // The throughput of the levers: interleaving on unless asked otherwise, chains or not (the
     // sweep shows it off); `mvpl render` leaves it off where chains are traced (option_groups.h).
     config.interleave =
@@ -296,6 +298,12 @@ int run_bench(const Args& args) {
         cluster::together(ranks, [&] {
             session = std::make_unique<session::SceneSession>(
                 scene_path, camera.choice, environment.choice, scene_file.options);
+            if (renderer_args.batches_per_position == 0) {
+                const uint32_t b = renderer_args.batches_per_position_for(session->scene());
+                config.batches_per_position = int(b);
+                for (BenchConfig& c : sweep_configs)
+                    c.batches_per_position = int(b);
+            }
             load_s.push_back(session->load_seconds());
             bvh_s.push_back(session->bvh_seconds());
             if (k == 0 && ranks.root()) session->warn_if_no_light("nothing to bench");

@@ -64,6 +64,7 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"shadow_lod\": " + (r.config.shadow_lod ? "true" : "false") + ",\n";
     s += i + "\"backface_culling\": " + (r.config.backface_culling ? "true" : "false") + ",\n";
     s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
+    s += i + "\"batches_per_position\": " + std::to_string(r.config.batches_per_position) + ",\n";
     s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
     s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
     const int indirect =
@@ -107,7 +108,11 @@ std::string bench_levers(const BenchConfig& c) {
            (c.shadow_proxy ? "on" : "off") + ", levels of detail " + (c.shadow_lod ? "on" : "off") +
            ", back faces of solids " + (c.backface_culling ? "culled" : "drawn") + ", hemicube " +
            (c.hemicube ? "on" : "off") + ", VPL culling " + (c.vpl_culling ? "on" : "off") +
-           ", interleave " + std::to_string(c.interleave) + ", indirect faces " +
+           ", interleave " + std::to_string(c.interleave) +
+           (c.jitter ? ", sub-pixel position every " + std::to_string(c.batches_per_position) +
+                           (c.batches_per_position == 1 ? " batch" : " batches")
+                     : ", pixel centres") +
+           ", indirect faces " +
            (c.indirect_shadow_resolution > 0
                 ? std::to_string(std::min(c.indirect_shadow_resolution, c.shadow_resolution)) + "²"
                 : "as emitters'") +

@@ -17,10 +17,12 @@ struct BenchConfig {
     bool shadow_proxy = true;      // render::RenderOptions::shadow_proxy
     bool shadow_lod = true;        // render::RenderOptions::shadow_lod
     bool backface_culling = true;  // render::RenderOptions::backface_culling
-    bool jitter = true;            // a G-buffer per batch (false with --no-jitter: one per render)
-    int interleave = 1;            // render::RenderOptions::interleave
-    bool hemicube = true;          // render::RenderOptions::hemicube
-    bool vpl_culling = true;       // render::RenderOptions::vpl_culling
+    bool jitter =
+        true;  // a G-buffer per sub-pixel position (false with --no-jitter: one per render)
+    int batches_per_position = 0;        // render::RenderOptions's; 0: the scene's default
+    int interleave = 1;                  // render::RenderOptions::interleave
+    bool hemicube = true;                // render::RenderOptions::hemicube
+    bool vpl_culling = true;             // render::RenderOptions::vpl_culling
     int indirect_shadow_resolution = 0;  // render::RenderOptions::indirect_shadow_resolution
     // render::RenderOptions::chains: the roughness bound (negative: no specular chains) and the
     // light paths' --max-depth, which bounds them.

@@ -7,6 +7,7 @@
 
 #include "engine/core/error.h"
 #include "engine/light/specular_chain.h"
+#include "engine/render/batch_plan.h"
 
 namespace mvpl::cli {
 
@@ -45,6 +46,11 @@ uint32_t RendererArgs::interleave_for(const scene::Scene& scene,
     return light::scene_may_chain(scene, chains) ? 1u : uint32_t(kDefaultInterleave);
 }
 
+uint32_t RendererArgs::batches_per_position_for(const scene::Scene& scene) const {
+    if (batches_per_position > 0) return uint32_t(batches_per_position);
+    return render::default_batches_per_position(scene.triangle_count());
+}
+
 void RendererArgs::apply(render::RenderOptions& o) const {
     o.shadow_resolution = uint32_t(shadow_res);
     o.batch = uint32_t(batch);
@@ -60,6 +66,8 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.hemicube = !no_hemicube;
     o.vpl_culling = !no_vpl_culling;
     o.interleave = uint32_t(interleave > 0 ? interleave : kDefaultInterleave);
+    // The scene's default needs the scene: batches_per_position_for.
+    o.batches_per_position = uint32_t(std::max(batches_per_position, 1));
     o.indirect_shadow_resolution = uint32_t(indirect_shadow_res);
     o.ism = ism;
     o.ism_resolution = uint32_t(ism_res);
@@ -113,6 +121,10 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
                    "then a geometry-aware K×K filter (1 = off; 0 = 2, or 1 where specular "
                    "chains are traced)");
+    parser.add_int("--batches-per-position", &args.batches_per_position,
+                   "batches shaded at each sub-pixel position, each position's G-buffer drawn "
+                   "once (0 = one per 65536 scene triangles, at most 8: heavy scenes draw fewer "
+                   "G-buffers)");
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     parser.add_float("--chain-roughness", &args.chain_roughness,
@@ -142,6 +154,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
             out_of_range(parser, "--ism-points", "1..2^24");
         if (args.interleave < 0 || args.interleave > 8)
             out_of_range(parser, "--interleave", "0..8");
+        if (args.batches_per_position < 0 || args.batches_per_position > 1024)
+            out_of_range(parser, "--batches-per-position", "0..1024");
         if (args.chain_samples < 1 || args.chain_samples > 64)
             out_of_range(parser, "--chain-samples", "1..64");
     });

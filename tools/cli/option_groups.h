@@ -44,6 +44,9 @@ struct RendererArgs {
     // (interleave_for): on assets/glossy at 160×120 interleaving costs chained pixels more than
     // it saves, 1.1–1.65× the error at equal time (docs/results.md, "Interleaving with chains").
     int interleave = 0;
+    // 0 (the default): render::default_batches_per_position of the scene's triangles
+    // (batches_per_position_for).
+    int batches_per_position = 0;
     int indirect_shadow_res = 0;
     // Imperfect shadow maps for indirect VPLs: opt-in (docs/results.md, "Imperfect shadow maps").
     bool ism = false;
@@ -54,6 +57,8 @@ struct RendererArgs {
     // The interleave for a render of `scene` with these chains: --interleave K as given, or the
     // default above.
     uint32_t interleave_for(const scene::Scene& scene, const light::ChainOptions& chains) const;
+    // --batches-per-position N as given, or the scene's default.
+    uint32_t batches_per_position_for(const scene::Scene& scene) const;
     // The radius of the virtual spherical lights (scene diagonals), 0 with --no-vsl.
     float vsl() const { return no_vsl ? 0.0f : vsl_radius; }
 

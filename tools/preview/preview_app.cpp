@@ -16,6 +16,7 @@
 #include "engine/gpu/context.h"
 #include "engine/gpu/swapchain.h"
 #include "engine/light/specular_chain.h"
+#include "engine/render/batch_plan.h"
 #include "engine/render/vpl_renderer.h"
 #include "sampler/sampler_factory.h"
 #include "tools/preview/camera_controller.h"
@@ -246,6 +247,9 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     ro.chain_seed = m_options.seed;
     if (m_options.interleave_auto && light::scene_may_chain(m_session.scene(), ro.chains))
         ro.interleave = 1;
+    if (m_options.batches_per_position_auto)
+        ro.batches_per_position =
+            render::default_batches_per_position(m_session.scene().triangle_count());
     m_renderer.begin(m_controller.camera(), ro);
     m_replayed = 0;
     m_scale = 0.0;

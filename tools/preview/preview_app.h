@@ -41,6 +41,9 @@ struct PreviewOptions {
     // levers.interleave was the default (--interleave 0): 1 where the chains are traced, as
     // `mvpl render` (RendererArgs::interleave_for).
     bool interleave_auto = false;
+    // levers.batches_per_position was the default (--batches-per-position 0): the scene's
+    // (render::default_batches_per_position), as `mvpl render`.
+    bool batches_per_position_auto = false;
     bool hud = true;
     // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
     bool motion_scaling = true;
