@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
-// G-buffer: world-space attributes for the fragment shader; the winding normal is per triangle
-// (the same at its three de-indexed vertices), hence flat.
+// G-buffer: world-space attributes for the fragment shader; the winding normal is per triangle,
+// hence flat: Vulkan takes it from the triangle's first vertex, which holds that triangle's
+// (engine/render/geometry_vertex.h).
 #include "g_buffer_push.glsl"
 
 layout(location = 0) in vec3 in_position;
