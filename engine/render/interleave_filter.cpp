@@ -49,6 +49,12 @@ void InterleaveFilter::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
     cmd.dispatch(*m_pipeline, {&g_buffer, &m_shaded, &accumulation, chains ? chains : &m_no_chains},
                  gpu::push_bytes(push), (width + kGroupSize - 1) / kGroupSize,
                  (height + kGroupSize - 1) / kGroupSize);
+    cmd.barrier();
+    record_clear(cmd);
+}
+
+void InterleaveFilter::record_clear(gpu::CommandList& cmd) {
+    cmd.clear_color(m_shaded, {0.0f, 0.0f, 0.0f, 0.0f});
 }
 
 }  // namespace mvpl::render

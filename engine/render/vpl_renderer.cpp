@@ -237,6 +237,7 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     gpu::GpuTimer timer(*m.context, 1);
     m.context->submit_and_wait([&](gpu::CommandList& cmd) {
         m.shading->record_clear(cmd);
+        if (m.interleave) m.interleave->record_clear(cmd);
         m.emission->record_clear(cmd);
         m.record_g_buffer(cmd, timer, 0);
     });
@@ -278,7 +279,11 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     std::vector<light::Vpl> kept;
     std::vector<bool> skip;
     std::vector<uint32_t> resolutions;
-    for (const Slice& s : slices) {
+    for (size_t si = 0; si < slices.size(); ++si) {
+        const Slice& s = slices[si];
+        // The interleaved shares of a position are filtered once, after its last batch of the
+        // call (the accumulation must hold them when the call returns).
+        const bool position_ends = si + 1 == slices.size() || slices[si + 1].position != s.position;
         std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
         skip.clear();
         // Not with chains: a VPL may light only what a mirror shows, outside the view.
@@ -319,7 +324,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
             }
             const uint32_t scope = timer.begin(cmd, "shading");
             m.shading->record(cmd, m.g_buffer->image(), batch);
-            if (m.interleave) {
+            if (m.interleave && position_ends) {
                 cmd.barrier();
                 m.interleave->record(cmd, m.g_buffer->image(), m.shading->accumulation(),
                                      m.chains ? &m.chains->records() : nullptr);

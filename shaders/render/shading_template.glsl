@@ -366,14 +366,16 @@ void main() {
 //@endif
     }
     if (pc.interleave > 1u) {
-        // The class's share, K² times: the interleaved batch image, which the filter adds. A
-        // chain's weight is left out: the filter applies the pixel's own (shared/interleave.h).
+        // The class's share, K² times, added to the interleaved image of the sub-pixel position,
+        // which the filter adds once the position's batches are shaded (it is linear). A chain's
+        // weight is left out: the filter applies the pixel's own (shared/interleave.h).
         float tag = 1.0;
 //@if specular_chains
         // 1 + the chain's state, which the filter reads here rather than from the records.
         tag += float(chain.state);
 //@endif
-        imageStore(accumulation, px, vec4(float(vpl_step) * sum, tag));
+        const vec3 position_sum = imageLoad(accumulation, px).rgb;
+        imageStore(accumulation, px, vec4(position_sum + float(vpl_step) * sum, tag));
     } else {
         const vec4 accumulated = imageLoad(accumulation, px);
         imageStore(accumulation, px, vec4(accumulated.rgb + emitted + weight * sum, 1.0));

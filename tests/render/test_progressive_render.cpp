@@ -112,6 +112,34 @@ TEST_F(ProgressiveRenderTest, GBuffersFollowThePositionsNotTheChunks) {
     EXPECT_EQ(timings.g_buffers, 1u);
 }
 
+// Interleaved, the shares of a position's batches add up in one image that is filtered once per
+// position (and at the end of each call): two batches of 8 per position give the image of one
+// batch of 16 per position (the same positions, and a VPL's pixel class is its index mod K²),
+// however the calls cut them. Overwriting the shares, or filtering only at a position's change,
+// would lose a batch.
+TEST_F(ProgressiveRenderTest, InterleavedBatchesOfAPositionFilterAsOne) {
+    const CornellBox box;
+    VplRenderer renderer(context(), box.scene);
+    RenderOptions two = small_options();
+    two.interleave = 2;
+    two.batches_per_position = 2;
+    RenderOptions one = two;
+    one.batch = 16;
+    one.batches_per_position = 1;
+    const Image per_position = renderer.render(box.set, one);
+    RenderTimings timings;
+    expect_same_image(renderer.render(box.set, two, &timings), per_position);
+    EXPECT_EQ(timings.batches, uint32_t((box.set.vpls.size() + 7) / 8));
+    renderer.begin(box.scene.camera, two);
+    size_t first = 0;
+    for (size_t chunk : {size_t(3), size_t(9), size_t(6), box.set.vpls.size()}) {
+        const size_t count = std::min(chunk, box.set.vpls.size() - first);
+        renderer.accumulate(std::span<const light::Vpl>(box.set.vpls).subspan(first, count));
+        first += count;
+    }
+    expect_same_image(renderer.resolve(box.set.scale), per_position);
+}
+
 TEST_F(ProgressiveRenderTest, ScaleMultipliesTheVplsButNotTheEmission) {
     const CornellBox box;
     VplRenderer renderer(context(), box.scene);
