@@ -6,7 +6,7 @@ namespace mvpl::render {
 
 uint32_t default_batches_per_position(size_t triangles) {
     const size_t per = (triangles + kTrianglesPerPosition - 1) / kTrianglesPerPosition;
-    return uint32_t(std::clamp<size_t>(per, 1, kMaxBatchesPerPosition));
+    return uint32_t(std::clamp<size_t>(per, kMinBatchesPerPosition, kMaxBatchesPerPosition));
 }
 
 std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptions& options,

@@ -27,13 +27,15 @@ std::vector<Slice> plan_batches(size_t count, uint64_t shaded, const RenderOptio
                                 std::span<const uint64_t> index = {});
 
 // The batches that share a sub-pixel position (RenderOptions::batches_per_position) by default in
-// a scene of `triangles`: one per kTrianglesPerPosition started, at most kMaxBatchesPerPosition.
-// A G-buffer draws every triangle at full detail, where a batch's shadow maps draw levels of
-// detail: on lavapipe the dragon's 202 k triangles cost 49 ms a G-buffer at 512² against
-// ≈ 190 ms a batch of 32 VPLs, so a position per batch spent a fifth of the render on G-buffers
-// (docs/results.md, "Sub-pixel positions of heavy scenes"). Small scenes keep one per batch, the
-// anti-aliasing's finest schedule.
+// a scene of `triangles`: one per kTrianglesPerPosition started, at least kMinBatchesPerPosition
+// and at most kMaxBatchesPerPosition. A position costs a G-buffer and, interleaved, a filter
+// pass (interleave_filter.h), whatever its batches: on lavapipe about 15 ms on the Cornell box at
+// 256² against 34 ms for a batch of 32 VPLs, and for the dragon's 202 k triangles a 49 ms
+// G-buffer at 512² (every triangle at full detail, where shadow maps draw levels of detail)
+// against ≈ 190 ms a batch. Two batches a position made the Cornell box 1.19× faster and its
+// error at 10 s lower, four the dragon ≈ 1.2× faster (docs/results.md, "Sub-pixel positions").
 inline constexpr size_t kTrianglesPerPosition = 65536;
+inline constexpr uint32_t kMinBatchesPerPosition = 2;
 inline constexpr uint32_t kMaxBatchesPerPosition = 8;
 uint32_t default_batches_per_position(size_t triangles);
 

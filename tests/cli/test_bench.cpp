@@ -126,8 +126,8 @@ TEST_F(Bench, WritesValidJsonWithPositiveNumbers) {
     EXPECT_EQ(j["render"]["height"], 24);
     EXPECT_EQ(j["render"]["shadow_resolution"], 16);
     EXPECT_EQ(j["render"]["batch"], 8);
-    // The scene's default: the Cornell box's 38 triangles keep a position per batch.
-    EXPECT_EQ(j["render"]["batches_per_position"], 1);
+    // The scene's default for the Cornell box's 38 triangles: a position every 2 batches.
+    EXPECT_EQ(j["render"]["batches_per_position"], 2);
 }
 
 // --batches-per-position N: N batches share each G-buffer (expect_consistent_render counts them).

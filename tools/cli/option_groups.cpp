@@ -123,8 +123,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                    "chains are traced)");
     parser.add_int("--batches-per-position", &args.batches_per_position,
                    "batches shaded at each sub-pixel position, each position's G-buffer drawn "
-                   "once (0 = one per 65536 scene triangles, at most 8: heavy scenes draw fewer "
-                   "G-buffers)");
+                   "once (0 = one per 65536 scene triangles, from 2 to 8: heavy scenes draw "
+                   "fewer G-buffers)");
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     parser.add_float("--chain-roughness", &args.chain_roughness,
