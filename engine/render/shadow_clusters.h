@@ -1,7 +1,7 @@
 #pragma once
 // The shadow casters as the shadow pass draws them (issue 14, "fewer triangles per face"): world
 // positions only (12 bytes a vertex, indexed as the scene's meshes are, rather than the
-// G-buffer's de-indexed 68-byte vertices), cut into clusters of consecutive triangles along a
+// G-buffer's 84-byte vertices), cut into clusters of consecutive triangles along a
 // Morton curve of their centroids, each with a bounding sphere. A cube face then draws only the
 // clusters that can reach its frustum and the VPL's lit half-space, as merged index ranges: a face
 // sees about a sixth of the scene, a surface VPL half of it.
