@@ -2,8 +2,11 @@
 // the preview use, against the one-shot render() of the same VPLs.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <initializer_list>
 #include <limits>
+#include <span>
 #include <string>
 
 #include "engine/core/finite_check.h"
@@ -48,6 +51,18 @@ RenderOptions small_options() {
     return o;
 }
 
+// Accumulates `vpls` in calls of the given sizes (the last takes what is left).
+void accumulate_in_chunks(VplRenderer& renderer, std::span<const light::Vpl> vpls,
+                          std::initializer_list<size_t> chunks) {
+    size_t first = 0;
+    for (const size_t chunk : chunks) {
+        const size_t count = std::min(chunk, vpls.size() - first);
+        renderer.accumulate(vpls.subspan(first, count));
+        first += count;
+    }
+    ASSERT_EQ(first, vpls.size());
+}
+
 // Both images sum the same float contributions, in other chunks or with the scale folded into
 // the powers instead of applied at the resolve: each pixel differs by float rounding only — a few
 // ulps of the sum of at most ~200 terms, far below 1e-5 relative (plus an absolute 1e-7 for
@@ -75,13 +90,7 @@ TEST_F(ProgressiveRenderTest, UnevenChunksWithAScaleEqualTheOneShotRender) {
     const std::vector<light::Vpl>& unscaled = box.set.vpls;
     renderer.begin(box.scene.camera, small_options());
     // Chunks that straddle batches: 1, 7, 13, then the rest.
-    size_t first = 0;
-    for (size_t chunk : {size_t(1), size_t(7), size_t(13), unscaled.size()}) {
-        const size_t count = std::min(chunk, unscaled.size() - first);
-        renderer.accumulate(std::span<const light::Vpl>(unscaled).subspan(first, count));
-        first += count;
-    }
-    ASSERT_EQ(first, unscaled.size());
+    accumulate_in_chunks(renderer, unscaled, {1, 7, 13, unscaled.size()});
     EXPECT_EQ(renderer.timings().batches, 1u + 1u + 2u + (unscaled.size() - 21 + 7) / 8);
     expect_same_image(renderer.resolve(1.0 / double(kPaths)), one_shot);
 }
@@ -99,12 +108,7 @@ TEST_F(ProgressiveRenderTest, GBuffersFollowThePositionsNotTheChunks) {
     const uint32_t positions = uint32_t((box.set.vpls.size() + 15) / 16);
     EXPECT_EQ(timings.g_buffers, positions);
     renderer.begin(box.scene.camera, o);
-    size_t first = 0;
-    for (size_t chunk : {size_t(5), size_t(11), size_t(17), box.set.vpls.size()}) {
-        const size_t count = std::min(chunk, box.set.vpls.size() - first);
-        renderer.accumulate(std::span<const light::Vpl>(box.set.vpls).subspan(first, count));
-        first += count;
-    }
+    accumulate_in_chunks(renderer, box.set.vpls, {5, 11, 17, box.set.vpls.size()});
     EXPECT_EQ(renderer.timings().g_buffers, positions);
     expect_same_image(renderer.resolve(1.0 / double(kPaths)), one_shot);
     o.jitter = false;
@@ -131,12 +135,7 @@ TEST_F(ProgressiveRenderTest, InterleavedBatchesOfAPositionFilterAsOne) {
     expect_same_image(renderer.render(box.set, two, &timings), per_position);
     EXPECT_EQ(timings.batches, uint32_t((box.set.vpls.size() + 7) / 8));
     renderer.begin(box.scene.camera, two);
-    size_t first = 0;
-    for (size_t chunk : {size_t(3), size_t(9), size_t(6), box.set.vpls.size()}) {
-        const size_t count = std::min(chunk, box.set.vpls.size() - first);
-        renderer.accumulate(std::span<const light::Vpl>(box.set.vpls).subspan(first, count));
-        first += count;
-    }
+    accumulate_in_chunks(renderer, box.set.vpls, {3, 9, 6, box.set.vpls.size()});
     expect_same_image(renderer.resolve(box.set.scale), per_position);
 }
 
