@@ -9,6 +9,7 @@
 #include "engine/core/rng.h"
 #include "engine/core/timer.h"
 #include "sampler/primary_sample_vector.h"
+#include "sampler/start_resampling.h"
 
 namespace mvpl::sampler {
 
@@ -74,7 +75,9 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     const size_t k = m_importance.point_count();
     std::vector<float> per_point;
     std::vector<double> radiance(k, 0.0);
-    std::vector<double> mine(2 * m, 0.0);  // I and [has a VPL] of this rank's paths
+    // I, [has a VPL] and the start order's key (start_resampling.h) of this rank's paths.
+    std::vector<double> mine(3 * m, 0.0);
+    const scene::Bounds bounds = scene.bounds();
     cluster::together(ranks, [&] {
         per_point.assign(size_t(m) * k, 0.0f);
         if (!lights.empty() && k > 0) {
@@ -85,6 +88,10 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
                                           m_options.sigma);
                     trace_state(u, path);
                     mine[size_t(m + uint64_t(i))] = path.empty() ? 0.0 : 1.0;
+                    // The state's (first) VPL's place: exact in a double (30 bits).
+                    if (!path.empty())
+                        mine[size_t(2 * m + uint64_t(i))] =
+                            double(morton_key(path[0].position, bounds));
                     m_importance.evaluate_points(
                         path, std::span<float>(per_point.data() + size_t(i) * k, k));
                 }
@@ -104,8 +111,8 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
         }
         per_point = {};
     });
-    // Every rank's I, then every rank's [has a VPL]: the whole bootstrap on every rank.
-    std::vector<double> importance, has_vpl;
+    // Every rank's I, [has a VPL] and key: the whole bootstrap on every rank.
+    std::vector<double> importance, has_vpl, keys;
     {
         const std::vector<double> all =
             ranks.gather_all(std::span<const double>(mine.data(), size_t(m)));
@@ -113,6 +120,9 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
         const std::vector<double> flags =
             ranks.gather_all(std::span<const double>(mine.data() + m, size_t(m)));
         has_vpl.assign(flags.begin(), flags.end());
+        const std::vector<double> places =
+            ranks.gather_all(std::span<const double>(mine.data() + 2 * m, size_t(m)));
+        keys.assign(places.begin(), places.end());
     }
     double sum = 0.0;
     uint64_t lit = 0;
@@ -138,18 +148,32 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     m_stats.target_count = n;
     m_stats.b = cdf[n] / double(n);
 
+    // Chain c's start: stratified (start_resampling.h), or an independent pick ∝ I'.
+    std::vector<uint64_t> starts(size_t(m_options.chains), 0);
+    if (m_options.stratified_starts) {
+        std::vector<double> weights(n);
+        for (uint64_t i = 0; i < n; ++i)
+            weights[i] = cdf[i + 1] - cdf[i];
+        Rng pick(chain_start_seed(m_options.seed), 0);
+        starts = stratified_picks(weights, keys, uint64_t(m_options.chains), pick);
+    } else {
+        for (int c = 0; c < m_options.chains; ++c) {
+            Rng pick(chain_start_seed(m_options.seed), uint64_t(c));
+            const double x = double(pick.next_float()) * cdf[n];
+            // The first path whose interval [cdf[i], cdf[i+1]) holds x (empty intervals never do).
+            uint64_t start =
+                uint64_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin()) - 1;
+            start = std::min(start, n - 1);
+            while (start > 0 && !(cdf[start + 1] > cdf[start]))
+                --start;
+            starts[size_t(c)] = start;
+        }
+    }
     m_chains.resize(size_t(m_options.chains));
     for (int c = 0; c < m_options.chains; ++c) {
         if (c % ranks.size() != ranks.rank()) continue;  // another rank's chain
-        Rng pick(chain_start_seed(m_options.seed), uint64_t(c));
-        const double x = double(pick.next_float()) * cdf[n];
-        // The first path whose interval [cdf[i], cdf[i+1]) holds x (empty intervals never do).
-        uint64_t start = uint64_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin()) - 1;
-        start = std::min(start, n - 1);
-        while (start > 0 && !(cdf[start + 1] > cdf[start]))
-            --start;
-        auto chain =
-            std::make_unique<Chain>(bootstrap_seed(m_options.seed), start, m_options.sigma);
+        auto chain = std::make_unique<Chain>(bootstrap_seed(m_options.seed), starts[size_t(c)],
+                                             m_options.sigma);
         trace_state(chain->u, chain->current);
         chain->current_target = target(chain->current);
         chain->u.reseed(chain_value_seed(m_options.seed), uint64_t(c));
