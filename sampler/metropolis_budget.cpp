@@ -11,7 +11,9 @@ void scale_pool_for_budget(SamplerSettings& settings, double seconds, bool chain
     const double scale = std::min(seconds / kPoolBudgetSeconds, kMaxPoolScale);
     if (!chains_given) settings.chains = int(std::lround(double(settings.chains) * scale));
     if (!bootstrap_given) {
-        settings.bootstrap = uint64_t(std::llround(double(settings.bootstrap) * scale));
+        const double grown =
+            std::min(std::pow(seconds / kPoolBudgetSeconds, 1.5), kMaxBootstrapScale);
+        settings.bootstrap = uint64_t(std::llround(double(settings.bootstrap) * grown));
     }
 }
 

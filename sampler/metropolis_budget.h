@@ -9,14 +9,23 @@
 // 60 s budget spent on the bootstrap instead of ≈1.3 s. Short budgets keep the defaults, where
 // that time would be the whole render's. Only the pool's size changes, not the sampler: the
 // estimate is the same unbiased one.
+//
+// The bootstrap grows faster than the chains, as (T / 15 s)^1.5 up to 8× (524288 paths at 60 s):
+// with stratified starts (start_resampling.h) and at 60 s (--interleave 1, four seeds, against
+// the mean of four references) 8× took the error against the truth from 1.09, 1.07, 1.51, 1.05
+// to 1.05, 0.94, 0.87, 0.63 · 10⁻³ and the image mean's largest deviation from 3.3 % to 1.7 %, for
+// ≈ 9.5 s of sampling instead of 4; 16× (1048576) gave 0.71, 0.97, 0.93, 0.74 for 11–16 s
+// (docs/results.md, "Four references, stratified starts and the 60 s target").
 #include "sampler/sampler_factory.h"
 
 namespace mvpl::sampler {
 
-// Budgets up to this keep MetropolisOptions' chains and bootstrap; longer ones scale both by
-// budget / kPoolBudgetSeconds, at most kMaxPoolScale.
+// Budgets up to this keep MetropolisOptions' chains and bootstrap; longer ones scale the chains by
+// budget / kPoolBudgetSeconds, at most kMaxPoolScale, and the bootstrap as below.
 inline constexpr double kPoolBudgetSeconds = 15.0;
 inline constexpr double kMaxPoolScale = 4.0;
+// The bootstrap's scale: (budget / kPoolBudgetSeconds)^1.5, at most this.
+inline constexpr double kMaxBootstrapScale = 8.0;
 
 // Scales settings.chains and settings.bootstrap for a render of `seconds` (≤ 0: not a time
 // budget, unchanged). A value the user chose (chains_given, bootstrap_given) stays as it is.

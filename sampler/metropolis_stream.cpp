@@ -9,6 +9,7 @@
 #include "engine/core/rng.h"
 #include "engine/core/timer.h"
 #include "sampler/primary_sample_vector.h"
+#include "sampler/start_resampling.h"
 
 namespace mvpl::sampler {
 
@@ -66,46 +67,86 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     // Bootstrap: I of n independent paths; path i is what a PrimarySampleVector on stream i
     // reads at iteration 0, so a chain can restart from it exactly.
     // The luminance each path adds to each point is kept, so that the relative target's point
-    // weights (from the bootstrap's radiance per point) apply without tracing twice.
+    // weights (from the bootstrap's radiance per point) apply without tracing twice. Sparse: a
+    // path's one VPL lights few of the points (most lie in the other room, behind the opening,
+    // in the two-room scene), and dense storage grew as paths × points (1 GiB at 2^20 × 256).
     // Over ranks, this rank's share [first, first + m) of the paths (all of them on one process).
     cluster::Cluster& ranks = m_options.cluster ? *m_options.cluster : cluster::single_process();
     const cluster::Share share = cluster::share_of(n, ranks.rank(), ranks.size());
     const uint64_t first = share.first, m = share.last - share.first;
     const size_t k = m_importance.point_count();
-    std::vector<float> per_point;
+    struct PointLuminance {
+        uint32_t point;
+        float value;
+    };
+    constexpr uint64_t kBlock = 16;  // paths a block; a block's entries in path order
+    const uint64_t blocks = (m + kBlock - 1) / kBlock;
+    std::vector<std::vector<PointLuminance>> block_entries;
+    std::vector<uint32_t> entries_of(m, 0);  // per path
     std::vector<double> radiance(k, 0.0);
-    std::vector<double> mine(2 * m, 0.0);  // I and [has a VPL] of this rank's paths
+    // I, [has a VPL] and the start order's key (start_resampling.h) of this rank's paths.
+    std::vector<double> mine(3 * m, 0.0);
+    const scene::Bounds bounds = scene.bounds();
+    // Path i's luminance per point, dense (k values), from its block's entries from `at` on.
+    auto unpack = [&](uint64_t i, size_t& at, const std::vector<PointLuminance>& entries,
+                      std::vector<float>& dense) {
+        std::fill(dense.begin(), dense.end(), 0.0f);
+        for (uint32_t e = 0; e < entries_of[i]; ++e, ++at)
+            dense[entries[at].point] = entries[at].value;
+    };
     cluster::together(ranks, [&] {
-        per_point.assign(size_t(m) * k, 0.0f);
+        block_entries.assign(blocks, {});
         if (!lights.empty() && k > 0) {
-            parallel_for(int64_t(m), 16, [&](int64_t i0, int64_t i1) {
+            parallel_for(int64_t(blocks), 1, [&](int64_t b0, int64_t b1) {
                 std::vector<light::Vpl> path;
-                for (int64_t i = i0; i < i1; ++i) {
-                    PrimarySampleVector u(bootstrap_seed(m_options.seed), first + uint64_t(i),
-                                          m_options.sigma);
-                    trace_state(u, path);
-                    mine[size_t(m + uint64_t(i))] = path.empty() ? 0.0 : 1.0;
-                    m_importance.evaluate_points(
-                        path, std::span<float>(per_point.data() + size_t(i) * k, k));
+                std::vector<float> dense(k);
+                for (int64_t b = b0; b < b1; ++b) {
+                    const uint64_t i0 = uint64_t(b) * kBlock, i1 = std::min(m, i0 + kBlock);
+                    for (uint64_t i = i0; i < i1; ++i) {
+                        PrimarySampleVector u(bootstrap_seed(m_options.seed), first + i,
+                                              m_options.sigma);
+                        trace_state(u, path);
+                        mine[size_t(m + i)] = path.empty() ? 0.0 : 1.0;
+                        // The state's (first) VPL's place: exact in a double (30 bits).
+                        if (!path.empty())
+                            mine[size_t(2 * m + i)] = double(morton_key(path[0].position, bounds));
+                        std::fill(dense.begin(), dense.end(), 0.0f);
+                        m_importance.evaluate_points(path, dense);
+                        for (size_t p = 0; p < k; ++p) {
+                            if (dense[p] == 0.0f) continue;
+                            block_entries[size_t(b)].push_back({uint32_t(p), dense[p]});
+                            ++entries_of[i];
+                        }
+                    }
                 }
             });
         }
-        for (uint64_t i = 0; i < m; ++i) {
-            for (size_t p = 0; p < k; ++p)
-                radiance[p] += double(per_point[size_t(i) * k + p]) / double(n);
+        // In path order, as the dense sum was (zeros left out do not change a sum).
+        for (uint64_t b = 0; b < blocks; ++b) {
+            size_t at = 0;
+            for (uint64_t i = b * kBlock; i < std::min(m, (b + 1) * kBlock); ++i) {
+                for (uint32_t e = 0; e < entries_of[i]; ++e, ++at) {
+                    const PointLuminance& entry = block_entries[b][at];
+                    radiance[entry.point] += double(entry.value) / double(n);
+                }
+            }
         }
     });
     ranks.sum_all(radiance);
     cluster::together(ranks, [&] {
         m_importance.set_point_radiance(radiance);
-        for (uint64_t i = 0; i < m; ++i) {
-            mine[i] =
-                m_importance.evaluate(std::span<const float>(per_point.data() + size_t(i) * k, k));
+        std::vector<float> dense(k);
+        for (uint64_t b = 0; b < blocks; ++b) {
+            size_t at = 0;
+            for (uint64_t i = b * kBlock; i < std::min(m, (b + 1) * kBlock); ++i) {
+                unpack(i, at, block_entries[b], dense);
+                mine[i] = m_importance.evaluate(std::span<const float>(dense));
+            }
         }
-        per_point = {};
+        block_entries = {};
     });
-    // Every rank's I, then every rank's [has a VPL]: the whole bootstrap on every rank.
-    std::vector<double> importance, has_vpl;
+    // Every rank's I, [has a VPL] and key: the whole bootstrap on every rank.
+    std::vector<double> importance, has_vpl, keys;
     {
         const std::vector<double> all =
             ranks.gather_all(std::span<const double>(mine.data(), size_t(m)));
@@ -113,6 +154,9 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
         const std::vector<double> flags =
             ranks.gather_all(std::span<const double>(mine.data() + m, size_t(m)));
         has_vpl.assign(flags.begin(), flags.end());
+        const std::vector<double> places =
+            ranks.gather_all(std::span<const double>(mine.data() + 2 * m, size_t(m)));
+        keys.assign(places.begin(), places.end());
     }
     double sum = 0.0;
     uint64_t lit = 0;
@@ -138,18 +182,32 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     m_stats.target_count = n;
     m_stats.b = cdf[n] / double(n);
 
+    // Chain c's start: stratified (start_resampling.h), or an independent pick ∝ I'.
+    std::vector<uint64_t> starts(size_t(m_options.chains), 0);
+    if (m_options.stratified_starts) {
+        std::vector<double> weights(n);
+        for (uint64_t i = 0; i < n; ++i)
+            weights[i] = cdf[i + 1] - cdf[i];
+        Rng pick(chain_start_seed(m_options.seed), 0);
+        starts = stratified_picks(weights, keys, uint64_t(m_options.chains), pick);
+    } else {
+        for (int c = 0; c < m_options.chains; ++c) {
+            Rng pick(chain_start_seed(m_options.seed), uint64_t(c));
+            const double x = double(pick.next_float()) * cdf[n];
+            // The first path whose interval [cdf[i], cdf[i+1]) holds x (empty intervals never do).
+            uint64_t start =
+                uint64_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin()) - 1;
+            start = std::min(start, n - 1);
+            while (start > 0 && !(cdf[start + 1] > cdf[start]))
+                --start;
+            starts[size_t(c)] = start;
+        }
+    }
     m_chains.resize(size_t(m_options.chains));
     for (int c = 0; c < m_options.chains; ++c) {
         if (c % ranks.size() != ranks.rank()) continue;  // another rank's chain
-        Rng pick(chain_start_seed(m_options.seed), uint64_t(c));
-        const double x = double(pick.next_float()) * cdf[n];
-        // The first path whose interval [cdf[i], cdf[i+1]) holds x (empty intervals never do).
-        uint64_t start = uint64_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin()) - 1;
-        start = std::min(start, n - 1);
-        while (start > 0 && !(cdf[start + 1] > cdf[start]))
-            --start;
-        auto chain =
-            std::make_unique<Chain>(bootstrap_seed(m_options.seed), start, m_options.sigma);
+        auto chain = std::make_unique<Chain>(bootstrap_seed(m_options.seed), starts[size_t(c)],
+                                             m_options.sigma);
         trace_state(chain->u, chain->current);
         chain->current_target = target(chain->current);
         chain->u.reseed(chain_value_seed(m_options.seed), uint64_t(c));

@@ -16,7 +16,8 @@
 //
 // Repeats are merged: the weights a state collects while the chain stays on it are summed and its
 // VPLs are appended once, when the chain leaves it or at the end of next(). A chain starts from a
-// bootstrap path picked in proportion to I' (as pbrt-v3), then continues on its own random stream.
+// bootstrap path picked in proportion to I' (as pbrt-v3; stratified in space: start_resampling.h),
+// then continues on its own random stream.
 // The output depends on the seed, the options and the sequence of next() sizes, never on the
 // thread count: step t of the run belongs to chain t mod C, and chains append in chain order.
 //
@@ -70,6 +71,10 @@ struct MetropolisOptions {
     // on the VPLs that light the image, not on the direct-light emitter VPL that every path has.
     // All: a state is the whole path with every VPL, the target their sum.
     VplsPerPath per_path = VplsPerPath::One;
+    // The chains' starts by systematic resampling of the bootstrap sorted along a space-filling
+    // curve of the states' VPLs, not by independent picks (start_resampling.h): every region of
+    // the scene gets its expected number of starts to within one.
+    bool stratified_starts = true;
     LightTracerOptions tracer;
     ImportanceOptions importance;
     // The ranks that share the chains (null: this process alone).

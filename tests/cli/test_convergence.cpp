@@ -10,6 +10,7 @@
 #include <map>
 #include <sstream>
 #include <string>
+#include <tuple>
 
 #include "tests/cli/run_command.h"
 #include "tools/cli/convergence_analysis.h"
@@ -147,6 +148,45 @@ TEST(ConvergenceCli, TinyRunWritesFallingCurves) {
             }
         }
     }
+    std::filesystem::remove_all(dir);
+}
+
+// With --and-ref the errors are against the references' mean, and the summary prints the
+// references' own share: for two references, relMSE(r1, r2) / 4 (two references differ by 2 Var r,
+// their mean carries Var r / 2; engine/core/reference_noise.h), which `mvpl compare` measures
+// independently. Printed to 3 significant digits: 1% agreement. A second reference of another
+// size is an input error.
+TEST(ConvergenceCli, AndRefComparesWithTheReferencesMean) {
+    const std::filesystem::path dir =
+        std::filesystem::temp_directory_path() / ("mvpl_conv2_" + std::to_string(::getpid()));
+    std::filesystem::create_directories(dir);
+    const std::string scene = MVPL_ASSETS_DIR "/cornell-box/cbox.gltf";
+    const std::string ref1 = (dir / "ref1.exr").string(), ref2 = (dir / "ref2.exr").string();
+    const std::string small = (dir / "small.exr").string();
+    for (const auto& [path, seed, res] :
+         {std::tuple{ref1, 1, "16x16"}, std::tuple{ref2, 2, "16x16"},
+          std::tuple{small, 3, "8x8"}}) {
+        ASSERT_EQ(test::run_mvpl("reference " + scene + " --res " + res + " --spp 64 --seed " +
+                                 std::to_string(seed) + " --quiet -o " + path)
+                      .exit_code,
+                  0);
+    }
+    const test::CommandResult compared = test::run_mvpl("compare " + ref1 + " " + ref2);
+    ASSERT_EQ(compared.exit_code, 0) << compared.err;
+    const double pair = std::stod(compared.out.substr(compared.out.find("relMSE ") + 7));
+    const test::CommandResult r = test::run_mvpl(
+        "convergence " + scene + " --ref " + ref1 + " --and-ref " + ref2 +
+        " --methods pt --budget 0.5 --no-plot --out " + test::shell_quote(dir.string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const size_t at = r.out.find("relMSE ≈");
+    ASSERT_NE(at, std::string::npos) << r.out;
+    const double noise = std::stod(r.out.substr(at + std::string("relMSE ≈").size()));
+    EXPECT_NEAR(noise, pair / 4.0, 0.01 * pair / 4.0) << r.out;
+    EXPECT_NE(r.out.find("relMSE_vs_truth"), std::string::npos) << r.out;
+    const test::CommandResult bad = test::run_mvpl(
+        "convergence " + scene + " --ref " + ref1 + " --and-ref " + small +
+        " --methods pt --budget 0.5 --no-plot --out " + test::shell_quote(dir.string()));
+    test::expect_one_line_error(bad, "size differs");
     std::filesystem::remove_all(dir);
 }
 

@@ -12,6 +12,7 @@
 #include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/core/reference_noise.h"
 #include "engine/gpu/context.h"
 #include "engine/render/vpl_renderer.h"
 #include "sampler/sampler_factory.h"
@@ -58,8 +59,16 @@ std::string shell_quote(const std::string& s) {
     return out + "'";
 }
 
+// `reference_noise`: the references' own share of relMSE (0 for one reference): each method's
+// last error less it is its error against the truth (engine/core/reference_noise.h).
 void print_summary(const std::vector<ConvergencePoint>& all,
-                   const std::vector<std::string>& methods) {
+                   const std::vector<std::string>& methods, double reference_noise) {
+    if (reference_noise > 0.0) {
+        std::printf(
+            "reference     the mean of several; their own share of relMSE ≈%.3g "
+            "(relMSE_vs_truth = relMSE − it)\n",
+            reference_noise);
+    }
     const std::vector<ConvergencePoint> pt = points_of(all, "pt");
     const double c_pt = inverse_time_constant(pt);
     for (const std::string& method : methods) {
@@ -69,6 +78,8 @@ void print_summary(const std::vector<ConvergencePoint>& all,
         std::printf("%-11s relMSE %.3g at %.2f s (%llu %s), mean ratio %.4f", method.c_str(),
                     last.rel_mse, last.seconds, static_cast<unsigned long long>(last.samples),
                     method == "pt" ? "spp" : "VPLs", last.mean_ratio);
+        if (reference_noise > 0.0)
+            std::printf(", relMSE_vs_truth %.3g", last.rel_mse - reference_noise);
         if (method != "pt") {
             if (c_pt > 0.0 && last.rel_mse > 0.0) {
                 const double pt_seconds = c_pt / last.rel_mse;
@@ -105,6 +116,7 @@ std::vector<std::string> checked_methods(const std::string& ref_path, float budg
 int run_convergence(const Args& args) {
     cluster::Cluster& ranks = cluster::world();
     std::string scene_path, ref_path, out_dir = "convergence";
+    std::vector<std::string> more_references;
     std::string methods_text = "pt,mc,metropolis";
     float budget = 10.0f;
     int width = 0, height = 0;
@@ -122,6 +134,10 @@ int run_convergence(const Args& args) {
         "Under mpirun, the ranks share each method's work and rank 0 writes.");
     parser.add_positional("SCENE", &scene_path, "scene file");
     parser.add_string("--ref", &ref_path, "reference image (.exr); its size is the image size");
+    parser.add_strings("--and-ref", &more_references,
+                       "another independent reference (a different seed, the same sample count): "
+                       "errors are against the references' mean, and the summary prints their "
+                       "own share of relMSE and each method's error less it (repeatable)");
     parser.add_float("--budget", &budget, "seconds per method");
     parser.add_string("--out", &out_dir, "output directory");
     add_max_depth_option(parser, settings.tracer.max_depth);
@@ -147,6 +163,7 @@ int run_convergence(const Args& args) {
     bool parsed = false;
     std::vector<std::string> methods;
     Image reference;
+    double noise = 0.0;  // the references' own share of relMSE
     std::unique_ptr<session::SceneSession> loaded;
     cluster::together(ranks, [&] {
         parsed = parser.parse(with_local_rank_device(args));
@@ -154,6 +171,17 @@ int run_convergence(const Args& args) {
         check_device("convergence", device);
         methods = checked_methods(ref_path, budget, methods_text);
         reference = read_exr(ref_path);
+        if (!more_references.empty()) {
+            std::vector<Image> references{reference};
+            for (const std::string& path : more_references) {
+                references.push_back(read_exr(path));
+                if (references.back().width() != reference.width() ||
+                    references.back().height() != reference.height())
+                    throw InputError(path, "size differs from --ref's");
+            }
+            reference = average_images(references);
+            noise = reference_noise(references);
+        }
         if (width != 0 && (width != reference.width() || height != reference.height())) {
             throw UsageError("convergence: --res " + std::to_string(width) + "x" +
                              std::to_string(height) + " differs from the reference's " +
@@ -219,7 +247,7 @@ int run_convergence(const Args& args) {
         if (!ranks.root()) return;
         const std::filesystem::path csv = std::filesystem::path(out_dir) / "convergence.csv";
         std::ofstream(csv) << to_csv(all);
-        if (!quiet) print_summary(all, methods);
+        if (!quiet) print_summary(all, methods, noise);
         if (!no_plot) {
             const std::filesystem::path png = std::filesystem::path(out_dir) / "convergence.png";
             const std::string command =
