@@ -152,27 +152,41 @@ TEST(Cli, RenderOnTheGpuMatchesTheOracle) {
         std::filesystem::remove(f);
 }
 
-// --interleave's default (0): off where the scene's specular chains are traced (assets/glossy),
-// 2 elsewhere (the Cornell box): the default images equal --interleave 1 and 2 to the bit, and
-// the glossy scene's differs from its --interleave 2 image (so the test can fail).
-TEST(Cli, InterleavingIsLeftOffWhereChainsAreTracedByDefault) {
+// --interleave's default (0): off where the scene's specular chains are traced (assets/glossy)
+// or the image has fewer than 256² pixels, 2 elsewhere (the Cornell box at 256²): the default
+// images equal --interleave 1 and 2 to the bit, and differ from the other K (so the test can
+// fail).
+TEST(Cli, InterleavingIsLeftOffWhereChainsAreTracedOrTheImageIsSmallByDefault) {
     const std::string glossy = shell_quote(std::string(MVPL_ASSETS_DIR) + "/glossy/glossy.gltf");
-    const auto image = [&](const std::string& scene, const std::string& extra,
-                           const std::string& name) {
+    const auto image = [&](const std::string& scene, const std::string& res,
+                           const std::string& extra, const std::string& name) {
         const std::string out = temp_file(name);
-        const auto r = run_gpu("render " + scene + " --vpls 32 --res 32x24 --shadow-res 32 " +
-                               "--seed 2 --no-compensate --no-caustics --quiet " + extra + " -o " +
-                               shell_quote(out));
+        const auto r = run_gpu("render " + scene + " --vpls 16 --res " + res +
+                               " --shadow-res 16 --seed 2 --no-compensate --no-caustics --quiet " +
+                               extra + " -o " + shell_quote(out));
         EXPECT_EQ(r.exit_code, 0) << r.err;
         const Image i = read_exr(out);
         std::filesystem::remove(out);
         return i;
     };
-    const Image glossy_default = image(glossy, "", "g0.exr");
-    EXPECT_EQ(compare_images(glossy_default, image(glossy, "--interleave 1", "g1.exr")).rmse, 0.0);
-    EXPECT_GT(compare_images(glossy_default, image(glossy, "--interleave 2", "g2.exr")).rmse, 0.0);
+    const Image glossy_default = image(glossy, "256x256", "", "g0.exr");
     EXPECT_EQ(
-        compare_images(image(kCbox, "", "c0.exr"), image(kCbox, "--interleave 2", "c2.exr")).rmse,
+        compare_images(glossy_default, image(glossy, "256x256", "--interleave 1", "g1.exr")).rmse,
+        0.0);
+    EXPECT_GT(
+        compare_images(glossy_default, image(glossy, "256x256", "--interleave 2", "g2.exr")).rmse,
+        0.0);
+    const Image box_default = image(kCbox, "256x256", "", "c0.exr");
+    EXPECT_EQ(compare_images(box_default, image(kCbox, "256x256", "--interleave 2", "c2.exr")).rmse,
+              0.0);
+    EXPECT_GT(compare_images(box_default, image(kCbox, "256x256", "--interleave 1", "c1.exr")).rmse,
+              0.0);
+    const Image small_default = image(kCbox, "255x256", "", "s0.exr");
+    EXPECT_EQ(
+        compare_images(small_default, image(kCbox, "255x256", "--interleave 1", "s1.exr")).rmse,
+        0.0);
+    EXPECT_GT(
+        compare_images(small_default, image(kCbox, "255x256", "--interleave 2", "s2.exr")).rmse,
         0.0);
 }
 

@@ -212,7 +212,8 @@ int run_convergence(const Args& args) {
     renderer_args.apply(render_options);
     render_options.chains.max_depth = run.max_depth;
     render_options.interleave =
-        renderer_args.interleave_for(session.scene(), render_options.chains);
+        renderer_args.interleave_for(session.scene(), render_options.chains,
+                                     uint32_t(settings.width), uint32_t(settings.height));
     render_options.batches_per_position = renderer_args.batches_per_position_for(session.scene());
     settings.specular_chains = render_options.chains;  // the Metropolis target follows them too
     run.quiet = quiet;

@@ -40,9 +40,10 @@ std::vector<float> finite_numbers(const ArgParser& parser, const std::string& op
 
 }  // namespace
 
-uint32_t RendererArgs::interleave_for(const scene::Scene& scene,
-                                      const light::ChainOptions& chains) const {
+uint32_t RendererArgs::interleave_for(const scene::Scene& scene, const light::ChainOptions& chains,
+                                      uint32_t width, uint32_t height) const {
     if (interleave > 0) return uint32_t(interleave);
+    if (uint64_t(width) * height < kInterleaveMinPixels) return 1u;
     return light::scene_may_chain(scene, chains) ? 1u : uint32_t(kDefaultInterleave);
 }
 
@@ -119,7 +120,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                     "their shadows are the sharpest)");
     parser.add_int("--interleave", &args.interleave,
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
-                   "then a geometry-aware K×K filter (1 = off; 0 = 2, or 1 where specular "
+                   "then a geometry-aware K×K filter (1 = off; 0 = 2, or 1 below 256² pixels or "
+                   "where specular "
                    "chains are traced)");
     parser.add_int("--batches-per-position", &args.batches_per_position,
                    "batches shaded at each sub-pixel position, each position's G-buffer drawn "

@@ -42,7 +42,11 @@ struct RendererArgs {
     // one-plane wall (mean +0.5 %, relMSE +24 % at equal VPL count).
     // 0 (the default): kDefaultInterleave, but 1 where the scene's specular chains are traced
     // (interleave_for): on assets/glossy at 160×120 interleaving costs chained pixels more than
-    // it saves, 1.1–1.65× the error at equal time (docs/results.md, "Interleaving with chains").
+    // it saves, 1.1–1.65× the error at equal time (docs/results.md, "Interleaving with chains");
+    // and 1 for images of fewer than kInterleaveMinPixels: there shading is a small share of a
+    // render, while the filter's K-pixel window is a large share of the image's features (on
+    // the two-room scene at 128² it blurred the lit floor patch's rim 1.5–3.5× too bright, half
+    // of the 60 s error, and K = 1 cost nothing at 8 s: docs/results.md, "Four references").
     int interleave = 0;
     // 0 (the default): render::default_batches_per_position of the scene's triangles
     // (batches_per_position_for).
@@ -54,9 +58,11 @@ struct RendererArgs {
     int ism_points = int(render::RenderOptions{}.ism_points);
     bool ism_emitters = false;
     static constexpr int kDefaultInterleave = 2;
+    static constexpr uint64_t kInterleaveMinPixels = 256 * 256;
     // The interleave for a render of `scene` with these chains: --interleave K as given, or the
     // default above.
-    uint32_t interleave_for(const scene::Scene& scene, const light::ChainOptions& chains) const;
+    uint32_t interleave_for(const scene::Scene& scene, const light::ChainOptions& chains,
+                            uint32_t width, uint32_t height) const;
     // --batches-per-position N as given, or the scene's default.
     uint32_t batches_per_position_for(const scene::Scene& scene) const;
     // The radius of the virtual spherical lights (scene diagonals), 0 with --no-vsl.

@@ -80,6 +80,7 @@ int run_preview(const Args& args) {
     o.clamp = renderer.clamp;
     renderer.apply(o.levers);
     o.interleave_auto = renderer.interleave == 0;
+    o.interleave_min_pixels = RendererArgs::kInterleaveMinPixels;
     o.batches_per_position_auto = renderer.batches_per_position == 0;
     o.hud = !no_hud;
     o.motion_scaling = !no_motion_scaling;

@@ -116,7 +116,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     ro.surface_vpls = max_depth < 0 || max_depth >= 3;  // surface VPLs light depth ≥ 3
     ro.subpixel_rotation = subpixel_rotation(s.seed);   // the seed varies the positions too
     ro.chains.max_depth = max_depth;
-    ro.interleave = a.renderer.interleave_for(session.scene(), ro.chains);
+    ro.interleave = a.renderer.interleave_for(session.scene(), ro.chains, ro.width, ro.height);
     ro.batches_per_position = a.renderer.batches_per_position_for(session.scene());
     ro.chain_seed = s.seed;
     job.settings.specular_chains = ro.chains;  // the Metropolis target follows them too

@@ -245,7 +245,9 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     ro.clamp = clamp();
     ro.chains = chain_options();
     ro.chain_seed = m_options.seed;
-    if (m_options.interleave_auto && light::scene_may_chain(m_session.scene(), ro.chains))
+    if (m_options.interleave_auto &&
+        (light::scene_may_chain(m_session.scene(), ro.chains) ||
+         uint64_t(ro.width) * ro.height < m_options.interleave_min_pixels))
         ro.interleave = 1;
     if (m_options.batches_per_position_auto)
         ro.batches_per_position =

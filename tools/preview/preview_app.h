@@ -38,9 +38,11 @@ struct PreviewOptions {
     // The renderer's levers (shadow culling, proxy, hemicubes, VPL culling, interleave, indirect
     // faces), as the command line set them; its sizes, batch, jitter and clamp are the above.
     render::RenderOptions levers;
-    // levers.interleave was the default (--interleave 0): 1 where the chains are traced, as
-    // `mvpl render` (RendererArgs::interleave_for).
+    // levers.interleave was the default (--interleave 0): 1 where the chains are traced or the
+    // image (as rendered, motion scaling included) has fewer pixels than interleave_min_pixels,
+    // as `mvpl render` (RendererArgs::interleave_for).
     bool interleave_auto = false;
+    uint64_t interleave_min_pixels = 0;
     // levers.batches_per_position was the default (--batches-per-position 0): the scene's
     // (render::default_batches_per_position), as `mvpl render`.
     bool batches_per_position_auto = false;
