@@ -169,25 +169,22 @@ TEST(Cli, InterleavingIsLeftOffWhereChainsAreTracedOrTheImageIsSmallByDefault) {
         std::filesystem::remove(out);
         return i;
     };
-    const Image glossy_default = image(glossy, "256x256", "", "g0.exr");
-    EXPECT_EQ(
-        compare_images(glossy_default, image(glossy, "256x256", "--interleave 1", "g1.exr")).rmse,
-        0.0);
-    EXPECT_GT(
-        compare_images(glossy_default, image(glossy, "256x256", "--interleave 2", "g2.exr")).rmse,
-        0.0);
-    const Image box_default = image(kCbox, "256x256", "", "c0.exr");
-    EXPECT_EQ(compare_images(box_default, image(kCbox, "256x256", "--interleave 2", "c2.exr")).rmse,
-              0.0);
-    EXPECT_GT(compare_images(box_default, image(kCbox, "256x256", "--interleave 1", "c1.exr")).rmse,
-              0.0);
-    const Image small_default = image(kCbox, "255x256", "", "s0.exr");
-    EXPECT_EQ(
-        compare_images(small_default, image(kCbox, "255x256", "--interleave 1", "s1.exr")).rmse,
-        0.0);
-    EXPECT_GT(
-        compare_images(small_default, image(kCbox, "255x256", "--interleave 2", "s2.exr")).rmse,
-        0.0);
+    // The default image equals --interleave `same` to the bit and differs from --interleave
+    // `other`.
+    const auto expect_default = [&](const std::string& scene, const std::string& res, int same,
+                                    int other) {
+        SCOPED_TRACE(scene + " at " + res);
+        const Image by_default = image(scene, res, "", "d.exr");
+        const auto rmse_against = [&](int k) {
+            const std::string flag = "--interleave " + std::to_string(k);
+            return compare_images(by_default, image(scene, res, flag, "k.exr")).rmse;
+        };
+        EXPECT_EQ(rmse_against(same), 0.0);
+        EXPECT_GT(rmse_against(other), 0.0);
+    };
+    expect_default(glossy, "256x256", 1, 2);
+    expect_default(kCbox, "256x256", 2, 1);
+    expect_default(kCbox, "255x256", 1, 2);
 }
 
 // Clamping compensation is on by default: it adds light where the clamp removed it (corners), so
