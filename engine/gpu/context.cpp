@@ -38,6 +38,8 @@ void full_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 dst_stage, VkAccess
 
 Context::Context(ContextOptions options)
     : m_log(options.validation_log ? options.validation_log : std::make_shared<ValidationLog>()) {
+    m_options = options;
+    m_options.validation_log = m_log;
     std::string validation_source;
     if (options.validation)
         validation_source = "the caller (ContextOptions::validation)";
@@ -66,6 +68,7 @@ Context::Context(ContextOptions options)
                        devices[size_t(index)].name +
                        ") is not usable: " + devices[size_t(index)].unusable_reason());
     }
+    m_options.device_index = index;
     m_device_info = devices[size_t(index)];
     m_physical_device = physical[size_t(index)];
     m_queue_family = uint32_t(m_device_info.queue_family);

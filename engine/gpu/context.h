@@ -54,6 +54,10 @@ public:
     Context& operator=(const Context&) = delete;
 
     const DeviceInfo& device_info() const { return m_device_info; }
+    // What it was made with, its validation log included: a second context made from them is
+    // another logical device on the same physical device, logging to the same place
+    // (render::VplRenderer's `devices`).
+    const ContextOptions& options() const { return m_options; }
 
     bool validation_enabled() const;
     // Whether the device was created with VK_KHR_swapchain (ContextOptions::can_present).
@@ -91,6 +95,7 @@ private:
     void destroy() noexcept;
 
     std::shared_ptr<ValidationLog> m_log;
+    ContextOptions m_options;
     std::unique_ptr<Instance> m_instance;
     DeviceInfo m_device_info;
     VkPhysicalDevice m_physical_device = nullptr;

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
+#include <mutex>
 #include <span>
 
 #include "engine/core/error.h"
@@ -10,9 +12,11 @@
 #include "engine/gpu/context.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
+#include "engine/gpu/memory.h"
 #include "engine/light/specular_chain.h"
 #include "engine/render/batch_plan.h"
 #include "engine/render/chain_layer.h"
+#include "engine/render/device_split.h"
 #include "engine/render/emission_sum.h"
 #include "engine/render/g_buffer_pass.h"
 #include "engine/render/interleave_filter.h"
@@ -94,6 +98,28 @@ struct VplRenderer::Impl {
     uint64_t shaded = 0;      // VPLs accumulated since begin()
     uint64_t position = 0;    // the sub-pixel position of the G-buffer drawn last
     std::vector<bool> drawn;  // the positions whose G-buffer (and emission) was drawn
+    // Devices 1 … n − 1 of a renderer on several (device_split.h); their begin() draws no
+    // G-buffer (position 0 is device 0's).
+    struct Partner {
+        std::unique_ptr<gpu::Context> context;
+        std::unique_ptr<VplRenderer> renderer;
+    };
+    std::vector<Partner> partners;
+    bool draws_first_position = true;
+    uint64_t group_shaded = 0;  // VPLs accumulated by all devices since begin()
+    double group_wall_ms = 0.0;
+    RenderTimings group_timings;
+
+    uint32_t devices() const { return uint32_t(partners.size()) + 1; }
+    Impl& device(uint32_t d) { return d == 0 ? *this : *partners[d - 1].renderer->m_impl; }
+    void refresh_group_timings() {
+        group_timings = timings;
+        for (const Partner& p : partners)
+            add_timings(group_timings, p.renderer->m_impl->timings);
+        group_timings.wall_ms = group_wall_ms;
+    }
+    void start(const scene::Camera& camera, const RenderOptions& options);
+    void accumulate(std::span<const light::Vpl> vpls, std::span<const uint64_t> index);
 
     // Draws the G-buffer at sub-pixel `index` and adds its emission to the sum.
     void record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index) {
@@ -198,6 +224,27 @@ VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
                          const trace::Accel* accel)
     : m_impl(std::make_unique<Impl>(context, scene, accel)) {}
 
+VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
+                         const trace::Accel* accel, uint32_t devices) {
+    if (devices == 0 || devices > kMaxRenderDevices) {
+        throw gpu::GpuError("VplRenderer: " + std::to_string(devices) + " devices, not 1.." +
+                            std::to_string(kMaxRenderDevices));
+    }
+    // Each device builds its own geometry and clusters, all at once.
+    std::vector<Impl::Partner> partners(devices - 1);
+    run_on_devices(devices, [&](uint32_t d) {
+        if (d == 0) {
+            m_impl = std::make_unique<Impl>(context, scene, accel);
+            return;
+        }
+        Impl::Partner& p = partners[d - 1];
+        p.context = std::make_unique<gpu::Context>(context.options());
+        p.renderer = std::make_unique<VplRenderer>(*p.context, scene, accel);
+        p.renderer->m_impl->draws_first_position = false;
+    });
+    m_impl->partners = std::move(partners);
+}
+
 VplRenderer::~VplRenderer() = default;
 
 Image VplRenderer::render(const light::VplSet& vpls, const RenderOptions& options,
@@ -207,7 +254,7 @@ Image VplRenderer::render(const light::VplSet& vpls, const RenderOptions& option
     accumulate(vpls.vpls);
     Image image = resolve(vpls.scale);
     if (timings) {
-        *timings = m_impl->timings;
+        *timings = this->timings();
         timings->wall_ms = milliseconds_since(start);
     }
     return image;
@@ -221,8 +268,30 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
             "VplRenderer::begin: zero width, height, batch, shadow resolution or batches per "
             "position, or interleave outside 1..8");
     }
-    const auto start = std::chrono::steady_clock::now();
     Impl& m = *m_impl;
+    if (m.partners.empty()) {
+        m.start(camera, options);
+        return;
+    }
+    const auto start = std::chrono::steady_clock::now();
+    RenderOptions shared = options;
+    if (options.on_batch) {
+        // The devices report from their own threads.
+        auto mutex = std::make_shared<std::mutex>();
+        shared.on_batch = [mutex, report = options.on_batch](size_t n) {
+            std::lock_guard<std::mutex> lock(*mutex);
+            report(n);
+        };
+    }
+    run_on_devices(m.devices(), [&](uint32_t d) { m.device(d).start(camera, shared); });
+    m.group_shaded = 0;
+    m.group_wall_ms = milliseconds_since(start);
+    m.refresh_group_timings();
+}
+
+void VplRenderer::Impl::start(const scene::Camera& camera, const RenderOptions& options) {
+    const auto start = std::chrono::steady_clock::now();
+    Impl& m = *this;
     m.prepare(options);
     m.options = options;
     m.view_camera = camera;
@@ -239,8 +308,9 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
         m.shading->record_clear(cmd);
         if (m.interleave) m.interleave->record_clear(cmd);
         m.emission->record_clear(cmd);
-        m.record_g_buffer(cmd, timer, 0);
+        if (m.draws_first_position) m.record_g_buffer(cmd, timer, 0);
     });
+    if (!m.draws_first_position) m.position = std::numeric_limits<uint64_t>::max();
     m.timings.g_buffer_ms = timer.milliseconds("g-buffer");
     m.begun = true;
     m.add_timing(start, 0.0, 0.0);
@@ -252,6 +322,28 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls) {
 
 void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const uint64_t> index) {
     Impl& m = *m_impl;
+    if (m.partners.empty()) {
+        m.accumulate(vpls, index);
+        return;
+    }
+    if (!m.begun) throw gpu::GpuError("VplRenderer::accumulate before begin");
+    if (!index.empty() && index.size() != vpls.size())
+        throw gpu::GpuError("VplRenderer::accumulate: one index per VPL");
+    if (vpls.empty()) return;
+    const auto start = std::chrono::steady_clock::now();
+    const std::vector<DeviceShare> shares =
+        split_by_position(vpls, index, m.group_shaded, subpixel_schedule(m.options), m.devices());
+    run_on_devices(m.devices(), [&](uint32_t d) {
+        if (!shares[d].vpls.empty()) m.device(d).accumulate(shares[d].vpls, shares[d].index);
+    });
+    m.group_shaded = index.empty() ? m.group_shaded + vpls.size() : index.back() + 1;
+    m.group_wall_ms += milliseconds_since(start);
+    m.refresh_group_timings();
+}
+
+void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
+                                   std::span<const uint64_t> index) {
+    Impl& m = *this;
     if (!m.begun) throw gpu::GpuError("VplRenderer::accumulate before begin");
     if (!index.empty() && index.size() != vpls.size())
         throw gpu::GpuError("VplRenderer::accumulate: one index per VPL");
@@ -344,13 +436,20 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
 }
 
 Image VplRenderer::resolve(double scale) {
-    return resolve(scale, contributions(), m_impl->shaded);
+    const Impl& m = *m_impl;
+    return resolve(scale, contributions(), m.partners.empty() ? m.shaded : m.group_shaded);
 }
 
 Image VplRenderer::contributions() const {
     const Impl& m = *m_impl;
     if (!m.begun) throw gpu::GpuError("VplRenderer::contributions before begin");
-    const std::vector<float> rgba = m.shading->accumulation().download_as<float>();
+    std::vector<float> rgba = m.shading->accumulation().download_as<float>();
+    for (const Impl::Partner& p : m.partners) {
+        const std::vector<float> more =
+            p.renderer->m_impl->shading->accumulation().download_as<float>();
+        for (size_t i = 0; i < rgba.size(); ++i)
+            rgba[i] += more[i];
+    }
     Image image(int(m.options.width), int(m.options.height));
     for (size_t i = 0; i < image.pixels().size(); ++i)
         image.pixels()[i] = Rgb(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]);
@@ -369,7 +468,12 @@ Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
     const uint64_t positions = schedule.jitter ? schedule.positions_after(vpls) : 1;
     std::vector<uint64_t> missing;
     for (uint64_t p = 0; p < positions; ++p) {
-        if (p >= m.drawn.size() || !m.drawn[size_t(p)]) missing.push_back(p);
+        bool drawn = false;
+        for (uint32_t d = 0; d < m.devices(); ++d) {
+            const std::vector<bool>& on = m.device(d).drawn;
+            drawn = drawn || (p < on.size() && on[size_t(p)]);
+        }
+        if (!drawn) missing.push_back(p);
     }
     // The chain records hold one position: a submission each where chains are traced.
     const size_t per_submission = m.chains ? 1 : std::max<size_t>(missing.size(), 1);
@@ -382,7 +486,13 @@ Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
         });
         m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
     }
-    const std::vector<float> emission = m.emission->image().download_as<float>();
+    // Each device summed the emission of the positions it drew, and counted them (alpha).
+    std::vector<float> emission = m.emission->image().download_as<float>();
+    for (const Impl::Partner& p : m.partners) {
+        const std::vector<float> more = p.renderer->m_impl->emission->image().download_as<float>();
+        for (size_t i = 0; i < emission.size(); ++i)
+            emission[i] += more[i];
+    }
     Image image(int(m.options.width), int(m.options.height));
     for (size_t i = 0; i < image.pixels().size(); ++i) {
         const Rgb a = sum.pixels()[i];
@@ -395,12 +505,27 @@ Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
                 float(scale * a.b + e[2] / count));
     }
     m.add_timing(start, 0.0, 0.0);
+    if (!m.partners.empty()) {
+        m.group_wall_ms += milliseconds_since(start);
+        m.refresh_group_timings();
+    }
     require_finite(image, "VplRenderer::resolve");
     return image;
 }
 
 const RenderTimings& VplRenderer::timings() const {
-    return m_impl->timings;
+    return m_impl->partners.empty() ? m_impl->timings : m_impl->group_timings;
+}
+
+uint32_t VplRenderer::devices() const {
+    return m_impl->devices();
+}
+
+uint64_t VplRenderer::peak_device_bytes() const {
+    uint64_t bytes = m_impl->context->allocator().peak_bytes();
+    for (const Impl::Partner& p : m_impl->partners)
+        bytes += p.context->allocator().peak_bytes();
+    return bytes;
 }
 
 const gpu::Image& VplRenderer::accumulation() const {

@@ -136,6 +136,17 @@ public:
     // (the scene's BVH: specular chains), so must the scene and the BVH.
     VplRenderer(gpu::Context& context, const scene::Scene& scene,
                 const trace::Accel* accel = nullptr);
+    // The same on `devices` logical devices (1 … kMaxRenderDevices, device_split.h): device 0 is
+    // `context`, the others are contexts made from its options, each with a renderer of its own.
+    // accumulate() hands sub-pixel position p to device p mod devices and runs the devices at
+    // once; contributions(), resolve() and timings() are their sums, and the image is the one
+    // device's (to rounding). Why: llvmpipe binds a context's geometry (vertex shading, binning:
+    // one thread) and its rasterisation one after the other, so on lavapipe one device's shadow
+    // geometry runs beside the other's rasterisation and shading (docs/results.md, "Two
+    // devices"); on several GPUs it is one device each. The preview's accessors below are
+    // device 0's alone.
+    VplRenderer(gpu::Context& context, const scene::Scene& scene, const trace::Accel* accel,
+                uint32_t devices);
     ~VplRenderer();
     VplRenderer(const VplRenderer&) = delete;
     VplRenderer& operator=(const VplRenderer&) = delete;
@@ -179,6 +190,9 @@ public:
     const gpu::Image& emission() const;
     const gpu::Image& g_buffer() const;
     gpu::Context& context() const;
+    uint32_t devices() const;
+    // The most device memory allocated at once, summed over the devices (MemoryAllocator).
+    uint64_t peak_device_bytes() const;
 
 private:
     struct Impl;

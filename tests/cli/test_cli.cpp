@@ -56,6 +56,9 @@ TEST(Cli, OutOfRangeAndRepeatedOptionsAreRefused) {
     expect_one_line_error(run_mvpl("render " + kCbox + " --interleave 9"), "--interleave");
     expect_one_line_error(run_mvpl("render " + kCbox + " --batches-per-position -1"),
                           "--batches-per-position");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --devices 9"), "--devices");
+    expect_one_line_error(run_mvpl("bench " + kCbox + " --devices -1"), "--devices");
+    expect_one_line_error(run_mvpl("preview " + kCbox + " --devices 2"), "--devices");
 }
 
 TEST(Cli, ReferenceWritesExrAndPng) {

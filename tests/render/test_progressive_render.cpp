@@ -116,6 +116,33 @@ TEST_F(ProgressiveRenderTest, GBuffersFollowThePositionsNotTheChunks) {
     EXPECT_EQ(timings.g_buffers, 1u);
 }
 
+// On two devices (VplRenderer's `devices`) the positions alternate between them and the image is
+// their sum: the one-device image, in uneven chunks, interleaved, with every position's G-buffer
+// drawn once over both (position 0 by device 0 alone: its emission counted once). A device whose
+// image were left out, or whose VPLs were shaded at another position or pixel class, would differ.
+TEST_F(ProgressiveRenderTest, TwoDevicesSumToTheOneDeviceImage) {
+    const CornellBox box;
+    RenderOptions o = small_options();
+    o.interleave = 2;
+    o.batches_per_position = 2;
+    VplRenderer one(context(), box.scene);
+    const Image expected = one.render(box.set, o);
+    VplRenderer two(context(), box.scene, nullptr, 2);
+    EXPECT_EQ(two.devices(), 2u);
+    RenderTimings timings;
+    expect_same_image(two.render(box.set, o, &timings), expected);
+    const uint32_t positions = uint32_t((box.set.vpls.size() + 15) / 16);
+    ASSERT_GE(positions, 3u);
+    EXPECT_EQ(timings.g_buffers, positions);
+    EXPECT_EQ(timings.batches, uint32_t((box.set.vpls.size() + 7) / 8));
+    two.begin(box.scene.camera, o);
+    accumulate_in_chunks(two, box.set.vpls, {5, 11, 17, box.set.vpls.size()});
+    EXPECT_EQ(two.timings().g_buffers, positions);
+    expect_same_image(two.resolve(box.set.scale), expected);
+    EXPECT_GT(two.peak_device_bytes(), one.peak_device_bytes());
+    EXPECT_THROW(VplRenderer(context(), box.scene, nullptr, 0), gpu::GpuError);
+}
+
 // Interleaved, the shares of a position's batches add up in one image that is filtered once per
 // position (and at the end of each call): two batches of 8 per position give the image of one
 // batch of 16 per position (the same positions, and a VPL's pixel class is its index mod K²),

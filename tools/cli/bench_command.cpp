@@ -312,8 +312,12 @@ int run_bench(const Args& args) {
             context_s.push_back(t.seconds());
             t.reset();
             // With the BVH: specular chains, where the scene has glossy surfaces.
+            const uint32_t devices = renderer_args.devices_for(context->device_info());
+            config.devices = int(devices);
+            for (BenchConfig& c : sweep_configs)
+                c.devices = int(devices);
             renderer = std::make_unique<render::VplRenderer>(*context, session->scene(),
-                                                             &session->accel());
+                                                             &session->accel(), devices);
             // The first begin() builds the passes: pipelines and shader compilation belong to
             // start-up, not to the throughput of later renders.
             renderer->begin(session->scene().camera, render_options(config, clamp, !no_shadows));
@@ -338,7 +342,7 @@ int run_bench(const Args& args) {
             progress.advance();
         }
         report.peak_device_bytes =
-            std::max(report.peak_device_bytes, context->allocator().peak_bytes());
+            std::max(report.peak_device_bytes, renderer->peak_device_bytes());
     }
     progress.finish();
 

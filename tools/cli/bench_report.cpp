@@ -65,6 +65,7 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"backface_culling\": " + (r.config.backface_culling ? "true" : "false") + ",\n";
     s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
     s += i + "\"batches_per_position\": " + std::to_string(r.config.batches_per_position) + ",\n";
+    s += i + "\"devices\": " + std::to_string(r.config.devices) + ",\n";
     s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
     s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
     const int indirect =
@@ -121,7 +122,8 @@ std::string bench_levers(const BenchConfig& c) {
            (c.ism ? ", ISM " + std::to_string(c.ism_resolution) + "² × " +
                         std::to_string(c.ism_points) + " points" +
                         (c.ism_emitters ? ", emitters too" : "")
-                  : ", ISM off");
+                  : ", ISM off") +
+           ", " + std::to_string(c.devices) + (c.devices == 1 ? " device" : " devices");
 }
 
 double BenchReport::paths_per_s() const {

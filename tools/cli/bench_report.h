@@ -33,6 +33,7 @@ struct BenchConfig {
     int ism_resolution = 32;    // render::RenderOptions::ism_resolution
     int ism_points = 32768;     // render::RenderOptions::ism_points
     bool ism_emitters = false;  // render::RenderOptions::ism_emitters
+    int devices = 1;            // render::VplRenderer::devices
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".

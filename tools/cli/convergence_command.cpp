@@ -235,8 +235,9 @@ int run_convergence(const Args& args) {
                 gpu::ContextOptions co;
                 co.device_index = device;
                 context = std::make_unique<gpu::Context>(co);
-                renderer = std::make_unique<render::VplRenderer>(*context, session.scene(),
-                                                                 &session.accel());
+                renderer = std::make_unique<render::VplRenderer>(
+                    *context, session.scene(), &session.accel(),
+                    renderer_args.devices_for(context->device_info()));
             });
             points = run_vpl_sampler(run, method, settings, *renderer, render_options);
         }

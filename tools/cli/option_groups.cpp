@@ -8,6 +8,7 @@
 #include "engine/core/error.h"
 #include "engine/light/specular_chain.h"
 #include "engine/render/batch_plan.h"
+#include "engine/render/device_split.h"
 
 namespace mvpl::cli {
 
@@ -50,6 +51,11 @@ uint32_t RendererArgs::interleave_for(const scene::Scene& scene, const light::Ch
 uint32_t RendererArgs::batches_per_position_for(const scene::Scene& scene) const {
     if (batches_per_position > 0) return uint32_t(batches_per_position);
     return render::default_batches_per_position(scene.triangle_count());
+}
+
+uint32_t RendererArgs::devices_for(const gpu::DeviceInfo& device) const {
+    if (devices > 0) return uint32_t(devices);
+    return device.type == gpu::DeviceType::cpu ? 2u : 1u;
 }
 
 void RendererArgs::apply(render::RenderOptions& o) const {
@@ -127,6 +133,10 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                    "batches shaded at each sub-pixel position, each position's G-buffer drawn "
                    "once (0 = one per 65536 scene triangles, from 2 to 8: heavy scenes draw "
                    "fewer G-buffers)");
+    parser.add_int("--devices", &args.devices,
+                   "logical Vulkan devices that shade the sub-pixel positions in turn, all at "
+                   "once (0 = 2 on a CPU device such as lavapipe, where one's shadow geometry "
+                   "runs beside the other's rasterisation; 1 on a GPU)");
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     parser.add_float("--chain-roughness", &args.chain_roughness,
@@ -158,6 +168,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
             out_of_range(parser, "--interleave", "0..8");
         if (args.batches_per_position < 0 || args.batches_per_position > 1024)
             out_of_range(parser, "--batches-per-position", "0..1024");
+        if (args.devices < 0 || args.devices > int(render::kMaxRenderDevices))
+            out_of_range(parser, "--devices", "0.." + std::to_string(render::kMaxRenderDevices));
         if (args.chain_samples < 1 || args.chain_samples > 64)
             out_of_range(parser, "--chain-samples", "1..64");
     });

@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/gpu/device_info.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/scene_loader.h"
@@ -17,7 +18,7 @@ namespace mvpl::cli {
 
 // --shadow-res, --batch, --clamp, --vsl-radius, --no-vsl, --no-jitter, --no-shadow-culling,
 // --no-shadow-proxy, --no-hemicube, --no-vpl-culling, --interleave, --indirect-shadow-res, --ism,
-// --ism-res, --ism-points, --ism-emitters: the GPU
+// --ism-res, --ism-points, --ism-emitters, --devices: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
@@ -57,6 +58,8 @@ struct RendererArgs {
     int ism_res = int(render::RenderOptions{}.ism_resolution);
     int ism_points = int(render::RenderOptions{}.ism_points);
     bool ism_emitters = false;
+    // 0 (the default): devices_for's choice.
+    int devices = 0;
     static constexpr int kDefaultInterleave = 2;
     static constexpr uint64_t kInterleaveMinPixels = 256 * 256;
     // The interleave for a render of `scene` with these chains: --interleave K as given, or the
@@ -65,6 +68,10 @@ struct RendererArgs {
                             uint32_t width, uint32_t height) const;
     // --batches-per-position N as given, or the scene's default.
     uint32_t batches_per_position_for(const scene::Scene& scene) const;
+    // --devices N as given, or 2 on a CPU implementation (lavapipe), where one device's shadow
+    // geometry runs beside the other's rasterisation and shading (render::VplRenderer's
+    // `devices`; docs/results.md, "Two devices"), and 1 on a GPU, which overlaps its own work.
+    uint32_t devices_for(const gpu::DeviceInfo& device) const;
     // The radius of the virtual spherical lights (scene diagonals), 0 with --no-vsl.
     float vsl() const { return no_vsl ? 0.0f : vsl_radius; }
 

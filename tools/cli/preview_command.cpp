@@ -67,6 +67,8 @@ int run_preview(const Args& args) {
         throw UsageError("preview: --res must be in 16..8192 on each side");
     if (!(budget > 0.0f && budget <= 10000.0f))
         throw UsageError("preview: --budget-ms must be in (0, 10000]");
+    // The window presents one device's accumulation and G-buffer (preview_app.h).
+    if (renderer.devices > 1) throw UsageError("preview: --devices must be 0 or 1");
     if (!o.screenshot.empty()) {
         if (o.frames == 0) throw UsageError("preview: --screenshot needs --frames N");
         check_outputs({o.screenshot});

@@ -193,8 +193,9 @@ int run_render(const Args& args) {
             gpu::ContextOptions co;
             co.device_index = a.device;
             context = std::make_unique<gpu::Context>(co);
-            renderer = std::make_unique<render::VplRenderer>(*context, session->scene(),
-                                                             &session->accel());
+            renderer = std::make_unique<render::VplRenderer>(
+                *context, session->scene(), &session->accel(),
+                a.renderer.devices_for(context->device_info()));
         }
     });
     if (!parsed) return 0;

@@ -1,0 +1,65 @@
+#include "engine/render/device_split.h"
+
+#include <algorithm>
+#include <exception>
+#include <thread>
+
+namespace mvpl::render {
+
+std::vector<DeviceShare> split_by_position(std::span<const light::Vpl> vpls,
+                                           std::span<const uint64_t> index, uint64_t first,
+                                           const SubpixelSchedule& schedule, uint32_t devices) {
+    std::vector<DeviceShare> shares(std::max<uint32_t>(devices, 1));
+    const uint64_t block = std::max<uint64_t>(schedule.vpls_per_position, 1);
+    for (size_t i = 0; i < vpls.size(); ++i) {
+        const uint64_t k = index.empty() ? first + i : index[i];
+        DeviceShare& share = shares[size_t((k / block) % shares.size())];
+        share.vpls.push_back(vpls[i]);
+        share.index.push_back(k);
+    }
+    return shares;
+}
+
+void add_timings(RenderTimings& sum, const RenderTimings& t) {
+    sum.g_buffer_ms += t.g_buffer_ms;
+    sum.shadow_ms += t.shadow_ms;
+    sum.shading_ms += t.shading_ms;
+    sum.total_ms += t.total_ms;
+    sum.wall_ms += t.wall_ms;
+    sum.batches += t.batches;
+    sum.shadow_triangles += t.shadow_triangles;
+    sum.shadow_front_only_triangles += t.shadow_front_only_triangles;
+    sum.g_buffer_front_only_triangles += t.g_buffer_front_only_triangles;
+    sum.shadow_texels += t.shadow_texels;
+    sum.culled_vpls += t.culled_vpls;
+    sum.ism_vpls += t.ism_vpls;
+    sum.g_buffers += t.g_buffers;
+    sum.chain_ms += t.chain_ms;
+    sum.chain_rays += t.chain_rays;
+}
+
+void run_on_devices(uint32_t devices, const std::function<void(uint32_t)>& work) {
+    std::vector<std::exception_ptr> errors(std::max<uint32_t>(devices, 1));
+    std::vector<std::thread> threads;
+    for (uint32_t d = 1; d < devices; ++d) {
+        threads.emplace_back([&, d] {
+            try {
+                work(d);
+            } catch (...) {
+                errors[d] = std::current_exception();
+            }
+        });
+    }
+    try {
+        work(0);
+    } catch (...) {
+        errors[0] = std::current_exception();
+    }
+    for (std::thread& t : threads)
+        t.join();
+    for (const std::exception_ptr& e : errors) {
+        if (e) std::rethrow_exception(e);
+    }
+}
+
+}  // namespace mvpl::render
