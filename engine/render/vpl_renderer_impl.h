@@ -1,0 +1,106 @@
+#pragma once
+// VplRenderer's state on one device (vpl_renderer.h's pimpl): its passes, its progressive state
+// and, on device 0 of a renderer on several, the other devices. vpl_renderer_impl.cpp drives one
+// device's passes; vpl_renderer.cpp is the public interface and shares the VPLs out among the
+// devices (device_split.h). Private to engine/render.
+#include <chrono>
+#include <cstdint>
+#include <memory>
+#include <span>
+#include <vector>
+
+#include "engine/gpu/context.h"
+#include "engine/render/chain_layer.h"
+#include "engine/render/device_split.h"
+#include "engine/render/emission_sum.h"
+#include "engine/render/g_buffer_pass.h"
+#include "engine/render/interleave_filter.h"
+#include "engine/render/scene_geometry.h"
+#include "engine/render/shading_pass.h"
+#include "engine/render/shadow_clusters.h"
+#include "engine/render/shadow_pass.h"
+#include "engine/render/vpl_culling.h"
+#include "engine/render/vpl_renderer.h"
+
+namespace mvpl::gpu {
+class CommandList;
+class GpuTimer;
+}  // namespace mvpl::gpu
+
+namespace mvpl::render {
+
+double milliseconds_since(std::chrono::steady_clock::time_point start);
+
+struct VplRenderer::Impl {
+    Impl(gpu::Context& c, const scene::Scene& s, const trace::Accel* a)
+        : context(&c),
+          scene(&s),
+          accel(a),
+          camera(s.camera),
+          geometry(c, s),
+          clusters(s),
+          culling(s) {}
+
+    gpu::Context* context;
+    const scene::Scene* scene;
+    const trace::Accel* accel;  // null: no specular chains
+    scene::Camera camera;
+    SceneGeometry geometry;
+    ShadowClusters clusters;  // with the large meshes' levels of detail
+    VplCulling culling;
+    // Passes are kept between renders with the same sizes (pipelines compile in ~100 ms).
+    std::unique_ptr<GBufferPass> g_buffer;
+    std::unique_ptr<EmissionSum> emission;
+    std::unique_ptr<ShadowPass> shadow;
+    std::unique_ptr<ShadingPass> shading;
+    std::unique_ptr<ChainLayer> chains;  // null unless the options and the scene ask for chains
+    std::unique_ptr<InterleaveFilter> interleave;  // null without interleaved sampling
+    RenderOptions built_for = unbuilt();
+    // The progressive state: what begin() set up.
+    RenderOptions options;
+    scene::Camera view_camera;
+    RenderTimings timings;
+    bool begun = false;
+    uint64_t shaded = 0;      // VPLs accumulated since begin()
+    uint64_t position = 0;    // the sub-pixel position of the G-buffer drawn last
+    std::vector<bool> drawn;  // the positions whose G-buffer (and emission) was drawn
+    // Devices 1 … n − 1 of a renderer on several (device_split.h); their begin() draws no
+    // G-buffer (position 0 is device 0's).
+    struct Partner {
+        std::unique_ptr<gpu::Context> context;
+        std::unique_ptr<VplRenderer> renderer;
+    };
+    std::vector<Partner> partners;
+    bool draws_first_position = true;
+    uint64_t group_shaded = 0;  // VPLs accumulated by all devices since begin()
+    double group_wall_ms = 0.0;
+    RenderTimings group_timings;
+
+    uint32_t devices() const { return uint32_t(partners.size()) + 1; }
+    Impl& device(uint32_t d) { return d == 0 ? *this : *partners[d - 1].renderer->m_impl; }
+    void refresh_group_timings() {
+        group_timings = timings;
+        for (const Partner& p : partners)
+            add_timings(group_timings, p.renderer->m_impl->timings);
+        group_timings.wall_ms = group_wall_ms;
+    }
+    void start(const scene::Camera& camera, const RenderOptions& options);
+    void accumulate(std::span<const light::Vpl> vpls, std::span<const uint64_t> index);
+
+    // Draws the G-buffer at sub-pixel `index` and adds its emission to the sum.
+    void record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index);
+
+    void add_timing(std::chrono::steady_clock::time_point start, double shadow_ms,
+                    double shading_ms);
+
+    static RenderOptions unbuilt() {
+        RenderOptions o;
+        o.width = o.height = o.shadow_resolution = o.batch = 0;
+        return o;
+    }
+
+    // Builds the passes these options need, keeping those that still fit.
+    void prepare(const RenderOptions& o);
+};
+
+}  // namespace mvpl::render
