@@ -58,15 +58,18 @@ MemoryEstimate estimate_memory(const RenderOptions& o) {
 }
 
 std::string memory_shortfall(const RenderOptions& o, const gpu::DeviceInfo& device,
-                             uint64_t host_bytes) {
+                             uint64_t host_bytes, uint32_t devices) {
     MemoryEstimate e = estimate_memory(o);
+    e.device_bytes *= devices;
+    e.host_bytes *= devices;
     uint64_t heap = 0;
     for (const gpu::MemoryHeapInfo& h : device.heaps) {
         if (h.device_local) heap = std::max(heap, h.size);
     }
     char what[160];
-    std::snprintf(what, sizeof what, "a %ux%u image with %u² shadow faces and %u VPLs a batch",
-                  o.width, o.height, o.shadow_resolution, o.batch);
+    std::snprintf(what, sizeof what, "a %ux%u image with %u² shadow faces and %u VPLs a batch%s",
+                  o.width, o.height, o.shadow_resolution, o.batch,
+                  devices > 1 ? (" on " + std::to_string(devices) + " devices").c_str() : "");
     uint64_t max_allocation = device.limits.max_memory_allocation_size;
     if (device.type == gpu::DeviceType::cpu) {
         // A CPU device's memory is the host's: lavapipe reports a 2 GiB heap and allocation limit

@@ -51,5 +51,16 @@ TEST(RenderMemory, ADiscreteHeapRefusesACpuDeviceDefersToTheHost) {
         "");
 }
 
+// Logical devices on one physical device (VplRenderer's `devices`) each hold every image: what
+// fits once may not fit twice.
+TEST(RenderMemory, DevicesMultiplyTheEstimate) {
+    const RenderOptions big = options(4096);
+    const uint64_t once = estimate_memory(big).device_bytes + estimate_memory(big).host_bytes;
+    const gpu::DeviceInfo cpu = device(gpu::DeviceType::cpu, 2 * kGiB);
+    EXPECT_EQ(memory_shortfall(big, cpu, once + kGiB, 1), "");
+    const std::string twice = memory_shortfall(big, cpu, once + kGiB, 2);
+    EXPECT_NE(twice.find("32 VPLs a batch on 2 devices needs about"), std::string::npos) << twice;
+}
+
 }  // namespace
 }  // namespace mvpl::render
