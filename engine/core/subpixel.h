@@ -78,6 +78,8 @@ struct SubpixelSchedule {
     }
     // The positions drawn once `vpls` VPLs were shaded: at least one (the image's first), which
     // the emitted radiance seen directly is averaged over.
+    // The index of position p's first VPL.
+    uint64_t first_of(uint64_t p) const { return jitter ? p * vpls_per_position : 0; }
     uint64_t positions_after(uint64_t vpls) const {
         return vpls == 0 ? 1 : position_of(vpls - 1) + 1;
     }

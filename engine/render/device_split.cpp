@@ -6,14 +6,19 @@
 
 namespace mvpl::render {
 
-std::vector<DeviceShare> split_by_position(std::span<const light::Vpl> vpls,
-                                           std::span<const uint64_t> index, uint64_t first,
-                                           const SubpixelSchedule& schedule, uint32_t devices) {
+std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
+                                         std::span<const uint64_t> index, uint64_t first,
+                                         uint64_t batch, uint32_t devices) {
     std::vector<DeviceShare> shares(std::max<uint32_t>(devices, 1));
-    const uint64_t block = std::max<uint64_t>(schedule.vpls_per_position, 1);
+    if (vpls.empty()) return shares;
+    const uint64_t b = std::max<uint64_t>(batch, 1);
+    auto index_of = [&](size_t i) { return index.empty() ? first + i : index[i]; };
+    const uint64_t first_batch = index_of(0) / b;
+    const uint64_t batches = index_of(vpls.size() - 1) / b - first_batch + 1;
     for (size_t i = 0; i < vpls.size(); ++i) {
-        const uint64_t k = index.empty() ? first + i : index[i];
-        DeviceShare& share = shares[size_t((k / block) % shares.size())];
+        const uint64_t k = index_of(i);
+        // Batch j of the call goes to device ⌊j·n / batches⌋: runs in order, lengths within one.
+        DeviceShare& share = shares[size_t((k / b - first_batch) * shares.size() / batches)];
         share.vpls.push_back(vpls[i]);
         share.index.push_back(k);
     }

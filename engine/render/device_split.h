@@ -1,16 +1,19 @@
 #pragma once
 // One image rendered on several Vulkan devices (VplRenderer's `devices`): which VPLs each device
-// shades, how their timings add up, and running the devices at once. Sub-pixel position p goes
-// to device p mod n, so a position's G-buffer, its batches and its interleaving filter stay on
-// one device; each VPL keeps its index since begin(), which decides its position and, where
-// interleaved, its pixels, so that the devices' images sum to the one-device image.
-// Vulkan-free.
+// shades, how their timings add up, and running the devices at once. Each accumulate() call's
+// batches are cut into one contiguous run per device, of nearly equal length, so that every
+// call keeps every device busy (a 0.5 s chunk of a --time-budget render on a heavy scene holds a
+// few batches, fewer than the positions a split by position would need). Each VPL keeps its index
+// since begin(), which decides its sub-pixel position and, where interleaved, its pixels; a
+// device draws the G-buffer of each position it shades (one more than one device would at each
+// run's start), and the interleaving filter, being linear, may run on each device's share of a
+// position: the devices' images sum to the one-device image. The emission seen directly is added
+// by the device that shades a position's first VPL (vpl_renderer_impl.cpp). Vulkan-free.
 #include <cstdint>
 #include <functional>
 #include <span>
 #include <vector>
 
-#include "engine/core/subpixel.h"
 #include "engine/light/vpl.h"
 #include "engine/render/vpl_renderer.h"
 
@@ -25,11 +28,11 @@ struct DeviceShare {
 };
 
 // `vpls` are VPLs first … first + size − 1 since begin() when `index` is empty, else VPL i has
-// index[i] (increasing). Positions are counted in blocks of schedule.vpls_per_position also
-// without jitter (one G-buffer then, drawn by every device, the same one).
-std::vector<DeviceShare> split_by_position(std::span<const light::Vpl> vpls,
-                                           std::span<const uint64_t> index, uint64_t first,
-                                           const SubpixelSchedule& schedule, uint32_t devices);
+// index[i] (increasing). The batches they fall in (index / batch) are dealt out as `devices`
+// contiguous runs of nearly equal length, in order; a device may get none.
+std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
+                                         std::span<const uint64_t> index, uint64_t first,
+                                         uint64_t batch, uint32_t devices);
 
 // sum += t, every count and GPU time (wall_ms too: the caller sets the group's own).
 void add_timings(RenderTimings& sum, const RenderTimings& t);

@@ -25,13 +25,16 @@ VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
                          const trace::Accel* accel)
     : m_impl(std::make_unique<Impl>(context, scene, accel)) {}
 
+VplRenderer::VplRenderer(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
+
 VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
                          const trace::Accel* accel, uint32_t devices) {
     if (devices == 0 || devices > kMaxRenderDevices) {
         throw gpu::GpuError("VplRenderer: " + std::to_string(devices) + " devices, not 1.." +
                             std::to_string(kMaxRenderDevices));
     }
-    // Each device builds its own geometry and clusters, all at once.
+    // Each device uploads its own geometry, all at once, while device 0 builds the shadow
+    // clusters (the levels of detail: most of the start-up on a large mesh) that all share.
     std::vector<Impl::Partner> partners(devices - 1);
     run_on_devices(devices, [&](uint32_t d) {
         if (d == 0) {
@@ -40,9 +43,12 @@ VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
         }
         Impl::Partner& p = partners[d - 1];
         p.context = std::make_unique<gpu::Context>(context.options());
-        p.renderer = std::make_unique<VplRenderer>(*p.context, scene, accel);
+        p.renderer = std::unique_ptr<VplRenderer>(
+            new VplRenderer(std::make_unique<Impl>(*p.context, scene, accel, false)));
         p.renderer->m_impl->draws_first_position = false;
     });
+    for (Impl::Partner& p : partners)
+        p.renderer->m_impl->clusters = m_impl->clusters;
     m_impl->partners = std::move(partners);
 }
 
@@ -106,7 +112,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
     if (vpls.empty()) return;
     const auto start = std::chrono::steady_clock::now();
     const std::vector<DeviceShare> shares =
-        split_by_position(vpls, index, m.group_shaded, subpixel_schedule(m.options), m.devices());
+        split_into_runs(vpls, index, m.group_shaded, m.options.batch, m.devices());
     run_on_devices(m.devices(), [&](uint32_t d) {
         if (!shares[d].vpls.empty()) m.device(d).accumulate(shares[d].vpls, shares[d].index);
     });

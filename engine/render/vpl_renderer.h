@@ -138,13 +138,13 @@ public:
                 const trace::Accel* accel = nullptr);
     // The same on `devices` logical devices (1 … kMaxRenderDevices, device_split.h): device 0 is
     // `context`, the others are contexts made from its options, each with a renderer of its own.
-    // accumulate() hands sub-pixel position p to device p mod devices and runs the devices at
+    // accumulate() cuts each call's batches into one run per device and runs the devices at
     // once; contributions(), resolve() and timings() are their sums, and the image is the one
-    // device's (to rounding). Why: llvmpipe binds a context's geometry (vertex shading, binning:
-    // one thread) and its rasterisation one after the other, so on lavapipe one device's shadow
-    // geometry runs beside the other's rasterisation and shading (docs/results.md, "Two
-    // devices"); on several GPUs it is one device each. The preview's accessors below are
-    // device 0's alone.
+    // device's (to rounding). Why: llvmpipe rasterises a context's triangles only after it has
+    // shaded and binned all of them on one thread, and waits for it, so on lavapipe one
+    // device's shadow geometry runs beside the other's rasterisation and shading
+    // (docs/results.md, "Two devices"); on several GPUs it is one device each. The preview's
+    // accessors below are device 0's alone.
     VplRenderer(gpu::Context& context, const scene::Scene& scene, const trace::Accel* accel,
                 uint32_t devices);
     ~VplRenderer();
@@ -196,6 +196,7 @@ public:
 
 private:
     struct Impl;
+    explicit VplRenderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m_impl;
 };
 

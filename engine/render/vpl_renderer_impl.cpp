@@ -44,8 +44,8 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
         .count();
 }
 
-void VplRenderer::Impl::record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer,
-                                        uint64_t index) {
+void VplRenderer::Impl::record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index,
+                                        bool add_emission) {
     const uint32_t scope = timer.begin(cmd, "g-buffer");
     const Vec2 offset = subpixel_schedule(options).position(index);
     const uint64_t front_only = g_buffer->front_only_triangles();
@@ -60,12 +60,14 @@ void VplRenderer::Impl::record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& ti
         timings.chain_rays += chains->rays() - rays;
     }
     cmd.barrier();
-    emission->record_add(cmd, g_buffer->image(), chains ? &chains->records() : nullptr);
+    if (add_emission) {
+        emission->record_add(cmd, g_buffer->image(), chains ? &chains->records() : nullptr);
+        cmd.barrier();
+        if (drawn.size() <= index) drawn.resize(size_t(index) + 1, false);
+        drawn[size_t(index)] = true;
+    }
     timer.end(cmd, scope);
-    cmd.barrier();
     position = index;
-    if (drawn.size() <= index) drawn.resize(size_t(index) + 1, false);
-    drawn[size_t(index)] = true;
     ++timings.g_buffers;
 }
 
@@ -108,7 +110,7 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
         so.ism_resolution = o.ism ? o.ism_resolution : 0;
         so.ism_points = o.ism_points;
         so.ism_emitters = o.ism_emitters;
-        shadow = std::make_unique<ShadowPass>(*context, geometry, clusters, so);
+        shadow = std::make_unique<ShadowPass>(*context, geometry, *clusters, so);
         shading.reset();
     }
     if (o.surface_vpls != built_for.surface_vpls) shading.reset();
@@ -171,6 +173,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
     if (vpls.empty()) return;
     const auto start = std::chrono::steady_clock::now();
     const RenderOptions& options = m.options;
+    const SubpixelSchedule schedule = subpixel_schedule(options);
     const uint64_t shaded_before = m.shaded;
     const std::vector<Slice> slices = plan_batches(vpls.size(), shaded_before, options, index);
     gpu::GpuTimer timer(*m.context, 3 * uint32_t(slices.size()));
@@ -228,7 +231,12 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
             batch.interleaved = &m.interleave->shaded();
         }
         m.context->submit_and_wait([&](gpu::CommandList& cmd) {
-            if (s.position != m.position) m.record_g_buffer(cmd, timer, s.position);
+            if (s.position != m.position) {
+                // The emission of a position is added once, by whoever shades its first VPL:
+                // over devices or ranks others may draw its G-buffer too (device_split.h).
+                const uint64_t k = index.empty() ? shaded_before + s.first : index[s.first];
+                m.record_g_buffer(cmd, timer, s.position, k == schedule.first_of(s.position));
+            }
             if (options.shadows) {
                 const uint32_t scope = timer.begin(cmd, "shadow");
                 m.shadow->record(cmd, slice, skip);

@@ -32,13 +32,15 @@ namespace mvpl::render {
 double milliseconds_since(std::chrono::steady_clock::time_point start);
 
 struct VplRenderer::Impl {
-    Impl(gpu::Context& c, const scene::Scene& s, const trace::Accel* a)
+    // Without `build_clusters` the caller hands the clusters over before the first begin()
+    // (the devices of one renderer share device 0's: they are read only).
+    Impl(gpu::Context& c, const scene::Scene& s, const trace::Accel* a, bool build_clusters = true)
         : context(&c),
           scene(&s),
           accel(a),
           camera(s.camera),
           geometry(c, s),
-          clusters(s),
+          clusters(build_clusters ? std::make_shared<const ShadowClusters>(s) : nullptr),
           culling(s) {}
 
     gpu::Context* context;
@@ -46,7 +48,7 @@ struct VplRenderer::Impl {
     const trace::Accel* accel;  // null: no specular chains
     scene::Camera camera;
     SceneGeometry geometry;
-    ShadowClusters clusters;  // with the large meshes' levels of detail
+    std::shared_ptr<const ShadowClusters> clusters;  // with the large meshes' levels of detail
     VplCulling culling;
     // Passes are kept between renders with the same sizes (pipelines compile in ~100 ms).
     std::unique_ptr<GBufferPass> g_buffer;
@@ -63,7 +65,7 @@ struct VplRenderer::Impl {
     bool begun = false;
     uint64_t shaded = 0;      // VPLs accumulated since begin()
     uint64_t position = 0;    // the sub-pixel position of the G-buffer drawn last
-    std::vector<bool> drawn;  // the positions whose G-buffer (and emission) was drawn
+    std::vector<bool> drawn;  // the positions whose emission this device added
     // Devices 1 … n − 1 of a renderer on several (device_split.h); their begin() draws no
     // G-buffer (position 0 is device 0's).
     struct Partner {
@@ -87,8 +89,10 @@ struct VplRenderer::Impl {
     void start(const scene::Camera& camera, const RenderOptions& options);
     void accumulate(std::span<const light::Vpl> vpls, std::span<const uint64_t> index);
 
-    // Draws the G-buffer at sub-pixel `index` and adds its emission to the sum.
-    void record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index);
+    // Draws the G-buffer at sub-pixel `index` and, with add_emission, adds its emission to the
+    // sum (and marks the position drawn).
+    void record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& timer, uint64_t index,
+                         bool add_emission = true);
 
     void add_timing(std::chrono::steady_clock::time_point start, double shadow_ms,
                     double shading_ms);

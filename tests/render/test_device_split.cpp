@@ -2,6 +2,7 @@
 // (engine/render/device_split.h), without a device.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <stdexcept>
 #include <thread>
@@ -19,46 +20,51 @@ std::vector<light::Vpl> numbered(size_t n) {
     return vpls;
 }
 
-// Called for VPLs 3 … 42 since begin(), 8 a position: VPL k on device (k / 8) mod n, with its
-// index, in order, and every VPL on exactly one device.
-TEST(SplitByPosition, PositionsTakeTurnsAcrossTheDevices) {
+// VPLs 3 … 42 since begin() in batches of 8 (batches 0 … 5 of the call: 3–7 is batch 0): each
+// device gets a contiguous run of whole batches, in order, the runs' lengths within one batch of
+// each other, every VPL on exactly one device with its index.
+TEST(SplitIntoRuns, EachDeviceGetsAContiguousRunOfBatches) {
     const std::vector<light::Vpl> vpls = numbered(40);
-    const SubpixelSchedule schedule{true, 8, Vec2(0.0f)};
-    for (const uint32_t devices : {1u, 2u, 3u}) {
-        const std::vector<DeviceShare> shares = split_by_position(vpls, {}, 3, schedule, devices);
+    for (const uint32_t devices : {1u, 2u, 3u, 4u, 8u}) {
+        SCOPED_TRACE(devices);
+        const std::vector<DeviceShare> shares = split_into_runs(vpls, {}, 3, 8, devices);
         ASSERT_EQ(shares.size(), devices);
         size_t total = 0;
-        for (uint32_t d = 0; d < devices; ++d) {
-            const DeviceShare& s = shares[d];
+        uint64_t next = 3;
+        size_t shortest = 99, longest = 0;
+        for (const DeviceShare& s : shares) {
             ASSERT_EQ(s.vpls.size(), s.index.size());
             total += s.vpls.size();
             for (size_t i = 0; i < s.vpls.size(); ++i) {
                 EXPECT_EQ(uint64_t(s.vpls[i].power.r) + 3, s.index[i]);
-                EXPECT_EQ((s.index[i] / 8) % devices, d);
-                if (i > 0) {
-                    EXPECT_LT(s.index[i - 1], s.index[i]);
-                }
+                EXPECT_EQ(s.index[i], next++);  // in order, no gaps: contiguous runs
             }
+            if (!s.index.empty()) {
+                // Runs start and end at batch boundaries (or the call's ends).
+                EXPECT_TRUE(s.index.front() == 3 || s.index.front() % 8 == 0);
+                EXPECT_TRUE(s.index.back() == 42 || s.index.back() % 8 == 7);
+            }
+            const size_t batches =
+                s.index.empty() ? 0 : size_t(s.index.back() / 8 - s.index.front() / 8 + 1);
+            shortest = std::min(shortest, batches);
+            longest = std::max(longest, batches);
         }
         EXPECT_EQ(total, vpls.size());
+        // Six batches: 6 / n each, within one (8 devices: six get one, two get none).
+        EXPECT_LE(longest - shortest, 1u);
     }
-    // Without jitter the blocks still alternate (each device then draws the one G-buffer).
-    const std::vector<DeviceShare> flat =
-        split_by_position(vpls, {}, 0, SubpixelSchedule{false, 8, Vec2(0.0f)}, 2);
-    EXPECT_EQ(flat[0].vpls.size(), 24u);
-    EXPECT_EQ(flat[1].vpls.size(), 16u);
 }
 
-// A rank's share names its VPLs' indices: they, not the order, decide the device.
-TEST(SplitByPosition, GivenIndicesDecideTheDevice) {
+// A rank's share names its VPLs' indices: they, not the order, decide the batches.
+TEST(SplitIntoRuns, GivenIndicesDecideTheBatches) {
     const std::vector<light::Vpl> vpls = numbered(5);
     const std::vector<uint64_t> index{0, 7, 8, 23, 40};
-    const std::vector<DeviceShare> shares =
-        split_by_position(vpls, index, 1000, SubpixelSchedule{true, 8, Vec2(0.0f)}, 2);
-    // Positions 0, 0, 1, 2, 5.
-    EXPECT_EQ(shares[0].index, (std::vector<uint64_t>{0, 7, 23}));
-    EXPECT_EQ(shares[1].index, (std::vector<uint64_t>{8, 40}));
-    EXPECT_EQ(shares[1].vpls[1].power.r, 4.0f);
+    // Batches 0, 0, 1, 2, 5 of 0 … 5: the first half (0–2) and the second (3–5).
+    const std::vector<DeviceShare> shares = split_into_runs(vpls, index, 1000, 8, 2);
+    EXPECT_EQ(shares[0].index, (std::vector<uint64_t>{0, 7, 8, 23}));
+    EXPECT_EQ(shares[1].index, (std::vector<uint64_t>{40}));
+    EXPECT_EQ(shares[1].vpls[0].power.r, 4.0f);
+    EXPECT_TRUE(split_into_runs({}, {}, 0, 8, 2)[1].vpls.empty());
 }
 
 // Every device's work runs, device 0's on the caller's thread, and an error of one device comes

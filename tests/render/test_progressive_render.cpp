@@ -116,10 +116,11 @@ TEST_F(ProgressiveRenderTest, GBuffersFollowThePositionsNotTheChunks) {
     EXPECT_EQ(timings.g_buffers, 1u);
 }
 
-// On two devices (VplRenderer's `devices`) the positions alternate between them and the image is
-// their sum: the one-device image, in uneven chunks, interleaved, with every position's G-buffer
-// drawn once over both (position 0 by device 0 alone: its emission counted once). A device whose
-// image were left out, or whose VPLs were shaded at another position or pixel class, would differ.
+// On two devices (VplRenderer's `devices`) each call's batches are cut into two runs and the
+// image is the devices' sum: the one-device image, in uneven chunks, interleaved (a position's
+// batches filtered on each device), with each position's emission added once. A device whose
+// image were left out, whose VPLs were shaded at another position or pixel class, or a position
+// whose emission were added twice (it is drawn by both devices where a run starts), would differ.
 TEST_F(ProgressiveRenderTest, TwoDevicesSumToTheOneDeviceImage) {
     const CornellBox box;
     RenderOptions o = small_options();
@@ -133,11 +134,13 @@ TEST_F(ProgressiveRenderTest, TwoDevicesSumToTheOneDeviceImage) {
     expect_same_image(two.render(box.set, o, &timings), expected);
     const uint32_t positions = uint32_t((box.set.vpls.size() + 15) / 16);
     ASSERT_GE(positions, 3u);
-    EXPECT_EQ(timings.g_buffers, positions);
+    // One call: device 1's run may start inside a position that device 0 drew too.
+    EXPECT_GE(timings.g_buffers, positions);
+    EXPECT_LE(timings.g_buffers, positions + 1);
     EXPECT_EQ(timings.batches, uint32_t((box.set.vpls.size() + 7) / 8));
     two.begin(box.scene.camera, o);
     accumulate_in_chunks(two, box.set.vpls, {5, 11, 17, box.set.vpls.size()});
-    EXPECT_EQ(two.timings().g_buffers, positions);
+    EXPECT_GE(two.timings().g_buffers, positions);
     expect_same_image(two.resolve(box.set.scale), expected);
     EXPECT_GT(two.peak_device_bytes(), one.peak_device_bytes());
     EXPECT_THROW(VplRenderer(context(), box.scene, nullptr, 0), gpu::GpuError);

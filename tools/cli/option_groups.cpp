@@ -134,7 +134,7 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                    "once (0 = one per 65536 scene triangles, from 2 to 8: heavy scenes draw "
                    "fewer G-buffers)");
     parser.add_int("--devices", &args.devices,
-                   "logical Vulkan devices that shade the sub-pixel positions in turn, all at "
+                   "logical Vulkan devices that shade a run of every chunk's batches each, all at "
                    "once (0 = 2 on a CPU device such as lavapipe, where one's shadow geometry "
                    "runs beside the other's rasterisation; 1 on a GPU)");
     parser.add_flag("--no-jitter", &args.no_jitter,
