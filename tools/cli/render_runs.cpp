@@ -41,10 +41,11 @@ bool warn_if_unlit(const sampler::VplStream& stream, const session::SceneSession
 
 // The next chunk of work units: about kChunkSeconds at the rate measured so far, never past the
 // remaining budget's worth, at least one unit.
-uint64_t next_chunk(uint64_t done, double elapsed, double remaining, uint64_t first) {
+uint64_t next_chunk(uint64_t done, double elapsed, double remaining, uint64_t first,
+                    double chunk_seconds) {
     if (done == 0 || !(elapsed > 0.0)) return first;
     const double per_unit = elapsed / double(done);
-    const double seconds = std::min(kChunkSeconds, remaining);
+    const double seconds = std::min(chunk_seconds, remaining);
     // At most 2^20 units a chunk, however cheap they were so far.
     return std::clamp<uint64_t>(uint64_t(std::min(seconds / per_unit, 1e9)), 1, uint64_t(1) << 20);
 }
@@ -277,6 +278,9 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     int64_t shown = 0;
     Progress progress("render", tenths, job.quiet);
     const uint64_t first = uint64_t(job.render.batch);
+    // A chunk's batches are shared out among the renderer's devices (render::split_into_runs),
+    // each drawing the G-buffers of the positions its run touches: a chunk per device.
+    const double chunk_seconds = kChunkSeconds * (job.renderer ? job.renderer->devices() : 1);
     // Over ranks, rank 0's clock decides for all, so that they stop together and agree on each
     // chunk's size (every rank traces its share of it).
     cluster::Cluster& ranks = job.cluster ? *job.cluster : cluster::single_process();
@@ -286,7 +290,7 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
         return t[0];
     };
     for (double t = elapsed(); !run.unlit() && t < seconds; t = elapsed()) {
-        run.add(next_chunk(run.stream().work_done(), t, seconds - t, first));
+        run.add(next_chunk(run.stream().work_done(), t, seconds - t, first, chunk_seconds));
         progress.set_status(run.stream().statistics());
         const int64_t now = std::min(tenths, int64_t(budget.seconds() * 10.0));
         progress.advance(now - shown);
