@@ -305,9 +305,12 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
     std::string pass_times = "CPU oracle";
     if (job.renderer) {
         char buf[160];
+        // Over several devices the pass times are summed: each device's ran beside the others'.
+        const uint32_t devices = job.renderer->devices();
         std::snprintf(
-            buf, sizeof buf, "G-buffer %.1f ms, shadow %.1f ms, shading %.1f ms, %u batches",
-            r.timings.g_buffer_ms, r.timings.shadow_ms, r.timings.shading_ms, r.timings.batches);
+            buf, sizeof buf, "G-buffer %.1f ms, shadow %.1f ms, shading %.1f ms, %u batches%s",
+            r.timings.g_buffer_ms, r.timings.shadow_ms, r.timings.shading_ms, r.timings.batches,
+            devices > 1 ? (" on " + std::to_string(devices) + " devices").c_str() : "");
         pass_times = buf;
     }
     if (r.compensation_passes > 0)
