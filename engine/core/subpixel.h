@@ -76,10 +76,10 @@ struct SubpixelSchedule {
     uint64_t position_of(uint64_t vpl) const {
         return jitter && vpls_per_position > 0 ? vpl / vpls_per_position : 0;
     }
-    // The positions drawn once `vpls` VPLs were shaded: at least one (the image's first), which
-    // the emitted radiance seen directly is averaged over.
     // The index of position p's first VPL.
     uint64_t first_of(uint64_t p) const { return jitter ? p * vpls_per_position : 0; }
+    // The positions drawn once `vpls` VPLs were shaded: at least one (the image's first), which
+    // the emitted radiance seen directly is averaged over.
     uint64_t positions_after(uint64_t vpls) const {
         return vpls == 0 ? 1 : position_of(vpls - 1) + 1;
     }

@@ -4,6 +4,8 @@
 #include <exception>
 #include <thread>
 
+#include "engine/gpu/gpu_error.h"
+
 namespace mvpl::render {
 
 std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
@@ -13,6 +15,8 @@ std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
     if (vpls.empty()) return shares;
     const uint64_t b = std::max<uint64_t>(batch, 1);
     auto index_of = [&](size_t i) { return index.empty() ? first + i : index[i]; };
+    if (!index.empty() && !std::is_sorted(index.begin(), index.end()))
+        throw gpu::GpuError("VplRenderer::accumulate: the VPLs' indices must increase");
     const uint64_t first_batch = index_of(0) / b;
     const uint64_t batches = index_of(vpls.size() - 1) / b - first_batch + 1;
     for (size_t i = 0; i < vpls.size(); ++i) {
@@ -24,6 +28,9 @@ std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
     }
     return shares;
 }
+
+// Every field of RenderTimings is summed below: a new one must be added there too.
+static_assert(sizeof(RenderTimings) == 15 * 8, "add_timings: sum the new field of RenderTimings");
 
 void add_timings(RenderTimings& sum, const RenderTimings& t) {
     sum.g_buffer_ms += t.g_buffer_ms;
@@ -46,18 +53,19 @@ void add_timings(RenderTimings& sum, const RenderTimings& t) {
 void run_on_devices(uint32_t devices, const std::function<void(uint32_t)>& work) {
     std::vector<std::exception_ptr> errors(std::max<uint32_t>(devices, 1));
     std::vector<std::thread> threads;
-    for (uint32_t d = 1; d < devices; ++d) {
-        threads.emplace_back([&, d] {
-            try {
-                work(d);
-            } catch (...) {
-                errors[d] = std::current_exception();
-            }
-        });
-    }
     try {
+        for (uint32_t d = 1; d < devices; ++d) {
+            threads.emplace_back([&, d] {
+                try {
+                    work(d);
+                } catch (...) {
+                    errors[d] = std::current_exception();
+                }
+            });
+        }
         work(0);
     } catch (...) {
+        // Device 0's error, or no thread for a device: the started ones still finish first.
         errors[0] = std::current_exception();
     }
     for (std::thread& t : threads)

@@ -5,12 +5,14 @@
 #include <mutex>
 #include <span>
 
+#include "engine/core/error.h"
 #include "engine/core/finite_check.h"
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
 #include "engine/gpu/memory.h"
 #include "engine/render/device_split.h"
+#include "engine/render/render_memory.h"
 #include "engine/render/vpl_renderer_impl.h"
 
 namespace mvpl::render {
@@ -81,6 +83,13 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
         return;
     }
     const auto start = std::chrono::steady_clock::now();
+    // Until every device has begun, none has: a failure below leaves the group unbegun, never
+    // some devices on the old sizes and some on the new.
+    for (uint32_t d = 0; d < m.devices(); ++d)
+        m.device(d).begun = false;
+    const std::string shortfall =
+        memory_shortfall(options, m.context->device_info(), physical_memory_bytes(), m.devices());
+    if (!shortfall.empty()) throw UsageError(shortfall);
     RenderOptions shared = options;
     if (options.on_batch) {
         // The devices report from their own threads.
@@ -90,7 +99,10 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
             report(n);
         };
     }
-    run_on_devices(m.devices(), [&](uint32_t d) { m.device(d).start(camera, shared); });
+    RenderOptions partner = shared;
+    partner.dump_shaders.clear();  // the same files: device 0 writes them
+    run_on_devices(m.devices(),
+                   [&](uint32_t d) { m.device(d).start(camera, d == 0 ? shared : partner); });
     m.group_shaded = 0;
     m.group_wall_ms = milliseconds_since(start);
     m.refresh_group_timings();
@@ -129,6 +141,10 @@ Image VplRenderer::resolve(double scale) {
 Image VplRenderer::contributions() const {
     const Impl& m = *m_impl;
     if (!m.begun) throw gpu::GpuError("VplRenderer::contributions before begin");
+    for (const Impl::Partner& p : m.partners) {
+        if (!p.renderer->m_impl->begun)
+            throw gpu::GpuError("VplRenderer::contributions before every device began");
+    }
     std::vector<float> rgba = m.shading->accumulation().download_as<float>();
     for (const Impl::Partner& p : m.partners) {
         const std::vector<float> more =
@@ -145,6 +161,10 @@ Image VplRenderer::contributions() const {
 Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
     Impl& m = *m_impl;
     if (!m.begun) throw gpu::GpuError("VplRenderer::resolve before begin");
+    for (const Impl::Partner& p : m.partners) {
+        if (!p.renderer->m_impl->begun)
+            throw gpu::GpuError("VplRenderer::resolve before every device began");
+    }
     if (sum.width() != int(m.options.width) || sum.height() != int(m.options.height))
         throw gpu::GpuError("VplRenderer::resolve: the sum is not the image's size");
     const auto start = std::chrono::steady_clock::now();

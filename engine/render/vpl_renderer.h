@@ -110,7 +110,8 @@ struct RenderOptions {
 // the same schedule).
 SubpixelSchedule subpixel_schedule(const RenderOptions& options);
 
-// GPU milliseconds per pass (GpuTimer), summed over batches.
+// GPU milliseconds per pass (GpuTimer), summed over batches (and over devices, which run at once:
+// then more than the wall time).
 struct RenderTimings {
     double g_buffer_ms = 0.0;  // the G-buffers and the emission sum
     double shadow_ms = 0.0;
@@ -125,8 +126,10 @@ struct RenderTimings {
     uint64_t shadow_texels = 0;  // cube-face texels cleared and drawn
     uint64_t culled_vpls = 0;    // VPLs that could not reach the view (vpl_culling.h)
     uint64_t ism_vpls = 0;       // VPLs whose cubes were imperfect shadow maps
-    uint32_t g_buffers = 0;      // G-buffers drawn: one per sub-pixel position
-    double chain_ms = 0.0;       // host time tracing specular chains (in wall_ms)
+    // G-buffers drawn: one per sub-pixel position (and device that shades it)
+    uint32_t g_buffers = 0;
+    // Host time tracing specular chains (in wall_ms on one device; summed over several).
+    double chain_ms = 0.0;
     uint64_t chain_rays = 0;
 };
 

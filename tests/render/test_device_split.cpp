@@ -8,6 +8,7 @@
 #include <thread>
 #include <vector>
 
+#include "engine/gpu/gpu_error.h"
 #include "engine/render/device_split.h"
 
 namespace mvpl::render {
@@ -65,20 +66,22 @@ TEST(SplitIntoRuns, GivenIndicesDecideTheBatches) {
     EXPECT_EQ(shares[1].index, (std::vector<uint64_t>{40}));
     EXPECT_EQ(shares[1].vpls[0].power.r, 4.0f);
     EXPECT_TRUE(split_into_runs({}, {}, 0, 8, 2)[1].vpls.empty());
+    const std::vector<uint64_t> decreasing{9, 3, 4, 5, 6};
+    EXPECT_THROW(split_into_runs(vpls, decreasing, 0, 8, 2), gpu::GpuError);
 }
 
 // Every device's work runs, device 0's on the caller's thread, and an error of one device comes
 // back after all have finished.
 TEST(RunOnDevices, RunsEveryDeviceAndRethrows) {
     std::atomic<int> ran{0};
-    std::vector<bool> on_caller(3, false);
+    std::vector<char> on_caller(3, 0);  // not vector<bool>: its bits share a word
     const std::thread::id caller = std::this_thread::get_id();
     run_on_devices(3, [&](uint32_t d) {
         on_caller[d] = std::this_thread::get_id() == caller;
         ++ran;
     });
     EXPECT_EQ(ran.load(), 3);
-    EXPECT_EQ(on_caller, (std::vector<bool>{true, false, false}));
+    EXPECT_EQ(on_caller, (std::vector<char>{1, 0, 0}));
     ran = 0;
     EXPECT_THROW(run_on_devices(3,
                                 [&](uint32_t d) {

@@ -52,7 +52,7 @@ struct RenderSample {
     uint64_t culled_vpls = 0;                  // VPLs that could not reach the view
     uint64_t ism_vpls = 0;                     // VPLs whose cubes were imperfect shadow maps
     uint32_t g_buffers = 0;                    // one per sub-pixel position
-    double chain_ms = 0.0;                     // host time tracing specular chains (within wall_s)
+    double chain_ms = 0.0;  // host time tracing specular chains (summed over devices)
     uint64_t chain_rays = 0;
 };
 

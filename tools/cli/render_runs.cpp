@@ -278,19 +278,21 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     int64_t shown = 0;
     Progress progress("render", tenths, job.quiet);
     const uint64_t first = uint64_t(job.render.batch);
-    // A chunk's batches are shared out among the renderer's devices (render::split_into_runs),
-    // each drawing the G-buffers of the positions its run touches: a chunk per device.
-    const double chunk_seconds = kChunkSeconds * (job.renderer ? job.renderer->devices() : 1);
     // Over ranks, rank 0's clock decides for all, so that they stop together and agree on each
     // chunk's size (every rank traces its share of it).
     cluster::Cluster& ranks = job.cluster ? *job.cluster : cluster::single_process();
+    // A chunk's batches are shared out among the renderer's devices (render::split_into_runs),
+    // each drawing the G-buffers of the positions its run touches: a chunk per device, rank 0's.
+    std::vector<double> chunk_seconds(
+        1, ranks.root() ? kChunkSeconds * (job.renderer ? job.renderer->devices() : 1) : 0.0);
+    ranks.sum_all(chunk_seconds);
     auto elapsed = [&] {
         std::vector<double> t(1, ranks.root() ? budget.seconds() : 0.0);
         ranks.sum_all(t);
         return t[0];
     };
     for (double t = elapsed(); !run.unlit() && t < seconds; t = elapsed()) {
-        run.add(next_chunk(run.stream().work_done(), t, seconds - t, first, chunk_seconds));
+        run.add(next_chunk(run.stream().work_done(), t, seconds - t, first, chunk_seconds[0]));
         progress.set_status(run.stream().statistics());
         const int64_t now = std::min(tenths, int64_t(budget.seconds() * 10.0));
         progress.advance(now - shown);
