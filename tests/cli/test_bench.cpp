@@ -188,8 +188,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
     // indirect faces of half the side, specular chains, imperfect shadow maps, levels of detail,
-    // back-face culling of solids.
-    ASSERT_EQ(j["sweep"].size(), 25u);
+    // back-face culling of solids, the other device count.
+    ASSERT_EQ(j["sweep"].size(), 26u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -238,6 +238,11 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
               j["render"]["shadow_triangles_per_vpl"].get<double>());
     EXPECT_TRUE(j["render"]["backface_culling"].get<bool>());
     EXPECT_FALSE(j["sweep"][24]["backface_culling"].get<bool>());
+    // One device where the run had two (lavapipe) and two where it had one (a GPU): the same
+    // VPLs and batches, on a renderer of its own.
+    const json& other = j["sweep"][25];
+    EXPECT_EQ(other["devices"].get<int>(), j["render"]["devices"].get<int>() == 1 ? 2 : 1);
+    EXPECT_EQ(other["batches"], j["render"]["batches"]);
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());

@@ -238,6 +238,7 @@ int run_bench(const Args& args) {
     });
 
     std::vector<BenchConfig> sweep_configs;
+    size_t devices_sweep = SIZE_MAX;  // the sweep's configuration with the other device count
     if (sweep) {
         for (const int r : kSweepShadowResolutions) {
             for (const int b : kSweepBatches) {
@@ -279,6 +280,11 @@ int run_bench(const Args& args) {
         c = config;
         c.backface_culling = !config.backface_culling;
         sweep_configs.push_back(c);
+        // One device against two (or the other way round): the renderer's devices are known
+        // once the context is (RendererArgs::devices_for), and this configuration gets the other
+        // count, on a renderer of its own.
+        devices_sweep = sweep_configs.size();
+        sweep_configs.push_back(config);
     }
 
     BenchReport report;
@@ -295,6 +301,7 @@ int run_bench(const Args& args) {
         std::unique_ptr<session::SceneSession> session;
         std::unique_ptr<gpu::Context> context;
         std::unique_ptr<render::VplRenderer> renderer;
+        std::unique_ptr<render::VplRenderer> other_devices;  // the sweep's other device count
         cluster::together(ranks, [&] {
             session = std::make_unique<session::SceneSession>(
                 scene_path, camera.choice, environment.choice, scene_file.options);
@@ -314,14 +321,21 @@ int run_bench(const Args& args) {
             // With the BVH: specular chains, where the scene has glossy surfaces.
             const uint32_t devices = renderer_args.devices_for(context->device_info());
             config.devices = int(devices);
-            for (BenchConfig& c : sweep_configs)
-                c.devices = int(devices);
+            for (size_t i = 0; i < sweep_configs.size(); ++i)
+                sweep_configs[i].devices = i == devices_sweep ? (devices == 1 ? 2 : 1) : devices;
             renderer = std::make_unique<render::VplRenderer>(*context, session->scene(),
                                                              &session->accel(), devices);
             // The first begin() builds the passes: pipelines and shader compilation belong to
             // start-up, not to the throughput of later renders.
             renderer->begin(session->scene().camera, render_options(config, clamp, !no_shadows));
             renderer_s.push_back(t.seconds());
+            if (devices_sweep < sweep_configs.size()) {
+                const BenchConfig& c = sweep_configs[devices_sweep];
+                other_devices = std::make_unique<render::VplRenderer>(
+                    *context, session->scene(), &session->accel(), uint32_t(c.devices));
+                other_devices->begin(session->scene().camera,
+                                     render_options(c, clamp, !no_shadows));
+            }
         });
         const scene::Scene& scene = session->scene();
 
@@ -337,8 +351,9 @@ int run_bench(const Args& args) {
             render_once(*renderer, scene.camera, vpls, config, clamp, !no_shadows, ranks));
         progress.advance();
         for (size_t i = 0; i < sweep_configs.size(); ++i) {
-            sweep_samples[i].push_back(render_once(*renderer, scene.camera, vpls, sweep_configs[i],
-                                                   clamp, !no_shadows, ranks));
+            render::VplRenderer& r = i == devices_sweep ? *other_devices : *renderer;
+            sweep_samples[i].push_back(
+                render_once(r, scene.camera, vpls, sweep_configs[i], clamp, !no_shadows, ranks));
             progress.advance();
         }
         report.peak_device_bytes =
