@@ -20,6 +20,7 @@ MetropolisOptions metropolis_options(const SamplerSettings& s) {
     o.defensive = s.defensive;
     o.tracer = s.tracer;
     o.per_path = s.metropolis_per_path;
+    o.direct_stride = s.direct_stride;
     o.importance.points = s.importance_points;
     o.importance.width = s.width;
     o.importance.height = s.height;

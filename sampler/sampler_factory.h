@@ -34,6 +34,7 @@ struct SamplerSettings {
     uint64_t bootstrap = MetropolisOptions{}.bootstrap;
     double defensive = MetropolisOptions{}.defensive;
     VplsPerPath metropolis_per_path = MetropolisOptions{}.per_path;
+    int direct_stride = MetropolisOptions{}.direct_stride;
     // The renderer's specular chains, which the Metropolis target follows as the image does.
     light::ChainOptions specular_chains;
     // The ranks that share the stream (null: this process alone).
