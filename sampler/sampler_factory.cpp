@@ -22,6 +22,7 @@ MetropolisOptions metropolis_options(const SamplerSettings& s) {
     o.per_path = s.metropolis_per_path;
     o.direct_stride = s.direct_stride;
     o.importance.points = s.importance_points;
+    o.importance.absolute_share = s.absolute_share;
     o.importance.width = s.width;
     o.importance.height = s.height;
     o.importance.clamp = s.clamp;

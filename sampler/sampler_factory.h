@@ -31,6 +31,7 @@ struct SamplerSettings {
     float sigma = MetropolisOptions{}.sigma;
     int chains = MetropolisOptions{}.chains;
     int importance_points = ImportanceOptions{}.points;
+    float absolute_share = float(MetropolisOptions{}.importance.absolute_share);
     uint64_t bootstrap = MetropolisOptions{}.bootstrap;
     double defensive = MetropolisOptions{}.defensive;
     VplsPerPath metropolis_per_path = MetropolisOptions{}.per_path;
