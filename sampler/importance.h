@@ -41,10 +41,11 @@ struct ImportanceOptions {
     // weights), so that what carries the image's mean gets states in proportion to it. The
     // relative weights alone give a small bright region almost none however much of the mean it
     // holds (two-room: the room seen through the opening, ≈ 1.5 of 256 points and half the mean).
-    // 0.5 measured best (two-room, 60 s pool, 25000 steps, 8 seeds, the oracle's 16² image mean:
-    // spread 1.1 % at 0, 0.77 % at 0.25, 0.55 % at 0.5, 0.8 % at 0.75: docs/results.md,
-    // "Direct light apart from the chains").
-    double absolute_share = 0.5;
+    // Off by default: on the two-room scene (60 s pool, oracle, 16 seeds) 0.5 narrowed the image
+    // mean's spread over seeds from ≈ 1 % to ≈ 0.6 % but centred it ≈ 0.5 % lower, as did six
+    // 60 s renders (≈ 0.4 % below the references): not shown to be unbiased in its distribution's
+    // bulk (docs/results.md, "Direct light apart from the chains").
+    double absolute_share = 0.0;
     // The renderer's specular chains (disabled: every point is a camera ray's first hit).
     light::ChainOptions chains;
 };
