@@ -12,7 +12,9 @@ namespace mvpl::sampler {
 
 Importance::Importance(const scene::Scene& scene, const trace::Accel& accel,
                        const scene::Camera& camera, const ImportanceOptions& options)
-    : m_accel(accel), m_relative(options.relative) {
+    : m_accel(accel),
+      m_relative(options.relative),
+      m_absolute_share(std::clamp(options.absolute_share, 0.0, 1.0)) {
     // A grid of gx × gy strata with the image's aspect and about K cells, one jittered ray each.
     const double aspect = double(std::max(options.width, 1)) / double(std::max(options.height, 1));
     const int k = std::max(options.points, 1);
@@ -84,12 +86,19 @@ void Importance::set_point_radiance(std::span<const double> radiance) {
         mean += l;
     mean /= double(radiance.size());
     if (!(mean > 0.0) || !std::isfinite(mean)) return;
-    double sum = 0.0;
+    double sum = 0.0, mass = 0.0;
     for (size_t k = 0; k < m_points.size(); ++k) {
         // 0.1·mean bounds the weight of unlit points to 10/mean; on the two-room scene it put
         // 33% of Metropolis surface VPLs in the camera's room where 1·mean put 30%.
         m_weights[k] = 1.0 / (std::max(radiance[k], 0.0) + 0.1 * mean);
-        sum += m_weights[k];
+        mass += m_weights[k] * std::max(radiance[k], 0.0);
+    }
+    // The mix: the relative weights' mass (Σ w·L) and the plain one's (Σ L) in the proportion
+    // 1 − share : share.
+    const double total = mean * double(radiance.size());
+    for (double& w : m_weights) {
+        w = (1.0 - m_absolute_share) * w / mass + m_absolute_share / total;
+        sum += w;
     }
     for (double& w : m_weights)
         w *= double(m_points.size()) / sum;

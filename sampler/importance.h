@@ -37,6 +37,15 @@ struct ImportanceOptions {
     // lit walls) count as much as the errors measured relative to the pixel (relMSE) make them
     // count, rather than in proportion to their brightness. False: plain luminance (the seed).
     bool relative = true;
+    // With relative: the share of the target's mass given back to plain luminance (uniform point
+    // weights), so that what carries the image's mean gets states in proportion to it. The
+    // relative weights alone give a small bright region almost none however much of the mean it
+    // holds (two-room: the room seen through the opening, ≈ 1.5 of 256 points and half the mean).
+    // Off by default: on the two-room scene (60 s pool, oracle, 16 seeds) 0.5 narrowed the image
+    // mean's spread over seeds from ≈ 1 % to ≈ 0.6 % but centred it ≈ 0.5 % lower, as did six
+    // 60 s renders (≈ 0.4 % below the references): not shown to be unbiased in its distribution's
+    // bulk (docs/results.md, "Direct light apart from the chains").
+    double absolute_share = 0.0;
     // The renderer's specular chains (disabled: every point is a camera ray's first hit).
     light::ChainOptions chains;
 };
@@ -71,6 +80,7 @@ private:
     std::vector<Point> m_points;
     std::vector<double> m_weights;  // per point, 1 unless relative
     bool m_relative = true;
+    double m_absolute_share = 0.0;
     int m_rays = 0;
     float m_d_min2 = 0.0f;
     float m_vsl_r2 = 0.0f;

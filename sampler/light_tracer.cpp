@@ -33,6 +33,50 @@ int LightTracer::max_path_length() const {
     return std::max(m_options.max_depth - 2, -1);
 }
 
+light::Vpl LightTracer::emitter_vpl(const light::EmissionSample& es) const {
+    // The emitter VPL (path_length 0): the light itself, or the sampled point of an area light.
+    light::Vpl emitter;
+    emitter.position = es.p;
+    emitter.power = es.le;
+    emitter.path_length = 0;
+    switch (es.type) {
+        case light::EmitterType::Triangle:
+            emitter.type = light::VplType::Area;
+            emitter.normal = emitter.shading_normal = es.n;
+            break;
+        case light::EmitterType::Point:
+            emitter.type = light::VplType::Point;
+            break;
+        case light::EmitterType::Spot: {
+            const scene::Light& light = m_scene.lights[m_lights.emitters()[es.emitter].light];
+            emitter.type = light::VplType::Spot;
+            emitter.normal = light.direction;
+            emitter.cos_inner = std::cos(light.inner_cone);
+            emitter.cos_outer = std::cos(light.outer_cone);
+            break;
+        }
+        case light::EmitterType::Directional:
+        case light::EmitterType::Environment:  // a directional light of the sampled direction
+            emitter.type = light::VplType::Directional;
+            emitter.normal = es.direction;
+            break;
+    }
+    return emitter;
+}
+
+size_t LightTracer::trace_emitter(SampleStream& u, std::vector<light::Vpl>& out) const {
+    const float u_pick = u.next();
+    const Vec2 u_pos = next_2d(u);
+    const Vec2 u_dir = next_2d(u);
+    if (max_path_length() < 0) return 0;
+    const std::optional<light::EmissionSample> es = m_lights.sample_le(u_pick, u_pos, u_dir);
+    if (!es) return 0;
+    const light::Vpl emitter = emitter_vpl(*es);
+    if (!usable(emitter.power)) return 0;
+    out.push_back(emitter);
+    return 1;
+}
+
 size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
     const size_t first = out.size();
     // The emission dimensions are always read, so that the layout of u never shifts.
@@ -44,35 +88,10 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
     const std::optional<light::EmissionSample> es = m_lights.sample_le(u_pick, u_pos, u_dir);
     if (!es) return 0;
 
-    // The emitter VPL (path_length 0): the light itself, or the sampled point of an area light.
-    light::Vpl emitter;
-    emitter.position = es->p;
-    emitter.power = es->le;
-    emitter.path_length = 0;
+    const light::Vpl emitter = emitter_vpl(*es);
     trace::Ray ray{es->p, es->direction};
-    switch (es->type) {
-        case light::EmitterType::Triangle:
-            emitter.type = light::VplType::Area;
-            emitter.normal = emitter.shading_normal = es->n;
-            ray = trace::spawn_ray(es->p, es->n, es->direction);
-            break;
-        case light::EmitterType::Point:
-            emitter.type = light::VplType::Point;
-            break;
-        case light::EmitterType::Spot: {
-            const scene::Light& light = m_scene.lights[m_lights.emitters()[es->emitter].light];
-            emitter.type = light::VplType::Spot;
-            emitter.normal = light.direction;
-            emitter.cos_inner = std::cos(light.inner_cone);
-            emitter.cos_outer = std::cos(light.outer_cone);
-            break;
-        }
-        case light::EmitterType::Directional:
-        case light::EmitterType::Environment:  // a directional light of the sampled direction
-            emitter.type = light::VplType::Directional;
-            emitter.normal = es->direction;
-            break;
-    }
+    if (es->type == light::EmitterType::Triangle)
+        ray = trace::spawn_ray(es->p, es->n, es->direction);
     if (usable(emitter.power)) out.push_back(emitter);
 
     Rgb beta = es->throughput;

@@ -47,12 +47,18 @@ public:
     // Traces one light path from `u` and appends its VPLs in path order (emitter VPL first).
     // Returns the number of VPLs appended.
     size_t trace(SampleStream& u, std::vector<light::Vpl>& out) const;
+    // The emitter VPL alone (path_length 0) from the emission dimensions of `u` (the same ones
+    // trace() reads first, so the same u gives the same VPL), without tracing the path; nothing
+    // when the sample misses or max_depth leaves no VPL. Returns the number appended (0 or 1).
+    size_t trace_emitter(SampleStream& u, std::vector<light::Vpl>& out) const;
 
     // Largest path_length a VPL may have for the options' max_depth (−1: none at all).
     int max_path_length() const;
     const LightTracerOptions& options() const { return m_options; }
 
 private:
+    light::Vpl emitter_vpl(const light::EmissionSample& es) const;
+
     const scene::Scene& m_scene;
     const trace::Accel& m_accel;
     const light::LightSampler& m_lights;

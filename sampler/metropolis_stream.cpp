@@ -57,6 +57,9 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
                                    const MetropolisOptions& options)
     : m_options(options),
       m_tracer(scene, accel, lights, options.tracer),
+      m_direct(options.direct_stride > 0
+                   ? std::make_unique<DirectLightSequence>(m_tracer, options.seed)
+                   : nullptr),
       m_importance(scene, accel, camera, options.importance) {
     Timer timer;
     m_options.chains = std::max(m_options.chains, 1);
@@ -133,6 +136,9 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
         }
     });
     ranks.sum_all(radiance);
+    // On every rank alike (deterministic, a few thousand shadow rays): the point weights then
+    // see the whole light, as with the emitter VPLs in the chains' states.
+    const bool direct_visible = add_direct_radiance(radiance);
     cluster::together(ranks, [&] {
         m_importance.set_point_radiance(radiance);
         std::vector<float> dense(k);
@@ -167,7 +173,9 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     m_stats.mean_importance = sum / double(n);
     m_stats.bootstrap_lit = lit;
     if (!(m_stats.mean_importance > 0.0) || !std::isfinite(m_stats.mean_importance)) {
-        m_no_visible_light = true;
+        // No chain can start; the direct light's sequence may still light the image.
+        m_no_visible_light = !direct_visible;
+        m_stats.mean_importance = 0.0;
         m_stats.bootstrap_seconds = timer.seconds();
         return;
     }
@@ -221,12 +229,12 @@ MetropolisStream::~MetropolisStream() = default;
 
 void MetropolisStream::trace_state(SampleStream& u, std::vector<light::Vpl>& out) const {
     out.clear();
-    if (m_options.per_path == VplsPerPath::All) {
-        m_tracer.trace(u, out);
-        return;
-    }
-    const float pick = u.next();  // dimension 0, before the path's own dimensions
+    const bool one = m_options.per_path == VplsPerPath::One;
+    const float pick = one ? u.next() : 0.0f;  // dimension 0, before the path's own dimensions
     m_tracer.trace(u, out);
+    // The direct light's own sequence carries the emitter VPLs.
+    if (m_direct) std::erase_if(out, [](const light::Vpl& v) { return v.path_length == 0; });
+    if (!one) return;
     const size_t m = out.size();
     if (m == 0) return;
     const size_t j = std::min(m - 1, size_t(pick * float(m)));
@@ -290,6 +298,11 @@ void MetropolisStream::next(uint64_t work, std::vector<light::Vpl>& out) {
         m_stats.steps = end;
         return;
     }
+    if (m_chains.empty()) {  // only the direct light reaches what the camera sees
+        m_stats.steps = end;
+        next_direct(begin, end, out);
+        return;
+    }
     cluster::Cluster* ranks = m_options.cluster;
     const bool shared = ranks && ranks->size() > 1;
     const uint64_t chains = m_chains.size();
@@ -350,10 +363,59 @@ void MetropolisStream::next(uint64_t work, std::vector<light::Vpl>& out) {
     m_stats.target_count += counts[chains + 4];
     m_stats.target_sum += target_sum;
     m_stats.b = m_stats.target_sum / double(std::max<uint64_t>(m_stats.target_count, 1));
+    next_direct(begin, end, out);
 }
 
 double MetropolisStream::scale() const {
-    return m_stats.steps > 0 ? m_stats.b / double(m_stats.steps) : 0.0;
+    // b = 1 where no chain runs and only the direct light's sequence lights the image.
+    const double b = m_stats.b > 0.0 ? m_stats.b : 1.0;
+    return m_stats.steps > 0 ? b / double(m_stats.steps) : 0.0;
+}
+
+bool MetropolisStream::add_direct_radiance(std::vector<double>& radiance) const {
+    if (!m_direct || radiance.empty()) return false;
+    // Enough samples for the point weights (a heuristic of the target: any positive weights keep
+    // the estimate unbiased); the sequence's stratification keeps them smooth.
+    constexpr uint64_t kSamples = 1024;
+    std::vector<light::Vpl> vpl;
+    std::vector<float> dense(radiance.size());
+    bool lit = false;
+    for (uint64_t j = 0; j < kSamples; ++j) {
+        vpl.clear();
+        if (m_direct->sample(j, vpl) == 0) continue;
+        std::fill(dense.begin(), dense.end(), 0.0f);
+        m_importance.evaluate_points(vpl, dense);
+        for (size_t p = 0; p < radiance.size(); ++p) {
+            radiance[p] += double(dense[p]) / double(kSamples);
+            lit = lit || dense[p] > 0.0f;
+        }
+    }
+    return lit;
+}
+
+void MetropolisStream::next_direct(uint64_t begin, uint64_t end, std::vector<light::Vpl>& out) {
+    if (!m_direct) return;
+    cluster::Cluster* ranks = m_options.cluster;
+    const bool shared = ranks && ranks->size() > 1;
+    // Powers ÷ b: the renderer multiplies every VPL by scale() = b/N, and the direct estimate is
+    // (1/N) Σ steps · P. b is this call's (it changes with the large steps by ≈ 10⁻⁴ a call).
+    const double b = m_stats.b > 0.0 ? m_stats.b : 1.0;
+    std::vector<light::Vpl> vpl;
+    uint64_t index = m_vpls;
+    for (const DirectShare& share : direct_shares(begin, end, uint64_t(m_options.direct_stride))) {
+        vpl.clear();
+        // Every rank evaluates every sample (no rays: a point on a light), so that each knows
+        // the whole call's order; sample j is rank j mod R's.
+        if (m_direct->sample(share.sample, vpl) == 0) continue;
+        if (!shared || int(share.sample % uint64_t(ranks->size())) == ranks->rank()) {
+            vpl[0].power *= float(double(share.steps) / b);
+            out.push_back(vpl[0]);
+            if (shared) m_index.push_back(index);
+        }
+        ++index;
+    }
+    m_stats.direct += index - m_vpls;
+    m_vpls = index;
 }
 
 double MetropolisStream::acceptance() const {

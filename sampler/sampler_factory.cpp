@@ -20,7 +20,9 @@ MetropolisOptions metropolis_options(const SamplerSettings& s) {
     o.defensive = s.defensive;
     o.tracer = s.tracer;
     o.per_path = s.metropolis_per_path;
+    o.direct_stride = s.direct_stride;
     o.importance.points = s.importance_points;
+    o.importance.absolute_share = s.absolute_share;
     o.importance.width = s.width;
     o.importance.height = s.height;
     o.importance.clamp = s.clamp;

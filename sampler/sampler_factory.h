@@ -31,9 +31,11 @@ struct SamplerSettings {
     float sigma = MetropolisOptions{}.sigma;
     int chains = MetropolisOptions{}.chains;
     int importance_points = ImportanceOptions{}.points;
+    float absolute_share = float(MetropolisOptions{}.importance.absolute_share);
     uint64_t bootstrap = MetropolisOptions{}.bootstrap;
     double defensive = MetropolisOptions{}.defensive;
     VplsPerPath metropolis_per_path = MetropolisOptions{}.per_path;
+    int direct_stride = MetropolisOptions{}.direct_stride;
     // The renderer's specular chains, which the Metropolis target follows as the image does.
     light::ChainOptions specular_chains;
     // The ranks that share the stream (null: this process alone).

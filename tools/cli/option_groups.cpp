@@ -223,6 +223,12 @@ void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& s) {
                    "metropolis: camera-visible points of the target");
     parser.add_uint64("--bootstrap", &s.bootstrap,
                       "metropolis: independent paths for the normalisation");
+    parser.add_float("--absolute-share", &s.absolute_share,
+                     "metropolis: share of the target's mass on plain luminance (the image's "
+                     "mean) beside the relative weights");
+    parser.add_int("--direct-stride", &s.direct_stride,
+                   "metropolis: chain steps per emitter VPL of the direct light's own stratified "
+                   "sequence; 0 = the chains carry the direct light too");
     parser.add_check([&parser, &s] {
         if (!(s.large_step >= 0.0f && s.large_step <= 1.0f))
             out_of_range(parser, "--beta", "[0, 1]");
@@ -232,6 +238,10 @@ void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& s) {
             out_of_range(parser, "--importance-points", "1..2^20");
         if (s.bootstrap < 1 || s.bootstrap > (uint64_t(1) << 26))
             out_of_range(parser, "--bootstrap", "1..2^26");
+        if (!(s.absolute_share >= 0.0f && s.absolute_share <= 1.0f))
+            out_of_range(parser, "--absolute-share", "[0, 1]");
+        if (s.direct_stride < 0 || s.direct_stride > (1 << 20))
+            out_of_range(parser, "--direct-stride", "0..2^20");
     });
 }
 

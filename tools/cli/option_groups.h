@@ -99,7 +99,8 @@ void add_caustics_option(ArgParser& parser, bool& no_caustics);
 // --sampler: a name of sampler::sampler_names().
 void add_sampler_option(ArgParser& parser, std::string& name);
 
-// --beta, --sigma, --chains, --importance-points, --bootstrap: the Metropolis sampler's.
+// --beta, --sigma, --chains, --importance-points, --bootstrap, --direct-stride: the Metropolis
+// sampler's.
 void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& settings);
 
 // --max-depth (Mitsuba's max_depth; the default is the target's) and --seed.
