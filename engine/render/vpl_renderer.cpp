@@ -27,8 +27,6 @@ VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
                          const trace::Accel* accel)
     : m_impl(std::make_unique<Impl>(context, scene, accel)) {}
 
-VplRenderer::VplRenderer(std::unique_ptr<Impl> impl) : m_impl(std::move(impl)) {}
-
 VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
                          const trace::Accel* accel, uint32_t devices) {
     if (devices == 0 || devices > kMaxRenderDevices) {
@@ -45,12 +43,11 @@ VplRenderer::VplRenderer(gpu::Context& context, const scene::Scene& scene,
         }
         Impl::Partner& p = partners[d - 1];
         p.context = std::make_unique<gpu::Context>(context.options());
-        p.renderer = std::unique_ptr<VplRenderer>(
-            new VplRenderer(std::make_unique<Impl>(*p.context, scene, accel, false)));
-        p.renderer->m_impl->draws_first_position = false;
+        p.impl = std::make_unique<Impl>(*p.context, scene, accel, false);
+        p.impl->draws_first_position = false;
     });
     for (Impl::Partner& p : partners)
-        p.renderer->m_impl->clusters = m_impl->clusters;
+        p.impl->clusters = m_impl->clusters;
     m_impl->partners = std::move(partners);
 }
 
@@ -140,18 +137,9 @@ Image VplRenderer::resolve(double scale) {
 
 Image VplRenderer::contributions() const {
     const Impl& m = *m_impl;
-    if (!m.begun) throw gpu::GpuError("VplRenderer::contributions before begin");
-    for (const Impl::Partner& p : m.partners) {
-        if (!p.renderer->m_impl->begun)
-            throw gpu::GpuError("VplRenderer::contributions before every device began");
-    }
-    std::vector<float> rgba = m.shading->accumulation().download_as<float>();
-    for (const Impl::Partner& p : m.partners) {
-        const std::vector<float> more =
-            p.renderer->m_impl->shading->accumulation().download_as<float>();
-        for (size_t i = 0; i < rgba.size(); ++i)
-            rgba[i] += more[i];
-    }
+    m.require_begun("VplRenderer::contributions");
+    const std::vector<float> rgba =
+        m.summed([](const Impl& d) -> const gpu::Image& { return d.shading->accumulation(); });
     Image image(int(m.options.width), int(m.options.height));
     for (size_t i = 0; i < image.pixels().size(); ++i)
         image.pixels()[i] = Rgb(rgba[4 * i], rgba[4 * i + 1], rgba[4 * i + 2]);
@@ -160,11 +148,7 @@ Image VplRenderer::contributions() const {
 
 Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
     Impl& m = *m_impl;
-    if (!m.begun) throw gpu::GpuError("VplRenderer::resolve before begin");
-    for (const Impl::Partner& p : m.partners) {
-        if (!p.renderer->m_impl->begun)
-            throw gpu::GpuError("VplRenderer::resolve before every device began");
-    }
+    m.require_begun("VplRenderer::resolve");
     if (sum.width() != int(m.options.width) || sum.height() != int(m.options.height))
         throw gpu::GpuError("VplRenderer::resolve: the sum is not the image's size");
     const auto start = std::chrono::steady_clock::now();
@@ -193,12 +177,8 @@ Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
         m.timings.g_buffer_ms += timer.milliseconds("g-buffer");
     }
     // Each device summed the emission of the positions it drew, and counted them (alpha).
-    std::vector<float> emission = m.emission->image().download_as<float>();
-    for (const Impl::Partner& p : m.partners) {
-        const std::vector<float> more = p.renderer->m_impl->emission->image().download_as<float>();
-        for (size_t i = 0; i < emission.size(); ++i)
-            emission[i] += more[i];
-    }
+    const std::vector<float> emission =
+        m.summed([](const Impl& d) -> const gpu::Image& { return d.emission->image(); });
     Image image(int(m.options.width), int(m.options.height));
     for (size_t i = 0; i < image.pixels().size(); ++i) {
         const Rgb a = sum.pixels()[i];

@@ -199,7 +199,6 @@ public:
 
 private:
     struct Impl;
-    explicit VplRenderer(std::unique_ptr<Impl> impl);
     std::unique_ptr<Impl> m_impl;
 };
 

@@ -7,6 +7,7 @@
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
+#include "engine/gpu/image.h"
 #include "engine/light/specular_chain.h"
 #include "engine/render/batch_plan.h"
 #include "engine/render/render_memory.h"
@@ -69,6 +70,22 @@ void VplRenderer::Impl::record_g_buffer(gpu::CommandList& cmd, gpu::GpuTimer& ti
     timer.end(cmd, scope);
     position = index;
     ++timings.g_buffers;
+}
+
+void VplRenderer::Impl::require_begun(const char* what) const {
+    for (uint32_t d = 0; d < devices(); ++d) {
+        if (!device(d).begun) throw gpu::GpuError(std::string(what) + " before begin");
+    }
+}
+
+std::vector<float> VplRenderer::Impl::summed(const gpu::Image& (*image)(const Impl&)) const {
+    std::vector<float> sum = image(*this).download_as<float>();
+    for (const Partner& p : partners) {
+        const std::vector<float> more = image(*p.impl).download_as<float>();
+        for (size_t i = 0; i < sum.size(); ++i)
+            sum[i] += more[i];
+    }
+    return sum;
 }
 
 void VplRenderer::Impl::add_timing(std::chrono::steady_clock::time_point start, double shadow_ms,

@@ -25,6 +25,7 @@
 namespace mvpl::gpu {
 class CommandList;
 class GpuTimer;
+class Image;
 }  // namespace mvpl::gpu
 
 namespace mvpl::render {
@@ -70,7 +71,7 @@ struct VplRenderer::Impl {
     // G-buffer (position 0 is device 0's).
     struct Partner {
         std::unique_ptr<gpu::Context> context;
-        std::unique_ptr<VplRenderer> renderer;
+        std::unique_ptr<Impl> impl;  // destroyed before its context
     };
     std::vector<Partner> partners;
     bool draws_first_position = true;
@@ -79,11 +80,16 @@ struct VplRenderer::Impl {
     RenderTimings group_timings;
 
     uint32_t devices() const { return uint32_t(partners.size()) + 1; }
-    Impl& device(uint32_t d) { return d == 0 ? *this : *partners[d - 1].renderer->m_impl; }
+    Impl& device(uint32_t d) { return d == 0 ? *this : *partners[d - 1].impl; }
+    const Impl& device(uint32_t d) const { return d == 0 ? *this : *partners[d - 1].impl; }
+    // Throws GpuError naming `what` unless every device has begun.
+    void require_begun(const char* what) const;
+    // The RGBA32F image that `image` picks on each device, downloaded and summed over them.
+    std::vector<float> summed(const gpu::Image& (*image)(const Impl&)) const;
     void refresh_group_timings() {
         group_timings = timings;
         for (const Partner& p : partners)
-            add_timings(group_timings, p.renderer->m_impl->timings);
+            add_timings(group_timings, p.impl->timings);
         group_timings.wall_ms = group_wall_ms;
     }
     void start(const scene::Camera& camera, const RenderOptions& options);
