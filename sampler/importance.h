@@ -42,10 +42,10 @@ struct ImportanceOptions {
     // relative weights alone give a small bright region almost none however much of the mean it
     // holds (two-room: the room seen through the opening, ≈ 1.5 of 256 points and half the mean).
     // Two-room, 60 s renders, twelve seeds against the mean of four references: 0.5 took the
-    // image mean's spread over seeds from 1.0 % to 0.4–0.6 % (per channel within 1 % on 9 of 12
-    // seeds against 5 of 12) at the same relMSE; six seeds first seemed centred 0.4 % low, six
-    // more came out 0.5 % high: 1.000 over all twelve (docs/results.md, "Half the target on
-    // plain luminance").
+    // image mean's spread over seeds from 0.92 % to 0.61 % (per channel within 1 % on 9 of 12
+    // seeds against 5 of 12) at about the same relMSE; six seeds first seemed centred 0.4 % low,
+    // six more came out 0.5 % high: 1.001 over all twelve (docs/results.md, "Half the target
+    // on plain luminance").
     double absolute_share = 0.5;
     // The renderer's specular chains (disabled: every point is a camera ray's first hit).
     light::ChainOptions chains;
