@@ -8,7 +8,7 @@ namespace mvpl::sampler {
 void scale_pool_for_budget(SamplerSettings& settings, double seconds, bool chains_given,
                            bool bootstrap_given) {
     if (!(seconds > kPoolBudgetSeconds)) return;
-    const double scale = std::min(seconds / kPoolBudgetSeconds, kMaxPoolScale);
+    const double scale = std::min(std::pow(seconds / kPoolBudgetSeconds, 2.0), kMaxPoolScale);
     if (!chains_given) settings.chains = int(std::lround(double(settings.chains) * scale));
     if (!bootstrap_given) {
         const double grown =

@@ -22,27 +22,27 @@ TEST(MetropolisBudget, ShortBudgetsKeepTheDefaults) {
     }
 }
 
-// 30 s: twice the chains and 2^1.5 the bootstrap; 60 s: four times the chains and eight times the
-// bootstrap, the measured setting; longer: no more, which keeps the chains inside --chains' range
-// (1..4096). Continuous at 15 s: just above it, both scales are just above 1.
+// 30 s: four times the chains and 2^1.5 the bootstrap; 60 s: sixteen times the chains and eight
+// times the bootstrap, the measured setting; longer: no more, which keeps the chains inside
+// --chains' range (1..65536). Continuous at 15 s: just above it, both scales are just above 1.
 TEST(MetropolisBudget, LongBudgetsScaleThePool) {
     const MetropolisOptions defaults;
-    EXPECT_EQ(scaled(30.0).chains, 2 * defaults.chains);
+    EXPECT_EQ(scaled(30.0).chains, 4 * defaults.chains);
     EXPECT_EQ(scaled(30.0).bootstrap, uint64_t(std::llround(std::pow(2.0, 1.5) * 65536.0)));
-    EXPECT_EQ(scaled(60.0).chains, 4 * defaults.chains);
+    EXPECT_EQ(scaled(60.0).chains, 16 * defaults.chains);
     EXPECT_EQ(scaled(60.0).bootstrap, 8 * defaults.bootstrap);
-    EXPECT_EQ(scaled(600.0).chains, 4 * defaults.chains);
+    EXPECT_EQ(scaled(600.0).chains, 16 * defaults.chains);
     EXPECT_EQ(scaled(600.0).bootstrap, 8 * defaults.bootstrap);
-    EXPECT_LE(scaled(1e6).chains, 4096);
+    EXPECT_LE(scaled(1e6).chains, 1 << 16);
     EXPECT_LT(scaled(15.5).bootstrap, uint64_t(1.06 * double(defaults.bootstrap)));
-    EXPECT_LT(scaled(15.5).chains, int(1.04 * double(defaults.chains)));
+    EXPECT_LT(scaled(15.5).chains, int(1.07 * double(defaults.chains)));
 }
 
 TEST(MetropolisBudget, ChosenValuesStay) {
     const MetropolisOptions defaults;
     EXPECT_EQ(scaled(60.0, true, false).chains, defaults.chains);
     EXPECT_EQ(scaled(60.0, true, false).bootstrap, 8 * defaults.bootstrap);
-    EXPECT_EQ(scaled(60.0, false, true).chains, 4 * defaults.chains);
+    EXPECT_EQ(scaled(60.0, false, true).chains, 16 * defaults.chains);
     EXPECT_EQ(scaled(60.0, false, true).bootstrap, defaults.bootstrap);
 }
 

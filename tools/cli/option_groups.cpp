@@ -233,7 +233,7 @@ void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& s) {
         if (!(s.large_step >= 0.0f && s.large_step <= 1.0f))
             out_of_range(parser, "--beta", "[0, 1]");
         if (!(s.sigma > 0.0f && s.sigma <= 1.0f)) out_of_range(parser, "--sigma", "(0, 1]");
-        if (s.chains < 1 || s.chains > 4096) out_of_range(parser, "--chains", "1..4096");
+        if (s.chains < 1 || s.chains > (1 << 16)) out_of_range(parser, "--chains", "1..65536");
         if (s.importance_points < 1 || s.importance_points > (1 << 20))
             out_of_range(parser, "--importance-points", "1..2^20");
         if (s.bootstrap < 1 || s.bootstrap > (uint64_t(1) << 26))
