@@ -91,7 +91,7 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
     const light::Vpl emitter = emitter_vpl(*es);
     trace::Ray ray{es->p, es->direction};
     if (es->type == light::EmitterType::Triangle)
-        ray = trace::spawn_ray(es->p, es->n, es->direction);
+        ray = trace::spawn_ray(es->p, es->n, es->direction, m_accel.coordinate_scale());
     if (usable(emitter.power)) out.push_back(emitter);
 
     Rgb beta = es->throughput;
@@ -151,7 +151,7 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
             if (!(survive > 0.0f) || u_rr >= survive) break;
             beta /= survive;
         }
-        ray = trace::spawn_ray(sp.p, sp.ng, wo_world);
+        ray = trace::spawn_ray(sp.p, sp.ng, wo_world, m_accel.coordinate_scale());
     }
     return out.size() - first;
 }

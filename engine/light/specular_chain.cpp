@@ -27,9 +27,10 @@ Rgb punctual_light(const scene::Scene& scene, const trace::Accel& accel,
         if (!trace::same_side(ls->wi, sp.ng, wi.z)) continue;
         const Rgb f = sp.bsdf.eval(wo, wi);
         if (is_black(f)) continue;
-        const trace::Ray shadow = std::isinf(ls->distance)
-                                      ? trace::spawn_ray(sp.p, sp.ng, ls->wi)
-                                      : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n);
+        const trace::Ray shadow =
+            std::isinf(ls->distance)
+                ? trace::spawn_ray(sp.p, sp.ng, ls->wi, accel.coordinate_scale())
+                : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n, accel.coordinate_scale());
         if (!accel.occluded(shadow)) sum += f * std::abs(wi.z) * ls->li;
     }
     return sum;
@@ -51,9 +52,10 @@ Rgb sampled_light(const trace::Accel& accel, const LightSampler& lights,
     if (!trace::same_side(ls->wi, sp.ng, wi.z)) return Rgb(0.0f);
     const Rgb f = sp.bsdf.eval(wo, wi);
     if (is_black(f)) return Rgb(0.0f);
-    const trace::Ray shadow = std::isinf(ls->distance)
-                                  ? trace::spawn_ray(sp.p, sp.ng, ls->wi)
-                                  : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n);
+    const trace::Ray shadow =
+        std::isinf(ls->distance)
+            ? trace::spawn_ray(sp.p, sp.ng, ls->wi, accel.coordinate_scale())
+            : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n, accel.coordinate_scale());
     if (accel.occluded(shadow)) return Rgb(0.0f);
     const float weight = bsdf_follows ? power_heuristic(ls->pdf, sp.bsdf.pdf(wo, wi)) : 1.0f;
     return f * std::abs(wi.z) * ls->li * (weight / ls->pdf);
@@ -152,7 +154,7 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
         if (is_black(out.throughput)) return out;
         prev_pdf = bs->pdf;
         prev_p = sp.p;
-        ray = trace::spawn_ray(sp.p, sp.ng, wi_world);
+        ray = trace::spawn_ray(sp.p, sp.ng, wi_world, accel.coordinate_scale());
     }
 }
 

@@ -138,8 +138,9 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
     const bool on_surface = v.type == VplType::Area || v.type == VplType::Surface;
     const trace::Ray shadow =
         v.type == VplType::Directional
-            ? trace::spawn_ray(sp.p, sp.ng, to_light)
-            : trace::spawn_ray_to(sp.p, sp.ng, v.position, on_surface ? v.normal : Vec3(0.0f));
+            ? trace::spawn_ray(sp.p, sp.ng, to_light, accel.coordinate_scale())
+            : trace::spawn_ray_to(sp.p, sp.ng, v.position, on_surface ? v.normal : Vec3(0.0f),
+                                  accel.coordinate_scale());
     if (accel.occluded(shadow)) return Rgb(0.0f);
     return c;
 }

@@ -159,7 +159,7 @@ struct CausticTracer::Impl {
     void trace_from(const light::EmissionSample& es, Rng& rng, std::vector<Splat>& out) const {
         trace::Ray ray{es.p, es.direction};
         if (es.type == light::EmitterType::Triangle)
-            ray = trace::spawn_ray(es.p, es.n, es.direction);
+            ray = trace::spawn_ray(es.p, es.n, es.direction, accel.coordinate_scale());
         Rgb beta = es.throughput;
         const float beta_start = max_component(beta);
         if (!(beta_start > 0.0f) || !is_finite(beta)) return;
@@ -215,7 +215,7 @@ struct CausticTracer::Impl {
                 if (!(survive > 0.0f) || u_rr >= survive) break;
                 beta /= survive;
             }
-            ray = trace::spawn_ray(sp.p, sp.ng, wo_world);
+            ray = trace::spawn_ray(sp.p, sp.ng, wo_world, accel.coordinate_scale());
         }
     }
 

@@ -65,7 +65,8 @@ struct ClampCompensation::Impl {
             if (falloff <= 0.0f) continue;
             const Rgb f = r.sp.bsdf.eval(r.wo, wi);
             if (is_black(f)) continue;
-            if (accel.occluded(trace::spawn_ray_to(r.sp.p, r.sp.ng, l->position, Vec3(0.0f))))
+            if (accel.occluded(trace::spawn_ray_to(r.sp.p, r.sp.ng, l->position, Vec3(0.0f),
+                                                   accel.coordinate_scale())))
                 continue;
             out += f * wi.z * l->intensity * falloff * (missing(d) / (d * d));
         }
@@ -109,7 +110,7 @@ struct ClampCompensation::Impl {
         if (!bs) return out;
         const Vec3 wi_world = glm::normalize(r.sp.frame.to_world(bs->wi));
         if (glm::dot(wi_world, r.sp.ng) <= 0.0f) return out;
-        trace::Ray ray = trace::spawn_ray(r.sp.p, r.sp.ng, wi_world);
+        trace::Ray ray = trace::spawn_ray(r.sp.p, r.sp.ng, wi_world, accel.coordinate_scale());
         ray.tmax = d_min;
         const std::optional<trace::Hit> hit = accel.intersect(ray);
         if (!hit) return out;

@@ -84,9 +84,11 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
             const Vec3 wi = sp.frame.to_local(ls->wi);
             const Rgb f = diffuse_only ? sp.bsdf.eval_diffuse(wo, wi) : sp.bsdf.eval(wo, wi);
             if (!is_black(f) && trace::same_side(ls->wi, sp.ng, wi.z)) {
-                const trace::Ray shadow = std::isinf(ls->distance)
-                                              ? trace::spawn_ray(sp.p, sp.ng, ls->wi)
-                                              : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n);
+                const trace::Ray shadow =
+                    std::isinf(ls->distance)
+                        ? trace::spawn_ray(sp.p, sp.ng, ls->wi, m_accel.coordinate_scale())
+                        : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n,
+                                              m_accel.coordinate_scale());
                 if (!m_accel.occluded(shadow)) {
                     const float bsdf_pdf =
                         diffuse_only ? sp.bsdf.pdf_diffuse(wo, wi) : sp.bsdf.pdf(wo, wi);
@@ -108,7 +110,7 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
         throughput *= bs->weight;
         prev_bsdf_pdf = bs->pdf;
         prev_p = sp.p;
-        ray = trace::spawn_ray(sp.p, sp.ng, wi_world);
+        ray = trace::spawn_ray(sp.p, sp.ng, wi_world, m_accel.coordinate_scale());
 
         if (depth + 1 >= rr_depth) {
             // Russian roulette on the throughput (pbrt-v3 §14.5.1), never below a 5% survival

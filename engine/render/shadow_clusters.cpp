@@ -319,7 +319,7 @@ uint32_t ShadowClusters::level_for(const ShadowGroup& g, const Vec3& position,
                                    const LodChoice& lod) const {
     const float distance = glm::length(glm::max(glm::max(g.lo - position, position - g.hi), 0.0f));
     const float allowed = std::max(lod.error_per_distance * distance, lod.error_anywhere);
-    uint32_t level = std::min<uint32_t>(lod.min_level, uint32_t(g.levels.size()) - 1);
+    uint32_t level = 0;
     // Without an allowance, not even a level that happens to be exact (a flat mesh's) is taken:
     // levels of detail off draw what they drew before.
     if (!(allowed > 0.0f)) return level;

@@ -56,12 +56,11 @@ struct ShadowGroup {
 };
 
 // Which level a group draws: the coarsest whose error is at most
-// max(error_per_distance × the distance from the VPL to the group's box, error_anywhere), and
-// at least min_level (or the group's coarsest, where it has fewer levels).
+// max(error_per_distance × the distance from the VPL to the group's box, error_anywhere). The
+// group a VPL lies in (distance 0) is drawn in full unless error_anywhere allows more.
 struct LodChoice {
     float error_per_distance = 0.0f;
     float error_anywhere = 0.0f;
-    uint32_t min_level = 0;
 };
 
 // Index ranges to draw, by kind: of full or simplified levels (which the shadow pass marks, so
@@ -90,11 +89,11 @@ public:
     // own levels.
     static constexpr size_t kLodChunkTriangles = 8192;
     // The levels' error targets, as fractions of a mesh's extent (meshoptimizer's measure).
-    // Level kProxyLevel (kProxyError) is the shadow proxy that surface VPLs draw at any distance
-    // (docs/results.md, "Shadow proxy", for the measurement behind it); level 1, at half its
-    // error, serves emitter VPLs a little nearer than the proxy's distance (the dragon's area
-    // light: 93 k → 43 k triangles per emitter VPL). Both are simplified from the full
-    // triangles; each further level from the previous one, at kLodErrorStep × its error.
+    // Level kProxyLevel (kProxyError) is the shadow proxy (docs/results.md, "Shadow proxy", for
+    // the measurement behind its error); level 1, at half its error, serves VPLs a little nearer
+    // than the proxy's distance. Like every level, a VPL draws it only as far away as LodChoice
+    // allows. Both are simplified from the full triangles; each further level from the previous
+    // one, at kLodErrorStep × its error.
     static constexpr float kProxyError = 1e-3f;
     static constexpr float kFinestError = 0.5f * kProxyError;
     static constexpr uint32_t kProxyLevel = 2;

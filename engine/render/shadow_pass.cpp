@@ -235,9 +235,12 @@ uint32_t ShadowPass::face_resolution(const light::Vpl& vpl) const {
 
 LodChoice ShadowPass::lod_choice(const light::Vpl& vpl, uint32_t res) const {
     LodChoice lod;
-    lod.min_level = m_options.proxy && vpl.path_length > 0 ? ShadowClusters::kProxyLevel : 0;
-    // A face's texel spans at most 2 / res radians, at its centre.
-    if (m_options.lod) lod.error_per_distance = kLodFootprint * 2.0f / float(res);
+    // A face's texel spans at most 2 / res radians, at its centre. No VPL draws a simplified level
+    // nearer than that rule allows: a coarser copy of the surface a VPL lies on stands in front
+    // of it and hides everything else (a surface VPL drawing the proxy at any distance lost every
+    // bounce after the first inside a closed sphere: tests/render/test_closed_interiors.cpp).
+    const bool simplified = m_options.lod && (m_options.proxy || vpl.path_length == 0);
+    if (simplified) lod.error_per_distance = kLodFootprint * 2.0f / float(res);
     return lod;
 }
 

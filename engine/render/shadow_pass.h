@@ -53,13 +53,12 @@ struct ShadowPassOptions {
     uint32_t max_batch = 32;
     // Whether a face draws only the clusters it can see (shadow_clusters.h) or every triangle.
     bool culling = true;
-    // Surface VPLs (path length ≥ 1) draw the large meshes' ShadowClusters::kProxyLevel at least
-    // (the shadow proxy),
-    // while emitter VPLs, whose shadows are the sharpest, may draw their full triangles.
+    // Surface VPLs (path length ≥ 1) draw the large meshes' simplified levels (the shadow proxy)
+    // where `lod` allows them; false: their full triangles.
     bool proxy = true;
     // Each VPL draws each large mesh at the coarsest level whose error stays below
     // kLodFootprint of a texel's footprint at the mesh's distance (shadow_clusters.h); false:
-    // level 0, or the proxy.
+    // level 0.
     bool lod = true;
     // Large meshes that bound a solid (closed_surface.h) draw only their faces towards a VPL
     // outside their box (the rasteriser culls the rest): the nearest surface along every ray

@@ -59,12 +59,12 @@ struct RenderOptions {
     // Each cube face draws only the triangle clusters it can see (shadow_clusters.h); false: every
     // triangle into every face (the A/B of mvpl bench --sweep).
     bool shadow_culling = true;
-    // Surface VPLs draw the simplified shadow proxy of the scene's large meshes
-    // (shadow_clusters.h); false: every VPL draws the full geometry.
+    // Surface VPLs draw the simplified levels of the scene's large meshes where shadow_lod allows
+    // them (shadow_clusters.h); false: surface VPLs draw the full geometry.
     bool shadow_proxy = true;
     // Each VPL draws each large mesh at the coarsest level of detail whose error stays below a
     // quarter of a shadow texel's footprint at the mesh's distance (shadow_clusters.h); false:
-    // full meshes, or the proxy.
+    // full meshes.
     bool shadow_lod = true;
     // Large meshes that bound a solid draw only their faces towards a VPL outside their box
     // (ShadowPassOptions::front_faces), and towards the camera outside it into the G-buffer (as

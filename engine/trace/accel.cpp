@@ -2,6 +2,7 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <atomic>
 #include <bit>
 #include <stdexcept>
@@ -113,6 +114,11 @@ Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_ma
     // Robust mode: watertight traversal, so that rays through shared edges do not leak light.
     rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
     rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_HIGH);
+    const scene::Bounds bounds = scene.bounds();
+    if (!bounds.empty()) {
+        const Vec3 far = glm::max(glm::abs(bounds.lo), glm::abs(bounds.hi));
+        m_coordinate_scale = std::max({far.x, far.y, far.z});
+    }
     m_impl->filters.reserve(scene.meshes.size());
     for (size_t id = 0; id < scene.meshes.size(); ++id) {
         const scene::Mesh& mesh = scene.meshes[id];

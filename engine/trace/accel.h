@@ -35,6 +35,9 @@ public:
     // too (glTF doubleSided: false), which light paths and shadow rays still hit.
     std::optional<Hit> intersect_camera(const Ray& ray) const;
 
+    // The scene's largest |coordinate|, for offset_ray_origin (ray.h).
+    float coordinate_scale() const { return m_coordinate_scale; }
+
     // Rays traced so far (closest-hit and shadow), for Mrays/s reports.
     uint64_t ray_count() const;
 
@@ -47,6 +50,7 @@ private:
 
     std::unique_ptr<Impl> m_impl;
     material::SceneMaterials m_materials;
+    float m_coordinate_scale = 1.0f;
 };
 
 }  // namespace mvpl::trace

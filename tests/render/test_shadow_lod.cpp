@@ -151,12 +151,10 @@ TEST(ShadowLevels, TheLevelFollowsTheDistance) {
         previous = level;
     }
     EXPECT_EQ(previous, g.levels.size() - 1);  // far enough: the coarsest
-    // At the mesh itself, only the proxy's minimum level; without an allowance, that level even
-    // far away.
-    const uint32_t proxy = ShadowClusters::kProxyLevel;
-    lod.min_level = proxy;
-    EXPECT_EQ(clusters.level_for(g, g.centre, lod), proxy);
-    EXPECT_EQ(clusters.level_for(g, g.centre + Vec3(1e3f), LodChoice{0.0f, 0.0f, proxy}), proxy);
+    // Inside the mesh's box, its full triangles whatever the allowance per distance: a coarser
+    // copy of the surface a VPL lies on would stand in front of it. Without an allowance, the
+    // full triangles even far away.
+    EXPECT_EQ(clusters.level_for(g, g.centre, lod), 0u);
     EXPECT_EQ(clusters.level_for(g, g.centre + Vec3(1e3f), LodChoice{}), 0u);
 }
 
@@ -190,7 +188,7 @@ LodErrors lod_errors(gpu::Context& context, const scene::Scene& s, const light::
     return e;
 }
 
-// Cube faces: the area light's and the surface VPLs' (which draw the proxy at least).
+// Cube faces: the area light's and the surface VPLs'.
 TEST_F(ShadowLodTest, CubeFacesDrawFewerTrianglesAtTheFullMapsError) {
     Sphere sphere{};
     const scene::Scene s = box_with_dense_sphere(sphere);

@@ -27,9 +27,9 @@ int non_finite_pixels(const Image& image) {
     return count;
 }
 
-// Shadow bias and clamping are relative to the scene's size, and the light tracer's ray offsets
-// to the magnitude of the coordinates: the same light paths at 10⁻³ and 10⁴ times the size give
-// the same image, to far below the noise between two seeds (1%: what a 1% deviation of every
+// Shadow bias and clamping are relative to the scene's size, and the CPU's ray offsets to the
+// magnitude of the coordinates (trace/ray.h): the same light paths at 10⁻⁶ … 10⁴ times the size
+// give the same image, on the GPU and in the oracle, to far below the noise between two seeds (1%: what a 1% deviation of every
 // pixel would be compared with the seed-to-seed relMSE is ~10⁻⁴ relative — any scale-dependent
 // epsilon that changed a visible fraction of shadow or clamp decisions would exceed it).
 TEST_F(ExtremeSceneTest, SameImageAtAnyScaleWithAreaAndPointLights) {
@@ -44,13 +44,18 @@ TEST_F(ExtremeSceneTest, SameImageAtAnyScaleWithAreaAndPointLights) {
             test::gpu_render(context(), *unit, test::monte_carlo_vpls(*unit, 32, 6, 5), settings);
         const double noise = compare_images(other_seed, base).rel_mse;
         ASSERT_GT(noise, 0.0);
-        for (float scale : {1e-3f, 1e4f}) {
+        const Image oracle_base =
+            test::oracle_render(*unit, test::monte_carlo_vpls(*unit, 32, 6, 4), settings);
+        for (float scale : {1e-6f, 1e-5f, 1e-4f, 1e-3f, 1e4f}) {
             scene::Scene s = *unit;
             test::scale_scene(s, scale);
-            const Image scaled =
-                test::gpu_render(context(), s, test::monte_carlo_vpls(s, 32, 6, 4), settings);
+            const light::VplSet vpls = test::monte_carlo_vpls(s, 32, 6, 4);
+            const Image scaled = test::gpu_render(context(), s, vpls, settings);
             EXPECT_EQ(non_finite_pixels(scaled), 0);
             EXPECT_LT(compare_images(scaled, base).rel_mse, 0.01 * noise) << "scale " << scale;
+            const Image oracle = test::oracle_render(s, vpls, settings);
+            EXPECT_LT(compare_images(oracle, oracle_base).rel_mse, 0.01 * noise)
+                << "oracle, scale " << scale;
         }
     }
 }

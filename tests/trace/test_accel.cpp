@@ -78,11 +78,14 @@ TEST_P(SelfIntersection, NoSelfHitsAtAnyScale) {
         const trace::SurfaceInteraction si = trace::make_interaction(s, *hit, down);
         Vec3 d = sample_cosine_hemisphere(Vec2(rng.next_float(), rng.next_float()));
         d = Frame(si.ng).to_world(d);
-        const auto next = accel.intersect(trace::spawn_ray(si.p, si.ng, d));
+        const auto next =
+            accel.intersect(trace::spawn_ray(si.p, si.ng, d, accel.coordinate_scale()));
         if (next && next->mesh == 0) ++self_hits;
         // Shadow ray to a point on the ceiling straight above (both surfaces face each other).
         const Vec3 target = si.p + Vec3(0.0f, scale, 0.0f);
-        if (accel.occluded(trace::spawn_ray_to(si.p, si.ng, target, Vec3(0, -1, 0)))) ++blocked;
+        if (accel.occluded(
+                trace::spawn_ray_to(si.p, si.ng, target, Vec3(0, -1, 0), accel.coordinate_scale())))
+            ++blocked;
     }
     EXPECT_EQ(self_hits, 0);
     EXPECT_EQ(blocked, 0);

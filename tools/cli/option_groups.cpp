@@ -96,10 +96,10 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                     "draw every triangle into every shadow face (default: only the clusters a "
                     "face can see)");
     parser.add_flag("--no-shadow-proxy", &args.no_shadow_proxy,
-                    "surface VPLs draw the full geometry into their shadow maps (default: the "
-                    "simplified proxy of meshes of 4096+ triangles)");
+                    "surface VPLs draw the full geometry into their shadow maps (default: "
+                    "the levels of detail of meshes of 4096+ triangles, as --no-shadow-lod says)");
     parser.add_flag("--no-shadow-lod", &args.no_shadow_lod,
-                    "shadow maps draw meshes of 4096+ triangles in full (or as the proxy) "
+                    "shadow maps draw meshes of 4096+ triangles in full "
                     "(default: each at the coarsest level of detail whose error stays below a "
                     "quarter of a shadow texel at its distance)");
     parser.add_flag("--no-backface-culling", &args.no_backface_culling,

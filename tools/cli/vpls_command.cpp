@@ -33,7 +33,7 @@ std::optional<trace::SurfaceInteraction> first_front_hit(const scene::Scene& sce
         if (!hit) return std::nullopt;
         const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, ray);
         if (si.front_face) return si;
-        ray = trace::spawn_ray(si.p, -si.ng, ray.direction);
+        ray = trace::spawn_ray(si.p, -si.ng, ray.direction, accel.coordinate_scale());
     }
     return std::nullopt;
 }
