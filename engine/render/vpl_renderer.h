@@ -63,7 +63,7 @@ struct RenderOptions {
     // them (shadow_clusters.h); false: surface VPLs draw the full geometry.
     bool shadow_proxy = true;
     // Each VPL draws each large mesh at the coarsest level of detail whose error stays below a
-    // quarter of a shadow texel's footprint at the mesh's distance (shadow_clusters.h); false:
+    // shadow texel's footprint at the mesh's distance (shadow_clusters.h); false:
     // full meshes.
     bool shadow_lod = true;
     // Large meshes that bound a solid draw only their faces towards a VPL outside their box

@@ -88,7 +88,7 @@ const float kJunctionReach = 4.0;
 // of it. The plane test's kFootprintBias covers it already; the junction lookups and the
 // orthographic maps' test allow it for those texels only, so that thin walls (never simplified)
 // shadow as before.
-const float kLodFootprint = 0.25;
+const float kLodFootprint = 1.0;
 
 // The distance a shadow texel holds, and the depth its level of detail may stand in front.
 vec2 stored_distance(float texel_value, float footprint) {

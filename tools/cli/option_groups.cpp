@@ -101,7 +101,7 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-shadow-lod", &args.no_shadow_lod,
                     "shadow maps draw meshes of 4096+ triangles in full "
                     "(default: each at the coarsest level of detail whose error stays below a "
-                    "quarter of a shadow texel at its distance)");
+                    "shadow texel at its distance)");
     parser.add_flag("--no-backface-culling", &args.no_backface_culling,
                     "shadow maps draw both faces of every triangle (default: closed meshes of "
                     "4096+ triangles only their faces towards a VPL outside them; the same image)");
