@@ -11,6 +11,7 @@
 #include "engine/gpu/embedded_shaders.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/material/material_codegen.h"
+#include "engine/render/closed_surface.h"
 
 namespace mvpl::render {
 namespace {
@@ -190,6 +191,13 @@ ShaderFeatures scene_features(const scene::Scene& scene, const ShaderOptions& op
         if (!drawn[i]) continue;
         graphs.push_back(materials.graph(int(i)));
         f.thin_walls = f.thin_walls || graphs.back().double_sided;
+    }
+    // A one-sided open surface is a zero-thickness occluder too: light transport keeps its back
+    // faces (README, "Conventions"), so a wall of one plane leaks at its junctions as a
+    // double-sided one does (tests/render/test_thin_walls.cpp). Only closed solids cannot.
+    for (const scene::Mesh& m : scene.meshes) {
+        if (f.thin_walls) break;
+        f.thin_walls = m.triangle_count() > 0 && !bounds_solid(m);
     }
     f.closure_types = material::scene_closure_types(graphs);
     return f;

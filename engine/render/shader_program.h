@@ -18,8 +18,9 @@ inline constexpr int kVplTypeCount = 5;
 struct ShaderFeatures {
     std::array<bool, kVplTypeCount> vpl_types{};  // indexed by light::VplType
     std::array<bool, material::kClosureTypeCount> closure_types{};
-    // A drawn material is double-sided, so the scene may hold zero-thickness walls: the shadow
-    // test adds its junction lookup (shaders/render/shading_template.glsl, visibility()).
+    // A drawn material is double-sided or a mesh is open (not a solid: closed_surface.h), so the
+    // scene may hold zero-thickness walls: the shadow test adds its junction lookup
+    // (shaders/render/shading_template.glsl, visibility()).
     bool thin_walls = false;
     // Glossy pixels are shaded at the end of their specular chains (engine/render/chain_layer.h):
     // the shading pass reads the chain records (binding 5). Not in all(): it needs the layer.

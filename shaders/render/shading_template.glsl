@@ -68,20 +68,22 @@ layout(push_constant) uniform ShadingPushBlock { ShadingPush pc; };
 // along w_c the receiver's plane then lies (kNormalOffset − 0.71) · d · τ · tan θ beyond the
 // moved point, so the point's own distance can be compared without self-shadowing) and asks
 // whether something stands in front of that point within kJunctionReach footprints: a wall at
-// the receiver's foot (4: the plane test's leak band, its allowance plus half a texel diagonal,
+// the receiver's foot (8: the plane test's leak band, its allowance plus half a texel diagonal,
 // 1.71 footprints, plus this lookup's own spread of 0.71 · tan β footprints on a wall met at up
-// to β = 72°). Only such near occluders count, so that the offset, which moves the
+// to β = 83°; 4, for 72°, leaked beside a wall met at 69° at 256² faces in the family of
+// test_thin_walls.cpp). Only such near occluders count, so that the offset, which moves the
 // lookup by up to kNormalOffset texel angles, does not move the shadows of distant occluders
 // (shadowing by every occluder through the offset lookup raised the GPU-vs-oracle error
-// 2.6–3.6× on the Cornell box and the two-room scene). It is generated only where a drawn
-// material is double-sided (ShaderFeatures::thin_walls): a zero-thickness wall that is seen from
-// both sides is one, and a closed model does not pay for the second lookup.
+// 2.6–3.6× on the Cornell box and the two-room scene; a reach of 8 instead of 4 left it
+// unchanged). It is generated where a drawn material is double-sided or a mesh is open
+// (ShaderFeatures::thin_walls): a plane is a zero-thickness wall whether one or both of its
+// sides are shaded, and only a scene of closed solids does not pay for the second lookup.
 const float kConstantBias = 2e-4;
 const float kFootprintBias = 1.0;
 const float kSlopeBias = 1.0;
 const float kMaxSlope = 4.0;
 const float kNormalOffset = 1.0;
-const float kJunctionReach = 4.0;
+const float kJunctionReach = 8.0;
 // Texels drawn from a simplified level of detail hold their distance negated (shadow.frag): such a
 // surface lies up to this many footprints from the full one (ShadowPass::kLodFootprint), so a
 // receiver on the full surface is not shadowed by its own coarser copy standing that far in front

@@ -11,6 +11,7 @@
 
 #include "engine/gpu/spirv_cache.h"
 #include "engine/material/material_codegen.h"
+#include "engine/render/closed_surface.h"
 #include "engine/render/shader_program.h"
 #include "engine/scene/scene_loader.h"
 
@@ -90,21 +91,34 @@ TEST(ShaderProgram, CornellBoxHasNoMicrofacetCodeNoSamplerAndOnlyItsLightTypes) 
     EXPECT_TRUE(contains(s.g_buffer_frag.source, "c = lambertian("));
 }
 
-// The shadow test's junction lookup (thin walls) comes with a drawn double-sided material only:
-// the Cornell box's closed, one-sided walls do without it; a double-sided material that no mesh
-// draws adds nothing; one that a mesh draws adds it.
-TEST(ShaderProgram, OnlyDoubleSidedScenesGetTheJunctionLookup) {
-    scene::Scene scene = scene::load_scene(kCornell);
+// The shadow test's junction lookup (thin walls) comes with a zero-thickness occluder only: an
+// open mesh (one-sided or not), or a drawn double-sided material. The Cornell box's solids alone
+// do without it; its floor, an open quad, adds it; a double-sided material that no
+// mesh draws adds nothing; one that a mesh draws adds it.
+TEST(ShaderProgram, OnlyScenesWithZeroThicknessOccludersGetTheJunctionLookup) {
+    const scene::Scene cornell = scene::load_scene(kCornell);
+    scene::Scene scene = cornell;
+    scene.meshes.clear();
+    for (const scene::Mesh& m : cornell.meshes) {
+        if (bounds_solid(m)) scene.meshes.push_back(m);
+    }
+    ASSERT_FALSE(scene.meshes.empty());  // a box
     const std::string junction = "kJunctionReach * footprint";
     EXPECT_FALSE(generate_scene_shaders(scene, {}).features.thin_walls);
     EXPECT_FALSE(contains(generate_scene_shaders(scene, {}).shading_comp.source, junction));
-    scene.materials.push_back(scene.materials[0]);
+    scene.materials.push_back(scene.materials[size_t(scene.meshes[0].material)]);
     scene.materials.back().double_sided = true;
     EXPECT_FALSE(contains(generate_scene_shaders(scene, {}).shading_comp.source, junction));
-    scene.meshes[0].material = int(scene.materials.size()) - 1;
-    const SceneShaders with_wall = generate_scene_shaders(scene, {});
-    EXPECT_TRUE(with_wall.features.thin_walls);
-    EXPECT_TRUE(contains(with_wall.shading_comp.source, junction));
+    scene::Scene with_double_sided = scene;
+    with_double_sided.meshes[0].material = int(scene.materials.size()) - 1;
+    const SceneShaders double_sided = generate_scene_shaders(with_double_sided, {});
+    EXPECT_TRUE(double_sided.features.thin_walls);
+    EXPECT_TRUE(contains(double_sided.shading_comp.source, junction));
+    scene.meshes.push_back(cornell.meshes[1]);  // the floor
+    ASSERT_FALSE(bounds_solid(scene.meshes.back()));
+    const SceneShaders with_floor = generate_scene_shaders(scene, {});
+    EXPECT_TRUE(with_floor.features.thin_walls);
+    EXPECT_TRUE(contains(with_floor.shading_comp.source, junction));
 }
 
 TEST(ShaderProgram, ATexturedGlossyMaterialAddsExactlyItsNodes) {

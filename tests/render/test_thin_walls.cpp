@@ -1,10 +1,13 @@
-// Issue 13, item 3: a zero-thickness double-sided wall must shadow as exact visibility does,
-// along the lines where it meets the floor and the back wall too. A thick wall hides the one-texel
-// band on its far side where a shadow-map test is unsure; a single plane leaves that band in
-// view, and a test that leaks there draws bright lines along its junctions.
+// Issue 13, item 3: a zero-thickness wall, double-sided or one-sided, must shadow as exact
+// visibility does, along the lines where it meets the floor and the back wall too (issue 32: at
+// every shadow resolution and wall position against the texel grid, not only the first one). A
+// thick wall hides the one-texel band on its far side where a shadow-map test is unsure; a single
+// plane leaves that band in view, and a test that leaks there draws bright lines along its
+// junctions.
 #include <gtest/gtest.h>
 
 #include <array>
+#include <ostream>
 #include <string>
 #include <utility>
 #include <vector>
@@ -23,21 +26,34 @@ namespace {
 using ThinWallTest = gpu::testing::GpuTest;
 
 constexpr int kSize = 128;
-constexpr uint32_t kShadowResolution = 64;
 constexpr float kHeight = 2.5f;
 constexpr int kWallMesh = 3;
 
+// One member of the family: the scene's scale, the wall's sides, the shadow faces' side and where
+// the wall stands (x), which moves its junctions against the texel grid.
+struct WallCase {
+    float scale = 1.0f;
+    bool double_sided = true;
+    uint32_t shadow_resolution = 64;
+    float wall_x = 0.0f;
+};
+
+void PrintTo(const WallCase& c, std::ostream* os) {
+    *os << "scale " << c.scale << (c.double_sided ? ", double-sided, " : ", one-sided, ")
+        << c.shadow_resolution << "² faces, wall at x = " << c.wall_x;
+}
+
 // A floor (y = 0), a back wall (z = −2) and a ceiling (y = kHeight), x and z in [−2, 2], and a
-// single double-sided plane at x = 0 that runs from floor to ceiling and from the back wall to the
-// floor's front edge: junctions without a crack and no free edge whose shadow could fall on the
+// single plane at x = wall_x (facing +x) that runs from floor to ceiling and from the back wall to
+// the floor's front edge: junctions without a crack and no free edge whose shadow could fall on the
 // floor, so that every receiver on one side of the wall is dark for a VPL on the other, exactly.
 // The camera stands in front of the wall's end and sees both sides. Without `ceiling` its mesh is
 // left empty (for a directional VPL from above) and the wall is taller.
-scene::Scene thin_wall_scene(bool ceiling = true) {
+scene::Scene thin_wall_scene(const WallCase& c, bool ceiling = true) {
     scene::Scene s;
     s.materials = {test::diffuse_material(Rgb(0.6f, 0.6f, 0.55f)),
                    test::diffuse_material(Rgb(0.3f, 0.5f, 0.7f))};
-    s.materials[1].double_sided = true;
+    s.materials[1].double_sided = c.double_sided;
     s.meshes.push_back(test::make_quad(Vec3(-2, 0, -2), Vec3(0, 0, 4), Vec3(4, 0, 0), 0));
     s.meshes.push_back(test::make_quad(Vec3(-2, 0, -2), Vec3(4, 0, 0), Vec3(0, kHeight, 0), 0));
     s.meshes.push_back(test::make_quad(Vec3(-2, kHeight, -2), Vec3(4, 0, 0), Vec3(0, 0, 4), 0));
@@ -45,7 +61,7 @@ scene::Scene thin_wall_scene(bool ceiling = true) {
     // Without the ceiling the wall rises to 3 kHeight, so that its top edge shades nothing the
     // camera sees.
     const float wall = ceiling ? kHeight : 3.0f * kHeight;
-    s.meshes.push_back(test::make_quad(Vec3(0, 0, -2), Vec3(0, wall, 0), Vec3(0, 0, 4), 1));
+    s.meshes.push_back(test::make_quad(Vec3(c.wall_x, 0, -2), Vec3(0, wall, 0), Vec3(0, 0, 4), 1));
     s.camera = test::look_at(Vec3(0.03f, 1.3f, 3.4f), Vec3(-0.05f, 0.45f, -0.9f), 0.75f);
     s.has_camera = true;
     return s;
@@ -76,10 +92,10 @@ std::vector<light::Vpl> thin_wall_vpls() {
     return {point, surface, other_side, sun};
 }
 
-RenderOptions thin_wall_options() {
+RenderOptions thin_wall_options(uint32_t shadow_resolution) {
     RenderOptions options;
     options.width = options.height = kSize;
-    options.shadow_resolution = kShadowResolution;
+    options.shadow_resolution = shadow_resolution;
     options.clamp = 0.0f;
     options.jitter = false;
     return options;
@@ -97,10 +113,12 @@ struct Classified {
 
 // The planes that meet at the junctions, as (unit normal, offset): floor, back wall, ceiling,
 // thin wall.
-constexpr std::array<std::pair<Vec3, float>, 4> kPlanes = {{{Vec3(0, 1, 0), 0.0f},
-                                                            {Vec3(0, 0, 1), -2.0f},
-                                                            {Vec3(0, 1, 0), kHeight},
-                                                            {Vec3(1, 0, 0), 0.0f}}};
+std::array<std::pair<Vec3, float>, 4> planes(float wall_x) {
+    return {{{Vec3(0, 1, 0), 0.0f},
+             {Vec3(0, 0, 1), -2.0f},
+             {Vec3(0, 1, 0), kHeight},
+             {Vec3(1, 0, 0), wall_x}}};
+}
 
 // Where the shadow map may legitimately disagree with exact visibility at receiver p (geometric
 // normal n, facing the VPL) because an occluder's plane passes close to it; the two lookups of
@@ -138,14 +156,15 @@ Vec3 light_point(const light::Vpl& vpl, const Vec3& p) {
     return vpl.type == light::VplType::Directional ? p - 100.0f * vpl.normal : vpl.position;
 }
 
-Band junction_band(const Vec3& p, const Vec3& n, const light::Vpl& vpl, float tau, float texel) {
+Band junction_band(const Vec3& p, const Vec3& n, const light::Vpl& vpl, float tau, float texel,
+                   float wall_x) {
     const LightGeometry g = light_geometry(vpl, p, tau, texel);
     const float cos_theta = glm::dot(n, g.to_light);
     const float sin_theta = std::sqrt(std::max(0.0f, 1.0f - cos_theta * cos_theta));
     const Vec3 lookup = p + n * (g.footprint * sin_theta);
     const LightGeometry moved = light_geometry(vpl, lookup, tau, texel);
     Band band;
-    for (const auto& [normal, offset] : kPlanes) {
+    for (const auto& [normal, offset] : planes(wall_x)) {
         if (std::abs(glm::dot(normal, n)) > 0.999f) continue;  // the receiver's own plane
         const float cos_beta = glm::dot(normal, moved.to_light);
         const float sin_beta = std::sqrt(std::max(0.0f, 1.0f - cos_beta * cos_beta));
@@ -160,7 +179,7 @@ Band junction_band(const Vec3& p, const Vec3& n, const light::Vpl& vpl, float ta
 // Every floor, back-wall and ceiling pixel against exact visibility (a segment test against the
 // wall): a misclassified pixel must lie in the band (junction_band) that allows its error.
 Classified classify(const scene::Scene& scene, const Image& image, const light::Vpl& vpl, float tau,
-                    float texel) {
+                    float texel, float wall_x) {
     Classified c;
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
@@ -173,7 +192,7 @@ Classified classify(const scene::Scene& scene, const Image& image, const light::
             if (max_component(expected) <= 0.0f) continue;
             const bool in_shadow = testing::segment_hits_mesh(scene.meshes[kWallMesh], hit->p,
                                                               light_point(vpl, hit->p));
-            const Band band = junction_band(hit->p, hit->ng, vpl, tau, texel);
+            const Band band = junction_band(hit->p, hit->ng, vpl, tau, texel, wall_x);
             const bool may_differ = in_shadow ? band.may_leak : band.may_darken;
             c.in_band += may_differ;
             const Rgb got = image.at(x, y);
@@ -187,7 +206,7 @@ Classified classify(const scene::Scene& scene, const Image& image, const light::
             }
             if (in_shadow) {
                 ++c.shadowed;
-                c.junction += std::abs(hit->p.x) < 0.05f;
+                c.junction += std::abs(hit->p.x - wall_x) < 0.05f;
             } else {
                 ++c.lit;
                 c.worst_lit = std::max(c.worst_lit, max_component(glm::abs(got - expected)));
@@ -198,32 +217,27 @@ Classified classify(const scene::Scene& scene, const Image& image, const light::
     return c;
 }
 
-class ThinWallScaleTest : public ThinWallTest, public ::testing::WithParamInterface<float> {};
+class ThinWallFamily : public ThinWallTest, public ::testing::WithParamInterface<WallCase> {};
 
-TEST_P(ThinWallScaleTest, AZeroThicknessWallShadowsUpToItsJunctions) {
-    const float scale = GetParam();
+TEST_P(ThinWallFamily, AZeroThicknessWallShadowsUpToItsJunctions) {
+    const WallCase wc = GetParam();
     std::vector<light::Vpl> vpls = thin_wall_vpls();
     for (size_t i = 0; i < vpls.size(); ++i) {
         SCOPED_TRACE("VPL " + std::to_string(i));
         const bool ceiling = vpls[i].type != light::VplType::Directional;
-        scene::Scene scene = thin_wall_scene(ceiling);
-        test::scale_scene(scene, scale);
+        scene::Scene scene = thin_wall_scene(wc, ceiling);
+        test::scale_scene(scene, wc.scale);
         VplRenderer renderer(context(), scene);
         light::Vpl vpl = vpls[i];
-        vpl.position *= scale;
+        vpl.position *= wc.scale;
         // The same irradiance at s times the distance; a directional VPL's does not depend on it.
-        if (vpl.type != light::VplType::Directional) vpl.power *= scale * scale;
-        const Image image = renderer.render({{vpl}}, thin_wall_options());
+        if (vpl.type != light::VplType::Directional) vpl.power *= wc.scale * wc.scale;
+        const Image image = renderer.render({{vpl}}, thin_wall_options(wc.shadow_resolution));
         // Classified in the unit scene: the image must not depend on the scale.
-        scene::Bounds bounds;
-        for (const scene::Mesh& mesh : thin_wall_scene(ceiling).meshes) {
-            for (const Vec3& p : mesh.positions)
-                bounds.extend(p);
-        }
-        const float texel =
-            directional_frame(vpls[i].normal, bounds).extent / float(kShadowResolution);
-        const Classified c = classify(thin_wall_scene(ceiling), image, vpls[i],
-                                      2.0f / float(kShadowResolution), texel);
+        const scene::Scene unit = thin_wall_scene(wc, ceiling);
+        const float res = float(wc.shadow_resolution);
+        const float texel = directional_frame(vpls[i].normal, unit.bounds()).extent / res;
+        const Classified c = classify(unit, image, vpls[i], 2.0f / res, texel, wc.wall_x);
         EXPECT_GT(c.shadowed, 200);
         EXPECT_GT(c.junction, 10);
         EXPECT_GT(c.lit, 500);
@@ -235,7 +249,22 @@ TEST_P(ThinWallScaleTest, AZeroThicknessWallShadowsUpToItsJunctions) {
     }
 }
 
-INSTANTIATE_TEST_SUITE_P(Scales, ThinWallScaleTest, ::testing::Values(1.0f, 1e-3f, 1e4f));
+// Scales 10⁻³, 1 and 10⁴; both kinds of wall; shadow faces of 64², 256² and 1024²; the wall at
+// x = 0 and moved off the grid by an irrational-looking fraction of a texel.
+std::vector<WallCase> wall_family() {
+    std::vector<WallCase> cases;
+    for (const float scale : {1.0f, 1e-3f, 1e4f}) {
+        for (const bool double_sided : {true, false}) {
+            for (const uint32_t res : {64u, 256u, 1024u}) {
+                const float wall_x = res == 64u ? 0.0f : res == 256u ? -0.0137f : 0.0071f;
+                cases.push_back({scale, double_sided, res, wall_x});
+            }
+        }
+    }
+    return cases;
+}
+
+INSTANTIATE_TEST_SUITE_P(Family, ThinWallFamily, ::testing::ValuesIn(wall_family()));
 
 }  // namespace
 }  // namespace mvpl::render
