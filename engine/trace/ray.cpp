@@ -8,8 +8,9 @@ namespace mvpl::trace {
 
 Vec3 offset_ray_origin(const Vec3& p, const Vec3& ng, const Vec3& direction,
                        float coordinate_scale) {
-    // Constants from Wächter and Binder (Ray Tracing Gems, ch. 6): below kOrigin the float grid is
-    // too fine for integer ULP steps, so a small absolute offset takes over near the origin.
+    // Constants from Wächter and Binder (Ray Tracing Gems, ch. 6), for a scene of about a metre:
+    // below `origin` the float grid is too fine for integer ULP steps, so a small absolute offset
+    // takes over near the origin. Both shrink with a smaller scene (ray.h).
     const float scale = std::clamp(coordinate_scale, 1e-30f, 1.0f);
     const float origin = scale / 32.0f;
     const float float_scale = scale / 65536.0f;
