@@ -53,7 +53,9 @@ void make_flat(Mesh& mesh) {
 
 }  // namespace
 
-Scene load_scene(const std::string& path, const LoadOptions& options) {
+namespace {
+
+Scene load_by_extension(const std::string& path, const LoadOptions& options) {
     const std::string extension = lower_extension(path);
     if (extension == ".xml") return load_mitsuba(path, options);
     if (extension == ".gltf" || extension == ".glb") return load_gltf(path);
@@ -63,6 +65,14 @@ Scene load_scene(const std::string& path, const LoadOptions& options) {
                                (extension.empty() ? std::string(" (no file extension)")
                                                   : " '" + extension + "'") +
                                "; expected .gltf, .glb, .ply, .obj or .xml");
+}
+
+}  // namespace
+
+Scene load_scene(const std::string& path, const LoadOptions& options) {
+    Scene scene = load_by_extension(path, options);
+    check_scene_size(scene, path);
+    return scene;
 }
 
 Material default_mesh_material() {

@@ -6,6 +6,8 @@
 #include <sstream>
 #include <vector>
 
+#include "engine/core/error.h"
+
 namespace mvpl::scene {
 namespace {
 
@@ -33,6 +35,16 @@ double twice_area(const Mesh& mesh, size_t triangle) {
 }
 
 }  // namespace
+
+void check_scene_size(const Scene& scene, const std::string& path) {
+    const Bounds b = scene.bounds();
+    if (b.empty()) return;
+    const double size = glm::length(DVec3(b.hi) - DVec3(b.lo));
+    if (size >= kMinSceneSize) return;
+    throw InputError(path, "the scene's geometry is " + number_text(size) +
+                               " m across, below the smallest size rendered right (" +
+                               number_text(kMinSceneSize) + " m): scale it up");
+}
 
 std::string number_text(double value) {
     char text[64];

@@ -28,6 +28,14 @@ namespace mvpl::scene {
 // two and a half times the distance to the Moon.
 inline constexpr double kMaxCoordinate = 1e9;
 
+// Smallest size of a scene's geometry (its bounding box's diagonal), in metres. Ray offsets and
+// shadow biases are relative to the scene (trace/ray.h, render/shadow_pass.h): the Cornell box
+// renders the same from 2·10⁻⁸ m across (scale 10⁻⁸) up (tests: from 10⁻⁶), and 0.2–20 % off its
+// unit-scale image at 2·10⁻¹⁰ (path tracer, oracle and GPU; squared distances approach float's
+// smallest normal numbers). 10⁻⁷ m, a tenth of a micrometre, keeps a factor of five above the
+// last scale measured right.
+inline constexpr double kMinSceneSize = 1e-7;
+
 // Largest colour, intensity or other multiplicative factor (emissive factor × strength, a light's
 // colour × intensity, specular colour, normal scale, texture-transform offset and scale, texture
 // coordinates). Shaders multiply such a value in float with a few others of its kind and with
@@ -53,6 +61,10 @@ inline constexpr double kMaxPower = 1e22;
 // clips is the camera's business (scene/camera.h), the same for every renderer.
 inline constexpr double kMinYfov = 1e-3;
 inline constexpr double kMaxYfov = std::numbers::pi - 1e-6;
+
+// Throws InputError naming `path` when the scene's geometry is smaller than kMinSceneSize (a
+// scene without triangles passes: it has no size to be wrong about).
+void check_scene_size(const Scene& scene, const std::string& path);
 
 // A double as a person would write it ("0.5", "1e+30"): the shortest text that reads back as the
 // same value (as the same float when it is exactly one), so that a value and the limit it

@@ -88,6 +88,17 @@ TEST_F(SceneRange, PositionsUpToTheLimitLoadAndBeyondAreRefused) {
         << message;
 }
 
+// The smallest scene (kMinSceneSize): the unit triangle scaled to 10⁻⁷ m across and a little
+// more loads; scaled below, it is refused in one line that names the size; a scene of one point
+// has no size at all.
+TEST_F(SceneRange, ScenesBelowTheSmallestSizeAreRefused) {
+    // The triangle's diagonal is √2 units: scale 10⁻⁷ makes it 1.41·10⁻⁷ m.
+    EXPECT_NO_THROW(load_scene(triangle(R"("scale": [1e-7, 1e-7, 1e-7])")));
+    EXPECT_TRUE(contains(refusal(triangle(R"("scale": [5e-8, 5e-8, 5e-8])")),
+                         "smallest size rendered right (1e-07 m)"));
+    EXPECT_TRUE(contains(refusal(triangle(R"("scale": [0, 0, 0])")), "is 0 m across"));
+}
+
 TEST_F(SceneRange, NodeValuesNameTheirJsonPath) {
     EXPECT_TRUE(contains(refusal(triangle(R"("translation": [0, 0, -2e11])")),
                          "nodes[0].translation[2] is -2e+11, beyond the supported magnitude"));
