@@ -47,7 +47,7 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
         // alone picked mostly black texels of DamagedHelmet's emissive map: 134 VPLs from 4096
         // light paths.
         const double radiance = luminance(scene.materials[mesh.material].emission());
-        const bool textured = scene.materials[mesh.material].emissive_texture.texture >= 0;
+        const bool textured = scene.materials[mesh.material].emission_texture().texture >= 0;
         for (size_t t = 0; t < mesh.triangle_count(); ++t) {
             const TrianglePoints tri = triangle_points(mesh, int(t));
             double weight = radiance;

@@ -41,27 +41,12 @@ private:
 
 }  // namespace
 
-MaterialGraph graph_from_gltf(const scene::Material& m, const GltfGraphOptions& options) {
-    MaterialGraph g;
-    g.double_sided = m.double_sided;
+namespace {
+
+// The metallic-roughness closure node (with KHR_materials_specular, _ior and _transmission) for
+// the base colour `base`; sets the graph's transmission output.
+Node metal_rough_closure(MaterialGraph& g, const scene::Material& m, NodeInput base) {
     Builder b(g);
-    NodeInput base = b.value(m.base_color_texture, Vec4(m.base_color, m.base_alpha), kAllChannels);
-    if (options.vertex_colors) {
-        Node colour;
-        colour.kind = &node_kind("vertex_color");
-        Node product;
-        product.kind = &node_kind("multiply");
-        product.inputs[0] = base;
-        product.inputs[1] = {g.add(colour), kAllChannels};
-        base = {g.add(product), kAllChannels};
-    }
-    g.alpha_mode = m.alpha_mode;
-    g.alpha_cutoff = m.alpha_cutoff;
-    // Before the transmission mix below, which overwrites the alpha channel.
-    if (m.alpha_mode != scene::AlphaMode::Opaque) {
-        g.alpha = m.opacity_texture.valid() ? b.value(m.opacity_texture, Vec4(m.base_alpha), 3)
-                                            : NodeInput{base.node, 3};
-    }
     // metallicRoughnessTexture: roughness in G, metallic in B; one texture node serves both.
     NodeInput metallic;
     NodeInput roughness;
@@ -124,7 +109,74 @@ MaterialGraph graph_from_gltf(const scene::Material& m, const GltfGraphOptions& 
         closure.kind = &node_kind("metal_rough");
         closure.inputs = {base, metallic, roughness, specular, specular_color, ior};
     }
-    g.closure = g.add(closure);
+    return closure;
+}
+
+// KHR_materials_pbrSpecularGlossiness: specular in the texture's RGB, glossiness in its A; one
+// texture node serves both.
+Node spec_gloss_closure(MaterialGraph& g, const scene::Material& m, NodeInput diffuse) {
+    Builder b(g);
+    const NodeInput specular = b.value(m.specular_glossiness_texture,
+                                       Vec4(m.spec_gloss_specular, m.glossiness), kAllChannels);
+    Node closure;
+    closure.kind = &node_kind("spec_gloss");
+    closure.inputs[0] = diffuse;
+    closure.inputs[1] = specular;
+    closure.inputs[2] = {specular.node, 3};
+    return closure;
+}
+
+// KHR_materials_unlit: a surface that reflects nothing (a black Lambertian) and emits its base
+// colour (node_graph.h says why an emitter).
+Node unlit_closure(MaterialGraph& g, const scene::Material& m, NodeInput base) {
+    if (m.is_emissive()) {
+        Node e;
+        e.kind = &node_kind("emission");
+        e.value = Vec4(1.0f);
+        e.inputs[0] = base;
+        g.emission = g.add(e);
+    }
+    Node closure;
+    closure.kind = &node_kind("lambertian");
+    closure.inputs[0] = {g.add(constant(Vec4(0.0f, 0.0f, 0.0f, 1.0f))), kAllChannels};
+    return closure;
+}
+
+}  // namespace
+
+MaterialGraph graph_from_gltf(const scene::Material& m, const GltfGraphOptions& options) {
+    MaterialGraph g;
+    g.double_sided = m.double_sided;
+    Builder b(g);
+    NodeInput base = b.value(m.base_color_texture, Vec4(m.base_color, m.base_alpha), kAllChannels);
+    if (options.vertex_colors) {
+        Node colour;
+        colour.kind = &node_kind("vertex_color");
+        Node product;
+        product.kind = &node_kind("multiply");
+        product.inputs[0] = base;
+        product.inputs[1] = {g.add(colour), kAllChannels};
+        base = {g.add(product), kAllChannels};
+    }
+    g.alpha_mode = m.alpha_mode;
+    g.alpha_cutoff = m.alpha_cutoff;
+    // Before the transmission mix, which overwrites the alpha channel.
+    if (m.alpha_mode != scene::AlphaMode::Opaque) {
+        g.alpha = m.opacity_texture.valid() ? b.value(m.opacity_texture, Vec4(m.base_alpha), 3)
+                                            : NodeInput{base.node, 3};
+    }
+    switch (m.shading) {
+        case scene::ShadingModel::Unlit:
+            // The spec ignores every other property "related to lighting or colour".
+            g.closure = g.add(unlit_closure(g, m, base));
+            return g;
+        case scene::ShadingModel::SpecGloss:
+            g.closure = g.add(spec_gloss_closure(g, m, base));
+            break;
+        case scene::ShadingModel::MetalRough:
+            g.closure = g.add(metal_rough_closure(g, m, base));
+            break;
+    }
 
     if (m.is_emissive() || (m.emissive_texture.valid() && max_component(m.emission()) > 0.0f)) {
         Node e;

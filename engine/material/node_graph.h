@@ -68,7 +68,19 @@ struct GltfGraphOptions {
     bool vertex_colors = false;
 };
 
-// A glTF metallic-roughness material as a graph. The closure node is the narrowest that
+// A glTF material as a graph. KHR_materials_pbrSpecularGlossiness: the spec_gloss closure node
+// (nodes/spec_gloss.cpp gives the exact mapping onto the dielectric-over-diffuse closure).
+//
+// KHR_materials_unlit ("a constantly shaded surface that is independent of lighting", colour =
+// base colour · texture · COLOR_0): a black Lambertian closure (it reflects nothing) with an
+// emission node of that colour, so an unlit surface is an area light of radiance base colour in
+// every renderer. Why an emitter rather than Blender's camera-rays-only trick: it is the one
+// reading in which the surface shows the same radiance to every ray — the camera, a mirror, and
+// the surfaces it faces — so the path tracer, the light tracer, the VPLs and the oracle need no
+// camera-ray special case and agree by construction; its light onto the scene is what its baked
+// shading already claims it sends.
+//
+// Metallic-roughness: the closure node is the narrowest that
 // represents the material exactly: constant metallic 0 and specular 0 → Lambertian, constant
 // metallic 1 → GGX conductor, constant metallic 0 → dielectric over diffuse (or rough dielectric
 // for KHR_materials_transmission = 1), otherwise the metal-rough mix.

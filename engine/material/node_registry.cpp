@@ -18,7 +18,8 @@
     X(GgxConductor)        \
     X(DielectricDiffuse)   \
     X(MetalRough)          \
-    X(RoughDielectric)
+    X(RoughDielectric)     \
+    X(SpecGloss)
 
 namespace mvpl::material {
 namespace nodes {

@@ -14,8 +14,10 @@ struct EnvironmentChoice {
     Rgb color{1.0f};
     float scale = 1.0f;
     float rotation_degrees = 0.0f;  // --env-rotate, about +Y
-    // A scene without any emitter gets a uniform white sky of radiance `scale` (and one line on
-    // stderr saying so), as glTF viewers light such models; false keeps it black.
+    // A scene that does not light itself (light::SceneLighting::lights_itself: no punctual
+    // light or environment, and emission below light::kMinEmittedShare of a unit sky's) gets a
+    // uniform white sky of radiance `scale` (and one line on stderr saying so), as glTF viewers
+    // light such models; false keeps it dark.
     bool default_light = true;
 };
 

@@ -34,6 +34,8 @@ const char* const kSupportedExtensions[] = {
     "KHR_lights_punctual",
     "KHR_materials_transmission",
     "KHR_materials_volume",
+    "KHR_materials_unlit",
+    "KHR_materials_pbrSpecularGlossiness",
 };
 
 // Reads a whole regular file; `error` says why not in a few words. Devices and FIFOs are refused

@@ -54,6 +54,7 @@ private:
                        const std::string& slot) const;
 
     void read_extensions(Material& out) const;
+    void read_spec_gloss(const tinygltf::Value& ext, Material& out) const;
     void read_alpha(Material& out) const;
 
     const Document& m_doc;
@@ -212,6 +213,15 @@ void MaterialReader::read_extensions(Material& out) const {
                     "extensions." + name + "transmissionTexture");
     }
     if (const tinygltf::Value* ext =
+            find_extension(m_doc, extensions, "KHR_materials_pbrSpecularGlossiness", m_name)) {
+        read_spec_gloss(*ext, out);
+    }
+    // No properties: the base colour is what the surface shows (an unlit material that also
+    // names another shading model is undefined by the spec; unlit wins here).
+    if (find_extension(m_doc, extensions, "KHR_materials_unlit", m_name)) {
+        out.shading = ShadingModel::Unlit;
+    }
+    if (const tinygltf::Value* ext =
             find_extension(m_doc, extensions, "KHR_materials_volume", m_name)) {
         // Only the thickness factor matters here (thin-walled or solid); attenuation is not
         // modelled (clear glass) and the thickness texture only scales a non-zero factor.
@@ -220,6 +230,29 @@ void MaterialReader::read_extensions(Material& out) const {
             m_doc, read_number(m_doc, find_member(*ext, "thicknessFactor"), 0.0, where), kMaxFactor,
             where));
     }
+}
+
+// KHR_materials_pbrSpecularGlossiness: diffuse replaces the base colour (the same meaning: sRGB
+// RGB, linear A as coverage); specular and glossiness share one texture (sRGB RGB, linear A).
+void MaterialReader::read_spec_gloss(const tinygltf::Value& ext, Material& out) const {
+    const std::string name = "KHR_materials_pbrSpecularGlossiness.";
+    const std::string where = m_name + ".extensions." + name;
+    out.shading = ShadingModel::SpecGloss;
+    const std::vector<double> diffuse = read_numbers(m_doc, find_member(ext, "diffuseFactor"), 4,
+                                                     {1.0, 1.0, 1.0, 1.0}, where + "diffuseFactor");
+    out.base_color = colour(diffuse, where + "diffuseFactor", true);
+    out.base_alpha = fraction(diffuse[3], indexed(where + "diffuseFactor", 3));
+    out.base_color_texture = texture(find_member(ext, "diffuseTexture"), ColorSpace::Srgb,
+                                     "extensions." + name + "diffuseTexture");
+    out.spec_gloss_specular = colour(read_numbers(m_doc, find_member(ext, "specularFactor"), 3,
+                                                  {1.0, 1.0, 1.0}, where + "specularFactor"),
+                                     where + "specularFactor", true);
+    out.glossiness = fraction(
+        read_number(m_doc, find_member(ext, "glossinessFactor"), 1.0, where + "glossinessFactor"),
+        where + "glossinessFactor");
+    out.specular_glossiness_texture =
+        texture(find_member(ext, "specularGlossinessTexture"), ColorSpace::Srgb,
+                "extensions." + name + "specularGlossinessTexture");
 }
 
 }  // namespace

@@ -18,6 +18,12 @@ namespace mvpl::scene {
 // pass; Blend is stochastic (hashed) transparency where the renderers support it.
 enum class AlphaMode { Opaque, Mask, Blend };
 
+// Which glTF shading model a material uses: the core metallic-roughness, the specular-glossiness
+// of KHR_materials_pbrSpecularGlossiness (its diffuse in base_color, base_alpha and
+// base_color_texture, which mean the same there), or KHR_materials_unlit (the base colour is the
+// radiance the surface shows; material/node_graph.h says what light transport does with it).
+enum class ShadingModel { MetalRough, SpecGloss, Unlit };
+
 struct Material {
     std::string name;
     // glTF pbrMetallicRoughness; the texture channels are multiplied into the factors.
@@ -57,8 +63,20 @@ struct Material {
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::Opaque;
     float alpha_cutoff = 0.5f;  // Mask only
+    ShadingModel shading = ShadingModel::MetalRough;
+    // KHR_materials_pbrSpecularGlossiness: F0 colour (specularFactor times the texture's sRGB RGB)
+    // and glossiness (glossinessFactor times the texture's linear A).
+    Rgb spec_gloss_specular{1.0f};
+    float glossiness = 1.0f;
+    TextureRef specular_glossiness_texture;
 
-    Rgb emission() const { return emissive * emissive_strength; }
+    // The emitted radiance's factor and texture: KHR_materials_unlit shows its base colour as
+    // emission (material/node_graph.h), every other model its emissive factor and texture.
+    bool unlit() const { return shading == ShadingModel::Unlit; }
+    Rgb emission() const { return unlit() ? base_color : emissive * emissive_strength; }
+    const TextureRef& emission_texture() const {
+        return unlit() ? base_color_texture : emissive_texture;
+    }
     bool is_emissive() const { return max_component(emission()) > 0.0f; }
 };
 

@@ -102,7 +102,7 @@ void check_emitted_power(const Scene& scene, const EmitterName& name_light,
     for (size_t m = 0; m < area.size(); ++m) {
         if (area[m] == 0.0) continue;
         const Material& material = scene.materials[m];
-        const double radiance = max_channel(material.emissive) * double(material.emissive_strength);
+        const double radiance = max_channel(material.emission());
         // Lambertian emission from the front face: flux = π · A · L.
         emitters.push_back({name_material(int(m)) + " (radiance " + short_number(radiance) +
                                 " W/(sr m^2) over " + short_number(area[m]) + " m^2)",

@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -56,36 +57,76 @@ double rel_mse(const std::string& a, const std::string& b) {
 // specular chains (light/specular_chain.h; without them R ≈ 8, mean 0.92–0.94).
 constexpr double kNoiseRatioBound = 3.0;
 
+fs::path sample_dir() {
+    const fs::path dir = fs::temp_directory_path() / "mvpl_sample_models";
+    fs::create_directories(dir);
+    return dir;
+}
+
+// Renders `model` twice with each method (seeds 1 and 2) into dir; expects exit 0, finite
+// images and the noise ratio within kNoiseRatioBound; returns the paths {vpl1, pt1}.
+std::array<std::string, 2> expect_agrees_with_path_tracer(const fs::path& model,
+                                                          const fs::path& dir) {
+    const std::string name = model.stem().string();
+    SCOPED_TRACE(name);
+    const std::string common = shell_quote(model.string()) + " --res 48x48 --quiet ";
+    std::string vpl[2], pt[2];
+    for (int seed = 0; seed < 2; ++seed) {
+        const std::string s = std::to_string(seed + 1);
+        vpl[seed] = (dir / (name + "_vpl" + s + ".exr")).string();
+        pt[seed] = (dir / (name + "_pt" + s + ".exr")).string();
+        const auto r = run_mvpl_gpu("render " + common + "--vpls 512 --seed " + s + " -o " +
+                                    shell_quote(vpl[seed]));
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        const auto p = run_mvpl("reference " + common + "--spp 16 --seed " + s + " -o " +
+                                shell_quote(pt[seed]));
+        EXPECT_EQ(p.exit_code, 0) << p.err;
+        if (r.exit_code != 0 || p.exit_code != 0) return {};
+    }
+    const Rgb a = read_exr(vpl[0]).mean(), b = read_exr(pt[0]).mean();
+    EXPECT_TRUE(std::isfinite(luminance(a)) && std::isfinite(luminance(b)));
+    const double across = rel_mse(vpl[0], pt[0]);
+    const double noise = 0.5 * (rel_mse(vpl[0], vpl[1]) + rel_mse(pt[0], pt[1]));
+    const double ratio = across / std::max(noise, 1e-12);
+    EXPECT_LE(ratio, kNoiseRatioBound) << "relMSE " << across << ", noise " << noise;
+    ::testing::Test::RecordProperty(name, std::to_string(ratio));
+    std::printf("%-30s VPL/PT mean %.3f, relMSE %.4g, noise %.4g, ratio %.2f\n", name.c_str(),
+                luminance(a) / std::max(luminance(b), 1e-30f), across, noise, ratio);
+    return {vpl[0], pt[0]};
+}
+
 TEST(SampleModels, EveryModelRendersFiniteOnTheGpuAndWithThePathTracer) {
     const std::vector<fs::path> models = sample_models();
     if (models.empty()) GTEST_SKIP() << "../shared/gltf-samples is not beside this checkout";
-    const fs::path dir = fs::temp_directory_path() / "mvpl_sample_models";
-    fs::create_directories(dir);
-    for (const fs::path& model : models) {
-        const std::string name = model.stem().string();
-        SCOPED_TRACE(name);
-        const std::string common = shell_quote(model.string()) + " --res 48x48 --quiet ";
-        std::string vpl[2], pt[2];
-        for (int seed = 0; seed < 2; ++seed) {
-            const std::string s = std::to_string(seed + 1);
-            vpl[seed] = (dir / (name + "_vpl" + s + ".exr")).string();
-            pt[seed] = (dir / (name + "_pt" + s + ".exr")).string();
-            const auto r = run_mvpl_gpu("render " + common + "--vpls 512 --seed " + s + " -o " +
-                                        shell_quote(vpl[seed]));
-            ASSERT_EQ(r.exit_code, 0) << r.err;
-            const auto p = run_mvpl("reference " + common + "--spp 16 --seed " + s + " -o " +
-                                    shell_quote(pt[seed]));
-            ASSERT_EQ(p.exit_code, 0) << p.err;
+    const fs::path dir = sample_dir();
+    for (const fs::path& model : models)
+        expect_agrees_with_path_tracer(model, dir);
+}
+
+// KHR_materials_pbrSpecularGlossiness and KHR_materials_unlit (issue 32, item 6), once more on
+// their own so that they can be run alone. UnlitTest shows its base colours and nothing else:
+// every pixel of both images is a mix of black, orange (1, k, 0) and blue (0, k, 1), k = 0.2176
+// (anti-aliased edges), i.e. g = k (r + b) and r + b ≤ 1, to float precision (no shading, no
+// noise).
+TEST(SampleModels, MaterialExtensionModelsAgreeWithThePathTracer) {
+    const fs::path root = fs::path(MVPL_SOURCE_DIR) / ".." / "shared" / "gltf-samples";
+    const fs::path unlit = root / "UnlitTest" / "glTF" / "UnlitTest.gltf";
+    const fs::path spec_gloss =
+        root / "SpecGlossVsMetalRough" / "glTF" / "SpecGlossVsMetalRough.gltf";
+    if (!fs::exists(unlit) || !fs::exists(spec_gloss)) GTEST_SKIP() << "no sample models";
+    const fs::path dir = sample_dir();
+    expect_agrees_with_path_tracer(spec_gloss, dir);
+    constexpr float k = 0.217637640824031f;
+    for (const std::string& path : expect_agrees_with_path_tracer(unlit, dir)) {
+        if (path.empty()) continue;
+        const Image image = read_exr(path);
+        int coloured = 0;
+        for (const Rgb& p : image.pixels()) {
+            EXPECT_NEAR(p.g, k * (p.r + p.b), 1e-3f) << path;
+            EXPECT_LE(p.r + p.b, 1.0f + 1e-3f) << path;
+            coloured += p.r + p.b > 0.999f;
         }
-        const Rgb a = read_exr(vpl[0]).mean(), b = read_exr(pt[0]).mean();
-        ASSERT_TRUE(std::isfinite(luminance(a)) && std::isfinite(luminance(b)));
-        const double across = rel_mse(vpl[0], pt[0]);
-        const double noise = 0.5 * (rel_mse(vpl[0], vpl[1]) + rel_mse(pt[0], pt[1]));
-        const double ratio = across / std::max(noise, 1e-12);
-        EXPECT_LE(ratio, kNoiseRatioBound) << "relMSE " << across << ", noise " << noise;
-        RecordProperty(name, std::to_string(ratio));
-        std::printf("%-30s VPL/PT mean %.3f, relMSE %.4g, noise %.4g, ratio %.2f\n", name.c_str(),
-                    luminance(a) / std::max(luminance(b), 1e-30f), across, noise, ratio);
+        EXPECT_GT(coloured, 100) << path;  // the two objects fill a good part of the frame
     }
 }
 

@@ -308,7 +308,8 @@ void add_environment_options(ArgParser& parser, EnvironmentArgs& args) {
                       "with --env, the map's tint");
     parser.add_float("--env-scale", &args.scale, "multiplies the environment's radiance");
     parser.add_flag("--no-default-light", &args.no_default_light,
-                    "a scene without any light stays black (default: a uniform white sky)");
+                    "a scene without light, or whose emission is too weak to light it, stays "
+                    "dark (default: a uniform white sky)");
     parser.add_check([&parser, &args] {
         // The range scene_range.h gives emitted radiance.
         if (!(args.scale >= 0.0f && args.scale <= 1e15f))

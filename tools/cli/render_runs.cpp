@@ -30,10 +30,13 @@ constexpr uint64_t kStreamChunkUnits = uint64_t(1) << 14;
 
 // Warns when the Metropolis bootstrap found no light on anything the camera sees; returns
 // whether it did not (then sampling longer cannot change the black image).
-bool warn_if_unlit(const sampler::VplStream& stream, const session::SceneSession& session) {
+bool warn_if_unlit(const sampler::VplStream& stream, const session::SceneSession& session,
+                   int width, int height) {
     const auto* metropolis = dynamic_cast<const sampler::MetropolisStream*>(&stream);
     if (metropolis && metropolis->no_visible_light()) {
-        session.warn("no light reaches anything the camera sees; the image is black");
+        // A camera that sees nothing because its near plane clips everything is told so.
+        if (!session.warn_if_clipped(width, height))
+            session.warn("no light reaches anything the camera sees; the image is black");
         return true;
     }
     return false;
@@ -110,7 +113,7 @@ public:
                                                 s.camera(), settings);
         });
         m_result.sampling_seconds += setup.seconds();
-        m_unlit = warn_if_unlit(*m_stream, m_session);
+        m_unlit = warn_if_unlit(*m_stream, m_session, job.gather.width, job.gather.height);
         m_gather = job.gather;
         m_gather.max_depth = 0;
         m_gather.quiet = true;

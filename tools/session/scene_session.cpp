@@ -2,6 +2,8 @@
 
 #include <cstdio>
 
+#include "engine/light/default_sky.h"
+#include "engine/scene/camera.h"
 #include "engine/scene/environment_map.h"
 #include "engine/scene/scene_loader.h"
 
@@ -9,8 +11,17 @@ namespace mvpl::session {
 
 namespace {
 
-// The scene with the environment the command asked for; a scene without emitters gets the
-// default sky unless the command said no.
+// "P %" of the unit sky's flux, for the warnings.
+std::string share_text(const light::SceneLighting& l) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.2g %%", 100.0 * l.emitted_share());
+    return text;
+}
+
+// The scene with the environment the command asked for. A scene that does not light itself
+// (light::SceneLighting::lights_itself: no punctual light, no environment, and emissive surfaces
+// below kMinEmittedShare of the flux a unit sky would send in) gets the default sky unless the
+// command said no; either way one line says why the picture looks as it does.
 scene::Scene load_with_environment(const std::string& path, const EnvironmentChoice& choice,
                                    const scene::LoadOptions& load) {
     scene::Scene scene = scene::load_scene(path, load);
@@ -18,20 +29,33 @@ scene::Scene load_with_environment(const std::string& path, const EnvironmentCho
     if (!choice.map.empty()) {
         scene.environment.map = scene::load_environment_map(choice.map);
         scene.environment.radiance = choice.color * choice.scale;
-    } else if (choice.has_color) {
+        return scene;
+    }
+    if (choice.has_color) {
         scene.environment.radiance = choice.color * choice.scale;
-    } else if (choice.default_light && light::LightSampler(scene).empty()) {
+        return scene;
+    }
+    const light::SceneLighting lighting = light::scene_lighting(scene);
+    if (lighting.lights_itself()) return scene;
+    const bool emits = lighting.emitted > 0.0;
+    const std::string what = emits ? "the scene's only light is its emissive surfaces, " +
+                                         share_text(lighting) + " of what a unit sky would send in"
+                                   : "the scene has no light";
+    char line[320];
+    if (choice.default_light) {
         scene.environment.radiance = Rgb(choice.scale);
-        char line[160];
         std::snprintf(line, sizeof line,
-                      "the scene has no light: it is lit by a uniform white sky of radiance %g "
-                      "(--env-color sets another, --no-default-light none)",
-                      double(choice.scale));
+                      "%s: it is lit by a uniform white sky of radiance %g%s (--env-color sets "
+                      "another, --no-default-light none)",
+                      what.c_str(), double(choice.scale), emits ? " as well" : "");
         scene.warnings.emplace_back(line);
+    } else if (emits) {
+        scene.warnings.push_back(what +
+                                 ": the image is dark (without --no-default-light a "
+                                 "uniform white sky lights it)");
     }
     return scene;
 }
-
 }  // namespace
 
 SceneSession::SceneSession(const std::string& path, const scene::CameraChoice& camera,
@@ -61,10 +85,36 @@ void SceneSession::warn(const std::string& what) const {
     std::fprintf(stderr, "mvpl: warning: %s: %s\n", m_path.c_str(), what.c_str());
 }
 
+bool SceneSession::warn_if_clipped(int width, int height) const {
+    constexpr int kGrid = 32;  // rays a side: finds any surface wider than 1/32 of the image
+    const scene::Camera& camera = m_scene.camera;
+    bool nearer = false;
+    for (int j = 0; j < kGrid; ++j) {
+        for (int i = 0; i < kGrid; ++i) {
+            const Vec2 film((float(i) + 0.5f) * float(width) / kGrid,
+                            (float(j) + 0.5f) * float(height) / kGrid);
+            const scene::CameraRay r = scene::generate_camera_ray(camera, width, height, film);
+            if (m_accel.intersect_camera({r.origin, r.direction})) return false;
+            const Vec3 eye = camera.position();
+            nearer =
+                nearer || m_accel.intersect_camera({eye, r.direction, glm::length(r.origin - eye)});
+        }
+    }
+    if (!nearer) return false;
+    char line[200];
+    std::snprintf(line, sizeof line,
+                  "the image is black: everything the camera sees is nearer than its znear (%g), "
+                  "which clips it away",
+                  double(camera.znear));
+    warn(line);
+    return true;
+}
+
 void SceneSession::warn_if_black(const Image& image) const {
     for (const Rgb& p : image.pixels()) {
         if (p.r != 0.0f || p.g != 0.0f || p.b != 0.0f) return;
     }
+    if (warn_if_clipped(image.width(), image.height())) return;
     warn("the image is black: no light reaches what the camera sees");
 }
 

@@ -45,9 +45,13 @@ public:
     bool warn_if_no_light(const std::string& consequence) const;
     // A sampler's finding, e.g. "no light reaches anything the camera sees; the image is black".
     void warn(const std::string& what) const;
-    // When every pixel of `image` is 0: "the image is black: no light reaches what the camera
-    // sees".
+    // When every pixel of `image` is 0: warn_if_clipped's line where it applies, otherwise "the
+    // image is black: no light reaches what the camera sees".
     void warn_if_black(const Image& image) const;
+    // When camera rays (a grid over a width × height image) from the near plane hit nothing and
+    // rays from the eye hit something before it: "the image is black: everything the camera sees
+    // is nearer than its znear (Z), …"; returns whether that is so.
+    bool warn_if_clipped(int width, int height) const;
 
 private:
     // Declaration order is construction order: each stage is timed when it is done.
