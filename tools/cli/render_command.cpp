@@ -39,7 +39,7 @@ struct RenderArgs {
     std::vector<std::string> outputs;
     float exposure = 0.0f;
     int device = -1;
-    bool qmc = false, oracle = false, quiet = false;
+    bool qmc = false, random_paths = false, oracle = false, quiet = false;
     CompensationArgs compensation;
     bool no_caustics = false;
     std::string dump_shaders;
@@ -57,7 +57,10 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     parser.add_float(
         "--time-budget", &a.time_budget,
         "seconds of sampling + shading: render as many VPLs as fit (overrides --vpls)");
-    parser.add_flag("--qmc", &a.qmc, "Halton primary samples instead of random ones (mc)");
+    parser.add_flag("--qmc", &a.qmc,
+                    "mc: Halton primary samples, randomly shifted by the seed (the default)");
+    parser.add_flag("--random-paths", &a.random_paths,
+                    "mc: random primary samples instead of Halton ones");
     parser.add_string("--vpl-per-path", &a.per_path,
                       "all or one (the seed paper's choice); default all for mc, one for "
                       "metropolis");
@@ -97,7 +100,8 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     job.sampler = a.sampler_name;
     job.quiet = a.quiet;
     sampler::SamplerSettings& s = a.settings;
-    s.qmc = a.qmc;
+    if (a.qmc && a.random_paths) throw UsageError("render: --qmc and --random-paths exclude each other");
+    if (a.random_paths) s.qmc = false;
     s.per_path = a.per_path == "one" ? sampler::VplsPerPath::One : sampler::VplsPerPath::All;
     s.metropolis_per_path =
         a.per_path == "all" ? sampler::VplsPerPath::All : sampler::VplsPerPath::One;
