@@ -10,6 +10,7 @@
 #include "engine/gpu/image.h"
 #include "engine/light/specular_chain.h"
 #include "engine/render/batch_plan.h"
+#include "engine/render/gpu_vpl.h"
 #include "engine/render/render_memory.h"
 #include "engine/scene/camera.h"
 
@@ -238,8 +239,10 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
         }
         resolutions.clear();
         if (options.shadows) {
-            for (const light::Vpl& v : slice)
-                resolutions.push_back(m.shadow->face_resolution(v));
+            for (const light::Vpl& v : slice) {
+                resolutions.push_back(m.shadow->face_resolution(v) |
+                                      (m.shadow->uses_ism(v) ? shared::kImperfectMap : 0u));
+            }
         }
         m.shading->upload(slice, m.geometry.bounds(), resolutions);
         if (m.interleave) {

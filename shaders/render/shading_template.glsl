@@ -143,7 +143,7 @@ CubeTexel cube_texel(vec3 w, float res) {
 
 // to_receiver = p − VPL, d = |to_receiver|, ng the receiver's geometric normal on the side it is
 // shaded from.
-float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
+float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res, bool imperfect) {
     const float footprint = d * (2.0 / res);  // a texel's angle at the face's centre: 2 / res
     const vec3 w = to_receiver / d;
     const CubeTexel ct = cube_texel(w, res);
@@ -173,7 +173,8 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
         imageLoad(shadow_cubes, ivec3(moved.texel.xy, 6 * int(cube) + moved.texel.z)).r,
         footprint);
     const float in_front = d_lookup - near.x;
-    if (in_front > kConstantBias * d_lookup + near.y && in_front < kJunctionReach * footprint)
+    if (!imperfect && in_front > kConstantBias * d_lookup + near.y &&
+        in_front < kJunctionReach * footprint)
         lit = false;
 //@endif
     return lit ? 1.0 : 0.0;
@@ -353,7 +354,7 @@ void main() {
         if (max_component(f_r) <= 0.0) continue;
         const float vis =
             (pc.flags & kShadows) != 0u
-                ? visibility(i, r, d, ng, (v.face_and_length & 0xFFFFu) != 0u ? float(v.face_and_length & 0xFFFFu) : shadow_res)
+                ? visibility(i, r, d, ng, (v.face_and_length & 0x7FFFu) != 0u ? float(v.face_and_length & 0x7FFFu) : shadow_res, (v.face_and_length & kImperfectMap) != 0u)
                 : 1.0;
 //@if glossy
         if (by_lobe) {
