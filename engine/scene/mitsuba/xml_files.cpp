@@ -26,7 +26,7 @@ constexpr int kMaxElementDepth = 256;
 constexpr uintmax_t kMaxXmlBytes = uintmax_t(1) << 28;
 // Files loaded in all, each include counted each time: galleries' scenes include a handful; a
 // fan-out of 16 files each including the next three times would otherwise load 3^15 of them.
-constexpr size_t kMaxIncludes = 4096;
+constexpr size_t kMaxIncludes = 1024;
 // One attribute after $parameter substitution, and all substituted text together: the longest
 // real values (spectra, matrices) are a few KiB; a <default> pasting the previous one 16 times
 // grows 16-fold a level and would otherwise exhaust memory.
