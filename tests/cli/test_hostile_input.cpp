@@ -134,6 +134,9 @@ TEST(HostileInput, AFifoIsRefusedNotOpened) {
     ASSERT_EQ(::mkfifo(ply.c_str(), 0600), 0);
     ASSERT_EQ(::mkfifo(exr.c_str(), 0600), 0);
     expect_one_line_error(reference(ply), ply + ": is a FIFO");
+    const std::string hdr = (dir / "sky.hdr").string();
+    ASSERT_EQ(::mkfifo(hdr.c_str(), 0600), 0);
+    expect_one_line_error(reference(kCbox, "--env " + hdr), hdr + ": is a FIFO");
     const std::string good = (dir / "good.exr").string();
     write_exr(Image(4, 4), good);
     expect_one_line_error(run_mvpl_env(kBounded, "compare " + exr + " " + good),
