@@ -190,6 +190,10 @@ TEST(HostileInput, CompareOfAnImageHoldingNanIsRefused) {
 TEST(HostileInput, ReferenceRefusesAnImageThatCannotFitUpFront) {
 #if defined(__SANITIZE_ADDRESS__)
     GTEST_SKIP() << "ulimit -v and AddressSanitizer's shadow memory do not mix";
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+    GTEST_SKIP() << "ulimit -v and AddressSanitizer's shadow memory do not mix";
+#endif
 #endif
     const auto r = run_mvpl_env("ulimit -v 3000000; " + kBounded,
                                 "reference " + kCbox + " --res 16384x16384 -o /tmp/never.exr");
