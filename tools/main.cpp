@@ -78,7 +78,10 @@ int run(const std::string& command, const mvpl::cli::Args& args) {
 int main(int argc, char** argv) {
     using namespace mvpl;
     if (argc < 2) {
-        std::fputs(kUsage, stderr);
+        // As git does: the command list for the newcomer on stdout; the project's one error line
+        // and exit code 2 for scripts.
+        std::fputs(kUsage, stdout);
+        std::fputs("mvpl: error: no command given (see mvpl --help)\n", stderr);
         return 2;
     }
     // Past a file-size limit (ulimit -f) a write should fail and be reported, and the image's

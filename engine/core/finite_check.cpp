@@ -3,6 +3,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "engine/core/error.h"
+
 namespace mvpl {
 
 NonFiniteReport find_non_finite(const Image& image) {
@@ -20,15 +22,32 @@ NonFiniteReport find_non_finite(const Image& image) {
     return report;
 }
 
-void require_finite(const Image& image, const std::string& what) {
+namespace {
+
+// "N non-finite pixel(s), the first at (x, y) = (r, g, b)"; empty when there are none.
+std::string describe_non_finite(const Image& image) {
     const NonFiniteReport report = find_non_finite(image);
-    if (report.pixels == 0) return;
+    if (report.pixels == 0) return {};
     const Rgb& c = image.at(report.first_x, report.first_y);
     char buf[160];
-    std::snprintf(buf, sizeof buf, ": %zu non-finite pixel%s, the first at (%d, %d) = (%g, %g, %g)",
+    std::snprintf(buf, sizeof buf, "%zu non-finite pixel%s, the first at (%d, %d) = (%g, %g, %g)",
                   report.pixels, report.pixels == 1 ? "" : "s", report.first_x, report.first_y,
                   double(c[0]), double(c[1]), double(c[2]));
-    throw NonFiniteError(what + buf);
+    return buf;
+}
+
+}  // namespace
+
+void require_finite(const Image& image, const std::string& what) {
+    const std::string found = describe_non_finite(image);
+    if (!found.empty()) throw NonFiniteError(what + ": " + found);
+}
+
+Image read_finite_exr(const std::string& path) {
+    Image image = read_exr(path);
+    const std::string found = describe_non_finite(image);
+    if (!found.empty()) throw InputError(path, "holds " + found);
+    return image;
 }
 
 }  // namespace mvpl

@@ -29,4 +29,9 @@ public:
 // image has any.
 void require_finite(const Image& image, const std::string& what);
 
+// read_exr for an image measured against another (compare, convergence --ref): an error of NaN
+// tells nothing, so a file holding non-finite pixels is bad input, InputError "PATH: holds N
+// non-finite pixel(s), the first at …".
+Image read_finite_exr(const std::string& path);
+
 }  // namespace mvpl

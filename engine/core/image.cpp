@@ -18,6 +18,7 @@
 #include "engine/core/error.h"
 #include "engine/core/file_extension.h"
 #include "engine/core/png.h"
+#include "engine/core/regular_file.h"
 
 namespace mvpl {
 
@@ -130,6 +131,7 @@ void write_png_rgb8(const std::string& path, std::span<const uint8_t> rgb, int w
 }
 
 Image read_exr(const std::string& path) {
+    require_regular_file(path);
     try {
         Imf::InputFile file(path.c_str());
         const Imath::Box2i dw = file.header().dataWindow();

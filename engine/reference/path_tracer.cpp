@@ -123,6 +123,12 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
     return L;
 }
 
+uint64_t PathTracer::host_bytes(const PathTracerOptions& options) {
+    // The linear RGB film, then the 8-bit sRGB copy and its encoding for a .png output
+    // (write_images); an .exr is written from the film itself.
+    return uint64_t(options.width) * uint64_t(options.height) * (sizeof(Rgb) + 2 * 3);
+}
+
 Image PathTracer::render(const PathTracerOptions& options, RenderStats* stats) const {
     Image image(options.width, options.height);
     const uint64_t rays_before = m_accel.ray_count();

@@ -45,6 +45,9 @@ public:
 
     // Box-filtered image, deterministic for a seed whatever the thread count.
     Image render(const PathTracerOptions& options, RenderStats* stats = nullptr) const;
+    // Host bytes a render with `options` holds at its peak, written out included: checked
+    // against host_memory_bytes() before rendering (host_memory.h).
+    static uint64_t host_bytes(const PathTracerOptions& options);
     // Radiance arriving along one ray: a camera ray (which does not see the back faces of
     // one-sided materials), or from_camera false for one leaving a surface (clamping
     // compensation), whose max_depth counts its segments from there.

@@ -1,10 +1,9 @@
 #include "engine/render/render_memory.h"
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cstdio>
 
+#include "engine/core/host_memory.h"
 #include "engine/render/g_buffer_pass.h"
 #include "shaders/shared/chain_record.h"
 #include "shaders/shared/ism.h"
@@ -16,12 +15,6 @@ namespace {
 constexpr uint64_t kRgba32f = 16;
 constexpr uint64_t kR32f = 4;
 constexpr uint64_t kD32f = 4;
-
-std::string gigabytes(uint64_t bytes) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.1f GB", double(bytes) / 1e9);
-    return buf;
-}
 
 }  // namespace
 
@@ -87,18 +80,7 @@ std::string memory_shortfall(const RenderOptions& o, const gpu::DeviceInfo& devi
         return std::string(what) + " needs one image of " + gigabytes(e.largest_image) + "; " +
                device.name + " allocates at most " + gigabytes(max_allocation) + " at once";
     }
-    if (host_bytes > 0 && e.host_bytes > host_bytes) {
-        return std::string(what) + " needs about " + gigabytes(e.host_bytes) +
-               " of host memory; this machine has " + gigabytes(host_bytes);
-    }
-    return {};
-}
-
-uint64_t physical_memory_bytes() {
-    const long pages = sysconf(_SC_PHYS_PAGES);
-    const long page_size = sysconf(_SC_PAGE_SIZE);
-    if (pages <= 0 || page_size <= 0) return 0;
-    return uint64_t(pages) * uint64_t(page_size);
+    return host_memory_shortfall(what, e.host_bytes, host_bytes);
 }
 
 }  // namespace mvpl::render

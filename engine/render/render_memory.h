@@ -18,13 +18,11 @@ struct MemoryEstimate {
 
 MemoryEstimate estimate_memory(const RenderOptions& options);
 
-// Empty when the options fit `device` and `host_bytes` of physical memory; else one sentence:
+// Empty when the options fit `device` and `host_bytes` of host memory (host_memory_bytes()); else
+// one sentence:
 // what needs how much and what the device or host has. `devices`: logical devices on `device`
 // (VplRenderer's), each with every image.
 std::string memory_shortfall(const RenderOptions& options, const gpu::DeviceInfo& device,
                              uint64_t host_bytes, uint32_t devices = 1);
-
-// Physical memory of this machine (sysconf), 0 where it cannot be told.
-uint64_t physical_memory_bytes();
 
 }  // namespace mvpl::render

@@ -7,6 +7,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/finite_check.h"
+#include "engine/core/host_memory.h"
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
@@ -85,7 +86,7 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     for (uint32_t d = 0; d < m.devices(); ++d)
         m.device(d).begun = false;
     const std::string shortfall =
-        memory_shortfall(options, m.context->device_info(), physical_memory_bytes(), m.devices());
+        memory_shortfall(options, m.context->device_info(), host_memory_bytes(), m.devices());
     if (!shortfall.empty()) throw UsageError(shortfall);
     RenderOptions shared = options;
     if (options.on_batch) {

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "engine/core/error.h"
+#include "engine/core/host_memory.h"
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/gpu_timer.h"
@@ -101,7 +102,7 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
     // The program is generated for this scene (shader_program.h); SPIR-V from the disk cache.
     const gpu::SpirvCacheOptions cache{o.shader_cache, {}};
     const std::string shortfall =
-        memory_shortfall(o, context->device_info(), physical_memory_bytes(), devices());
+        memory_shortfall(o, context->device_info(), host_memory_bytes(), devices());
     if (!shortfall.empty()) throw UsageError(shortfall);
     if (!g_buffer || o.width != built_for.width || o.height != built_for.height) {
         g_buffer = std::make_unique<GBufferPass>(*context, geometry, o.width, o.height, nullptr,

@@ -1,6 +1,36 @@
 #include "engine/scene/camera.h"
 
+#include <cmath>
+
 namespace mvpl::scene {
+
+namespace {
+
+// Below this sine between up and forward the orthogonalised up is dominated by rounding: the
+// frame is stored in float (relative precision 6e-8), and 1e-6 leaves it a few bits of its own.
+constexpr double kMinFrameSine = 1e-6;
+
+bool finite(const DVec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+}  // namespace
+
+bool spans_camera_frame(const DVec3& up, const DVec3& forward) {
+    if (!finite(up) || !finite(forward)) return false;
+    const double scale = glm::length(up) * glm::length(forward);
+    return std::isfinite(scale) && scale > 0.0 &&
+           glm::length(glm::cross(up, forward)) >= kMinFrameSine * scale;
+}
+
+bool has_camera_frame(const Camera& camera) {
+    const DMat4 m(camera.camera_to_world);
+    const DVec3 right(m[0]), up(m[1]), back(m[2]);
+    if (!finite(right) || !finite(DVec3(m[3])) || !spans_camera_frame(up, back)) return false;
+    // Full rank: the right vector leaves the plane of up and back by the same margin.
+    const double volume = std::abs(glm::dot(glm::cross(up, back), right));
+    return volume >= kMinFrameSine * glm::length(up) * glm::length(back) * glm::length(right);
+}
 
 CameraRay generate_camera_ray(const Camera& camera, int width, int height, const Vec2& film) {
     const float tan_half = std::tan(0.5f * camera.yfov);

@@ -28,6 +28,14 @@ struct FilmPoint {
 std::optional<FilmPoint> project_to_film(const Camera& camera, int width, int height,
                                          const Vec3& p);
 
+// Whether `up` and `forward` span a camera frame: both finite and the sine of the angle between
+// them at least kMinFrameSine, so that the orthogonalised up (and the right vector, their cross)
+// is the file's direction and not rounding noise or NaN. Every loader checks its sensors' columns
+// with it, and choose_camera the camera chosen.
+bool spans_camera_frame(const DVec3& up, const DVec3& forward);
+// The same for a camera's frame: its 3×3 part finite and of full rank.
+bool has_camera_frame(const Camera& camera);
+
 // A camera outside the bounds looking at their centre from a three-quarter view (from +X, +Y,
 // +Z: 45° round, 30° up, as glTF viewers frame a model), far enough that the bounding sphere
 // fits the vertical field of view.

@@ -26,6 +26,14 @@ Camera choose_camera(const Scene& scene, const CameraChoice& choice) {
         camera = look_at_camera(choice.eye, choice.target, choice.up, camera.yfov, camera.znear);
     }
     if (choice.fov_degrees > 0.0f) camera.yfov = glm::radians(choice.fov_degrees);
+    // The loaders refuse their own degenerate sensors; this is the last guard before any ray is
+    // made (render, reference, vpls alike), whichever camera was chosen.
+    if (!has_camera_frame(camera)) {
+        throw InputError(scene.path, (choice.index >= 0 ? "camera " + std::to_string(choice.index)
+                                                        : std::string("the camera")) +
+                                         " has a degenerate frame (its up along its view, or not "
+                                         "finite)");
+    }
     return camera;
 }
 

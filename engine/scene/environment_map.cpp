@@ -8,6 +8,7 @@
 #include "engine/core/error.h"
 #include "engine/core/file_extension.h"
 #include "engine/core/image.h"
+#include "engine/core/regular_file.h"
 
 namespace mvpl::scene {
 
@@ -63,8 +64,8 @@ std::shared_ptr<EnvironmentMap> read_exr_map(const std::string& path) {
 
 std::shared_ptr<const EnvironmentMap> load_environment_map(const std::string& path) {
     std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec))
-        throw InputError(path, "no such environment map");
+    if (!std::filesystem::exists(path, ec)) throw InputError(path, "no such environment map");
+    require_regular_file(path);
     const std::string ext = lower_extension(path);
     std::shared_ptr<EnvironmentMap> map;
     if (ext == ".hdr") {

@@ -3,6 +3,7 @@
 #include <numbers>
 #include <string>
 
+#include "engine/scene/camera.h"
 #include "engine/scene/gltf_value.h"
 #include "engine/scene/scene_range.h"
 
@@ -139,7 +140,8 @@ std::optional<Camera> node_camera(const Document& doc, int node, const DMat4& wo
     bool y_ok = false;
     const DVec3 z = unit(DVec3(world[2]), z_ok);
     const DVec3 y = unit(DVec3(world[1]) - glm::dot(DVec3(world[1]), z) * z, y_ok);
-    if (!z_ok || !y_ok) doc.fail(node_name + " places " + name + " with a degenerate transform");
+    if (!z_ok || !y_ok || !spans_camera_frame(DVec3(world[1]), DVec3(world[2])))
+        doc.fail(node_name + " places " + name + " with a degenerate transform");
     const DVec3 x = glm::cross(y, z);
 
     Camera out;

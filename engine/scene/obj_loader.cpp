@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/core/regular_file.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/scene/scene_range.h"
 
@@ -47,7 +48,7 @@ struct MeshBuilder {
 }  // namespace
 
 Scene load_obj(const std::string& path) {
-    if (!std::filesystem::is_regular_file(path)) throw InputError(path, "cannot open the file");
+    require_regular_file(path);
     tinyobj::ObjReaderConfig config;
     config.triangulate = false;  // fanned below, as PLY faces are
     config.vertex_color = false;

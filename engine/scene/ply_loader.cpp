@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/core/regular_file.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/scene/scene_range.h"
 
@@ -239,6 +240,7 @@ int property_index(const Element& e, const char* name) {
 }  // namespace
 
 Mesh read_ply_mesh(const std::string& path) {
+    require_regular_file(path);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path, "cannot open the file");
     const std::string data((std::istreambuf_iterator<char>(file)),

@@ -7,6 +7,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/file_extension.h"
+#include "engine/core/regular_file.h"
 #include "engine/scene/camera.h"
 #include "engine/scene/obj_loader.h"
 #include "engine/scene/ply_loader.h"
@@ -56,6 +57,7 @@ void make_flat(Mesh& mesh) {
 namespace {
 
 Scene load_by_extension(const std::string& path, const LoadOptions& options) {
+    require_regular_file(path);
     const std::string extension = lower_extension(path);
     if (extension == ".xml") return load_mitsuba(path, options);
     if (extension == ".gltf" || extension == ".glb") return load_gltf(path);

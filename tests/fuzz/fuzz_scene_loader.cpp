@@ -1,12 +1,15 @@
-// libFuzzer target for the scene loaders (glTF .gltf/.glb, PLY, OBJ): whatever the bytes, a load
-// either succeeds with a scene whose every position lies within engine/scene/scene_range.h's
-// kMaxCoordinate, every light and material factor within kMaxFactor and every index in range,
-// or throws InputError. Anything else — a crash, a sanitizer report, another exception, a hang — is
-// a finding. The format is chosen from the bytes as a user's file extension would choose it: the
-// GLB magic, "ply", a '{' (JSON), a '<' (Mitsuba XML) or else OBJ. tests/fuzz/README.md says how to
-// run it.
+// libFuzzer target for the scene loaders (glTF .gltf/.glb, PLY, OBJ, Mitsuba XML with its
+// <include> and <default>) and the camera set-up: whatever the bytes, a load either succeeds with
+// a scene whose every position lies within engine/scene/scene_range.h's kMaxCoordinate, every
+// light and material factor within kMaxFactor and every index in range, and whose every camera
+// (scene/camera_choice.h) makes finite rays, or throws InputError. Anything else — a crash, a
+// sanitizer report, another exception, a hang — is a finding. The format is chosen from the bytes
+// as a user's file extension would choose it: the GLB magic, "ply", a '{' (JSON), a '<' (Mitsuba
+// XML) or else OBJ. tests/fuzz/README.md says how to run it.
+#include <sys/stat.h>
 #include <unistd.h>
 
+#include <cerrno>
 #include <cmath>
 #include <cstdint>
 #include <cstdio>
@@ -14,6 +17,8 @@
 #include <string>
 
 #include "engine/core/error.h"
+#include "engine/scene/camera.h"
+#include "engine/scene/camera_choice.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/scene/scene_range.h"
 
@@ -36,11 +41,16 @@ std::string extension_of(const uint8_t* data, size_t size) {
     return ".obj";
 }
 
-// One file per process and format, rewritten for every input (the loaders read paths).
+// One file per process and format, rewritten for every input (the loaders read paths), named
+// scene.EXT in a folder of this process's own: a Mitsuba input may `<include
+// filename="scene.xml"/>` itself, so that the seeds reach the include bounds (xml_files.cpp).
 std::string write_input(const uint8_t* data, size_t size, const std::string& extension) {
-    const char* dir = std::getenv("TMPDIR");
-    const std::string path =
-        std::string(dir ? dir : "/tmp") + "/mvpl-fuzz-" + std::to_string(getpid()) + extension;
+    const char* tmp = std::getenv("TMPDIR");
+    const std::string dir =
+        std::string(tmp ? tmp : "/tmp") + "/mvpl-fuzz-" + std::to_string(getpid());
+    static const bool made = mkdir(dir.c_str(), 0700) == 0 || errno == EEXIST;
+    if (!made) std::abort();
+    const std::string path = dir + "/scene" + extension;
     FILE* f = std::fopen(path.c_str(), "wb");
     if (!f) std::abort();
     if (size > 0 && std::fwrite(data, 1, size, f) != size) std::abort();
@@ -82,12 +92,31 @@ void check(const mvpl::scene::Scene& scene) {
     if (!within(scene.camera.position(), 10.0 * kMaxCoordinate)) std::abort();
 }
 
+// The camera set-up of every command: the scene's camera and each of its cameras (--camera N)
+// either is refused (InputError) or makes finite rays with unit directions across the film.
+void check_cameras(const mvpl::scene::Scene& scene) {
+    constexpr int kSize = 16;
+    for (int index = -1; index < int(scene.cameras.size()); ++index) {
+        mvpl::scene::CameraChoice choice;
+        choice.index = index;
+        const mvpl::scene::Camera camera = mvpl::scene::choose_camera(scene, choice);
+        for (const mvpl::Vec2 film : {mvpl::Vec2(0.0f), mvpl::Vec2(kSize / 2), mvpl::Vec2(kSize)}) {
+            const mvpl::scene::CameraRay ray =
+                mvpl::scene::generate_camera_ray(camera, kSize, kSize, film);
+            if (!within(ray.origin, 10.0 * mvpl::scene::kMaxCoordinate)) std::abort();
+            if (!(std::abs(glm::length(ray.direction) - 1.0f) < 1e-3f)) std::abort();
+        }
+    }
+}
+
 }  // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const std::string path = write_input(data, size, extension_of(data, size));
     try {
-        check(mvpl::scene::load_scene(path));
+        const mvpl::scene::Scene scene = mvpl::scene::load_scene(path);
+        check(scene);
+        check_cameras(scene);
     } catch (const mvpl::InputError&) {
         // The expected refusal of a bad file.
     }

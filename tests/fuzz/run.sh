@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Runs the scene-loader fuzz target for SECONDS (default 120) from the seed corpus of
-# tests/data (valid glTF/GLB/PLY/OBJ fixtures and every malformed one); exits non-zero on a
+# tests/data (valid glTF/GLB/PLY/OBJ/XML fixtures and every malformed one) and tests/fuzz/seeds
+# (Mitsuba XML that includes itself, <default>s, several sensors); exits non-zero on a
 # finding, whose reproducer is kept in the folder it prints. Usage (after building with
 # MVPL_FUZZ=ON, see README.md): tests/fuzz/run.sh [SECONDS] [BUILD_DIR]
 set -euo pipefail
@@ -10,7 +11,7 @@ build=${2:-build-fuzz}
 work=$(mktemp -d "${TMPDIR:-/tmp}/mvpl-fuzz.XXXXXX")
 mkdir -p "$work/corpus" "$work/findings"
 cp tests/data/gltf/*.gltf tests/data/gltf/*.glb tests/data/mesh/*.ply tests/data/mesh/*.obj \
-  tests/data/mitsuba/*.xml tests/data/bad/* "$work/corpus/"
+  tests/data/mitsuba/*.xml tests/data/bad/* tests/fuzz/seeds/* "$work/corpus/"
 # A fixed seed: the same run on every machine of the same speed. 10 s per input is a hang.
 if "$build/bin/fuzz_scene_loader" -seed=1 -max_total_time="$seconds" -timeout=10 \
     -rss_limit_mb=2048 -print_final_stats=1 -artifact_prefix="$work/findings/" \

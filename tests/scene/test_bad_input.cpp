@@ -160,6 +160,12 @@ const std::map<std::string, std::string> kExpected = {
     {"mitsuba-proc-file.xml", "mitsuba-proc-file.xml:3: '/proc/self/status' is not a regular file"},
     {"mitsuba-lookat-origin-is-target.xml",
      "mitsuba-lookat-origin-is-target.xml:4: lookat: the origin is the target"},
+    {"mitsuba-sensor-up-along-view.xml",
+     "mitsuba-sensor-up-along-view.xml:2: the sensor's up is parallel to its view direction"},
+    {"mitsuba-lookat-up-along-view.xml",
+     "mitsuba-lookat-up-along-view.xml:4: lookat: up is zero or parallel to the view direction"},
+    {"mitsuba-default-expansion.xml", "expands past 1 MiB"},
+    {"camera-up-along-view.gltf", "with a degenerate transform"},
 };
 
 // "PATH: " or, for a file with lines (Mitsuba XML), "PATH:LINE: ".

@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "engine/core/error.h"
+#include "engine/core/finite_check.h"
 #include "engine/core/image.h"
 #include "engine/core/image_metrics.h"
 #include "engine/core/reference_noise.h"
@@ -33,10 +34,10 @@ int run_compare(const Args& args) {
                        "(reference_noise) and relMSE less it (relMSE_vs_truth) are printed");
     if (!parser.parse(args)) return 0;
     if (block < 1) throw UsageError("compare: --block must be at least 1");
-    const Image image = read_exr(image_path);
-    std::vector<Image> references{read_exr(reference_path)};
+    const Image image = read_finite_exr(image_path);
+    std::vector<Image> references{read_finite_exr(reference_path)};
     for (const std::string& path : more_references)
-        references.push_back(read_exr(path));
+        references.push_back(read_finite_exr(path));
     for (size_t i = 0; i < references.size(); ++i) {
         const Image& reference = references[i];
         if (image.width() == reference.width() && image.height() == reference.height()) continue;

@@ -11,6 +11,7 @@
 
 #include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
+#include "engine/core/finite_check.h"
 #include "engine/core/image.h"
 #include "engine/core/reference_noise.h"
 #include "engine/gpu/context.h"
@@ -22,6 +23,7 @@
 #include "tools/cli/convergence_runs.h"
 #include "tools/cli/device_choice.h"
 #include "tools/cli/option_groups.h"
+#include "tools/cli/output_check.h"
 #include "tools/session/scene_session.h"
 
 namespace mvpl::cli {
@@ -170,11 +172,11 @@ int run_convergence(const Args& args) {
         if (!parsed) return;
         check_device("convergence", device);
         methods = checked_methods(ref_path, budget, methods_text);
-        reference = read_exr(ref_path);
+        reference = read_finite_exr(ref_path);
         if (!more_references.empty()) {
             std::vector<Image> references{reference};
             for (const std::string& path : more_references) {
-                references.push_back(read_exr(path));
+                references.push_back(read_finite_exr(path));
                 if (references.back().width() != reference.width() ||
                     references.back().height() != reference.height())
                     throw InputError(path, "size differs from --ref's");
@@ -191,7 +193,7 @@ int run_convergence(const Args& args) {
         loaded = std::make_unique<session::SceneSession>(scene_path, camera.choice,
                                                          environment.choice, scene_file.options);
         apply_scene_defaults(parser, loaded->scene(), &settings.tracer.max_depth, nullptr, nullptr);
-        if (ranks.root()) std::filesystem::create_directories(out_dir);
+        if (ranks.root()) create_output_folder(out_dir);
     });
     if (!parsed) return 0;
     const session::SceneSession& session = *loaded;

@@ -43,4 +43,23 @@ void say_written(const std::string& command, const std::vector<std::string>& out
         std::printf("%s: wrote %s\n", command.c_str(), outputs.front().c_str());
 }
 
+void create_output_folder(const std::string& folder) {
+    namespace fs = std::filesystem;
+    // The nearest part of the path that exists says why: a file where a folder must be.
+    for (fs::path part = fs::path(folder); !part.empty(); part = part.parent_path()) {
+        std::error_code error;
+        const fs::file_status status = fs::status(part, error);
+        if (status.type() == fs::file_type::not_found) {
+            if (part == part.parent_path()) break;
+            continue;
+        }
+        if (!fs::is_directory(status))
+            throw InputError(folder, "cannot be a folder: '" + part.string() + "' is a file");
+        break;
+    }
+    std::error_code error;
+    fs::create_directories(folder, error);
+    if (error) throw InputError(folder, "cannot create the folder (" + error.message() + ")");
+}
+
 }  // namespace mvpl::cli

@@ -9,6 +9,10 @@ namespace mvpl::cli {
 // (InputError naming the path).
 void check_outputs(const std::vector<std::string>& outputs);
 
+// Creates the output folder `folder` and its parents (convergence --out); throws InputError
+// naming it when it cannot be a folder (it or a parent is a file, or may not be written).
+void create_output_folder(const std::string& folder);
+
 // Without -o a command writes `fallback`: returns `outputs`, or {fallback} when it is empty.
 // `defaulted` tells the command to say where the image went once it is written
 // (say_written), so that a user who gave no -o learns the file's name.

@@ -5,6 +5,7 @@
 #include <memory>
 
 #include "engine/core/error.h"
+#include "engine/core/host_memory.h"
 #include "engine/core/image.h"
 #include "engine/reference/path_tracer.h"
 #include "tools/cli/arg_parser.h"
@@ -57,6 +58,10 @@ int run_reference(const Args& args) {
     apply_scene_defaults(parser, session.scene(), &options.max_depth, &options.width,
                          &options.height);
     session.warn_if_no_light("the image is black");
+    const std::string shortfall = host_memory_shortfall(
+        "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image",
+        reference::PathTracer::host_bytes(options), host_memory_bytes());
+    if (!shortfall.empty()) throw UsageError("reference: " + shortfall);
 
     reference::RenderStats stats;
     const reference::PathTracer tracer(session.scene(), session.accel(), session.lights());

@@ -8,6 +8,7 @@
 #include "engine/core/error.h"
 #include "engine/core/file_extension.h"
 #include "engine/core/image.h"
+#include "engine/core/regular_file.h"
 
 namespace mvpl::scene::mitsuba {
 
@@ -28,6 +29,7 @@ void check_size(const std::string& path, int width, int height) {
 }  // namespace
 
 Bitmap read_bitmap(const std::string& path, bool raw) {
+    require_regular_file(path);
     Bitmap b;
     if (lower_extension(path) == ".exr") {
         const Image image = read_exr(path);

@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "engine/core/error.h"
+#include "engine/core/regular_file.h"
 #include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::mitsuba {
@@ -72,6 +73,7 @@ long resolve_index(LineReader& r, const std::string& text, size_t count) {
 }  // namespace
 
 Mesh read_obj_mesh(const std::string& path, bool flip_tex_coords) {
+    require_regular_file(path);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path, "cannot open the file");
     Mesh mesh;

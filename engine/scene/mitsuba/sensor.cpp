@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "engine/scene/camera.h"
 #include "engine/scene/mitsuba/properties.h"
 #include "engine/scene/mitsuba/transform.h"
 #include "engine/scene/scene_range.h"
@@ -88,6 +89,8 @@ void add_sensor(Context& ctx, pugi::xml_node sensor) {
     DVec3 left(m[0]), up(m[1]), forward(m[2]);
     if (!(glm::length(left) > 0.0 && glm::length(up) > 0.0 && glm::length(forward) > 0.0))
         ctx.fail(sensor, "the sensor's to_world is singular");
+    if (!spans_camera_frame(up, forward))
+        ctx.fail(sensor, "the sensor's up is parallel to its view direction (a degenerate frame)");
     if (glm::dot(glm::cross(left, up), forward) < 0.0)
         ctx.warn(sensor, "the sensor's to_world mirrors the image; mvpl renders it unmirrored");
     forward = glm::normalize(forward);

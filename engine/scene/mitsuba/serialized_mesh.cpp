@@ -9,6 +9,7 @@
 #include <iterator>
 
 #include "engine/core/error.h"
+#include "engine/core/regular_file.h"
 #include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::mitsuba {
@@ -60,6 +61,7 @@ std::string inflate_stream(const std::string& path, const std::string& data, siz
 }  // namespace
 
 Mesh read_serialized_mesh(const std::string& path, int shape_index, bool* face_normals) {
+    require_regular_file(path);
     std::ifstream file(path, std::ios::binary);
     if (!file) throw InputError(path, "cannot open the file");
     const std::string data((std::istreambuf_iterator<char>(file)),

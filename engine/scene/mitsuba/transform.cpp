@@ -6,6 +6,7 @@
 
 #include <glm/gtc/matrix_transform.hpp>
 
+#include "engine/scene/camera.h"
 #include "engine/scene/mitsuba/properties.h"
 
 namespace mvpl::scene::mitsuba {
@@ -46,7 +47,7 @@ DMat4 look_at(const Context& ctx, pugi::xml_node e) {
         up = std::abs(d.x) > std::abs(d.z) ? DVec3(-d.y, d.x, 0.0) : DVec3(0.0, -d.z, d.y);
     }
     const DVec3 left = glm::cross(up, d);
-    if (!(glm::length(left) > 1e-12 * glm::length(up)))
+    if (!spans_camera_frame(up, d))
         ctx.fail(e, "lookat: up is zero or parallel to the view direction");
     const DVec3 l = glm::normalize(left);
     const DVec3 u = glm::cross(d, l);

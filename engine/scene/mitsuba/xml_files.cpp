@@ -6,6 +6,7 @@
 #include <iterator>
 
 #include "engine/core/error.h"
+#include "engine/core/regular_file.h"
 
 namespace mvpl::scene::mitsuba {
 
@@ -15,7 +16,24 @@ namespace {
 
 // Includes nest no deeper than this: deeper is a cycle in practice, and it bounds the recursion.
 constexpr int kMaxIncludeDepth = 16;
+// Elements nest no deeper than this in one file: real scenes nest under 10 levels, and the
+// recursion of preprocess() over 256 levels (times kMaxIncludeDepth files) stays far from the
+// stack's end even under AddressSanitizer, where 20 000 levels overflowed it.
+constexpr int kMaxElementDepth = 256;
+// Bytes of XML read in all (the main file and every include, counted each time it is spliced):
+// scenes of the Mitsuba galleries are under a few MiB; this bounds memory against a fan-out of
+// includes (each file including the next several times).
 constexpr uintmax_t kMaxXmlBytes = uintmax_t(1) << 28;
+// Files loaded in all, each include counted each time: galleries' scenes include a handful; a
+// fan-out of 16 files each including the next three times would otherwise load 3^15 of them.
+constexpr size_t kMaxIncludes = 1024;
+// One attribute after $parameter substitution, and all substituted text together: the longest
+// real values (spectra, matrices) are a few KiB; a <default> pasting the previous one 16 times
+// grows 16-fold a level and would otherwise exhaust memory.
+constexpr size_t kMaxValueLength = size_t(1) << 20;
+constexpr size_t kMaxSubstitutedBytes = size_t(1) << 28;
+// An error quotes at most this many characters of an attribute's value.
+constexpr size_t kQuotedPrefix = 40;
 
 // Mitsuba 3's upgrade of a 0.x property name: a capital starts a new word unless it continues
 // an acronym (intIOR → int_ior, toWorld → to_world, alphaU → alpha_u).
@@ -74,10 +92,17 @@ size_t XmlFiles::load(const std::string& path, pugi::xml_node from, int depth) {
     };
     if (depth > kMaxIncludeDepth)
         refuse("includes nest deeper than " + std::to_string(kMaxIncludeDepth) + " (a cycle?)");
+    if (!from) require_regular_file(path);  // includes are checked where resolved
     std::error_code error;
     const uintmax_t size = fs::file_size(path, error);
     if (error) refuse("cannot read '" + path + "'");
-    if (size > kMaxXmlBytes) refuse("'" + path + "' is larger than 256 MiB");
+    if (m_sources.size() >= kMaxIncludes)
+        refuse("more than " + std::to_string(kMaxIncludes) +
+               " files loaded in all (includes fan out)");
+    if (size > kMaxXmlBytes - m_bytes_read)
+        refuse("'" + path + "' takes the XML read in all past " +
+               std::to_string(kMaxXmlBytes >> 20) + " MiB (includes fan out?)");
+    m_bytes_read += size;
     std::ifstream file(path, std::ios::binary);
     if (!file) refuse("cannot open '" + path + "'");
     auto source = std::make_unique<Source>();
@@ -101,7 +126,8 @@ size_t XmlFiles::load(const std::string& path, pugi::xml_node from, int depth) {
         fail(scene, "the root element is <" + std::string(scene.name()) + ">, not <scene>");
     // Mitsuba 0.x files carry version="0.x.y"; 2.0 introduced the snake_case names.
     const std::string version = scene.attribute("version").as_string("3.0.0");
-    preprocess(index, scene, !version.empty() && (version[0] == '0' || version[0] == '1'), depth);
+    preprocess(index, scene, !version.empty() && (version[0] == '0' || version[0] == '1'), depth,
+               0);
     return index;
 }
 
@@ -122,9 +148,15 @@ void XmlFiles::fail(pugi::xml_node node, const std::string& what) const {
     throw InputError(where(node), what);
 }
 
-std::string XmlFiles::substitute(const std::string& text) const {
+std::string XmlFiles::substitute(pugi::xml_node node, const std::string& text) {
+    const auto too_long = [&](const std::string& limit) {
+        const std::string prefix = text.substr(0, kQuotedPrefix);
+        fail(node, "the value '" + prefix + (text.size() > prefix.size() ? "..." : "") +
+                       "' expands past " + limit + " (nested $parameters)");
+    };
     std::string out;
     for (size_t i = 0; i < text.size(); ++i) {
+        if (out.size() > kMaxValueLength) too_long(std::to_string(kMaxValueLength >> 20) + " MiB");
         if (text[i] != '$') {
             out += text[i];
             continue;
@@ -139,15 +171,22 @@ std::string XmlFiles::substitute(const std::string& text) const {
         out += found == m_parameters.end() ? "$" + name : found->second;
         i = end - 1;
     }
+    if (out.size() > kMaxValueLength) too_long(std::to_string(kMaxValueLength >> 20) + " MiB");
+    m_substituted_bytes += out.size();
+    if (m_substituted_bytes > kMaxSubstitutedBytes)
+        too_long(std::to_string(kMaxSubstitutedBytes >> 20) + " MiB in all");
     return out;
 }
 
-void XmlFiles::preprocess(size_t source, pugi::xml_node node, bool upgrade, int depth) {
+void XmlFiles::preprocess(size_t source, pugi::xml_node node, bool upgrade, int depth,
+                          int nesting) {
     for (pugi::xml_node child = node.first_child(); child; child = child.next_sibling()) {
         if (child.type() != pugi::node_element) continue;
+        if (nesting >= kMaxElementDepth)
+            fail(child, "elements nest deeper than " + std::to_string(kMaxElementDepth));
         for (pugi::xml_attribute a = child.first_attribute(); a; a = a.next_attribute()) {
             const std::string value = a.value();
-            if (value.find('$') != std::string::npos) a.set_value(substitute(value).c_str());
+            if (value.find('$') != std::string::npos) a.set_value(substitute(child, value).c_str());
         }
         const std::string tag = child.name();
         if (upgrade) {
@@ -169,7 +208,7 @@ void XmlFiles::preprocess(size_t source, pugi::xml_node node, bool upgrade, int 
             const std::string file = resolve(child, child.attribute("filename").as_string());
             m_includes[child.internal_object()] = load(file, child, depth + 1);
         } else {
-            preprocess(source, child, upgrade, depth);
+            preprocess(source, child, upgrade, depth, nesting + 1);
         }
     }
 }

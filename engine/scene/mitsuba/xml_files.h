@@ -7,6 +7,7 @@
 // names FILE:LINE of the element at fault.
 #include <pugixml.hpp>
 
+#include <cstdint>
 #include <filesystem>
 #include <map>
 #include <memory>
@@ -20,7 +21,8 @@ namespace mvpl::scene::mitsuba {
 class XmlFiles {
 public:
     // Reads `path` and its includes; throws InputError (FILE:LINE: what) on malformed XML, a
-    // root that is not <scene>, a missing include or an include cycle. A $parameter without a
+    // root that is not <scene>, a missing include or an include cycle, and past the bounds on
+    // element nesting, files and bytes loaded, and substituted length. A $parameter without a
     // value stays in the text (Context::numbers names it when it is read).
     XmlFiles(const std::string& path, const LoadOptions& options);
     ~XmlFiles();
@@ -44,14 +46,17 @@ public:
 private:
     struct Source;
     size_t load(const std::string& path, pugi::xml_node from, int depth);
-    void preprocess(size_t source, pugi::xml_node node, bool upgrade, int depth);
-    std::string substitute(const std::string& text) const;
+    void preprocess(size_t source, pugi::xml_node node, bool upgrade, int depth, int nesting);
+    // `text` with each $name replaced by its value; fails at `node` past the length bounds.
+    std::string substitute(pugi::xml_node node, const std::string& text);
     const Source& source_of(pugi::xml_node node) const;
 
     std::vector<std::unique_ptr<Source>> m_sources;
     std::map<const void*, size_t> m_includes;  // <include> element → its source
     std::map<std::string, std::string> m_parameters;
     std::vector<std::filesystem::path> m_search_paths;
+    uintmax_t m_bytes_read = 0;
+    size_t m_substituted_bytes = 0;
 };
 
 }  // namespace mvpl::scene::mitsuba
