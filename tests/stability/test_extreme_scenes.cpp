@@ -29,9 +29,10 @@ int non_finite_pixels(const Image& image) {
 
 // Shadow bias and clamping are relative to the scene's size, and the CPU's ray offsets to the
 // magnitude of the coordinates (trace/ray.h): the same light paths at 10⁻⁶ … 10⁴ times the size
-// give the same image, on the GPU and in the oracle, to far below the noise between two seeds (1%: what a 1% deviation of every
-// pixel would be compared with the seed-to-seed relMSE is ~10⁻⁴ relative — any scale-dependent
-// epsilon that changed a visible fraction of shadow or clamp decisions would exceed it).
+// give the same image, on the GPU and in the oracle, to far below the noise between two seeds (1%:
+// what a 1% deviation of every pixel would be compared with the seed-to-seed relMSE is ~10⁻⁴
+// relative — any scale-dependent epsilon that changed a visible fraction of shadow or clamp
+// decisions would exceed it).
 TEST_F(ExtremeSceneTest, SameImageAtAnyScaleWithAreaAndPointLights) {
     const scene::Scene cornell = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
     const scene::Scene point_room = test::make_point_light_room();

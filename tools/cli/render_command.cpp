@@ -100,7 +100,8 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     job.sampler = a.sampler_name;
     job.quiet = a.quiet;
     sampler::SamplerSettings& s = a.settings;
-    if (a.qmc && a.random_paths) throw UsageError("render: --qmc and --random-paths exclude each other");
+    if (a.qmc && a.random_paths)
+        throw UsageError("render: --qmc and --random-paths exclude each other");
     if (a.random_paths) s.qmc = false;
     s.per_path = a.per_path == "one" ? sampler::VplsPerPath::One : sampler::VplsPerPath::All;
     s.metropolis_per_path =
