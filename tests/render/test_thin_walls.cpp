@@ -269,8 +269,9 @@ std::vector<WallCase> wall_family() {
 INSTANTIATE_TEST_SUITE_P(Family, ThinWallFamily, ::testing::ValuesIn(wall_family()));
 
 // The two rooms the wall divides, lit by a point light on one side, with the light paths' VPLs
-// on both sides: the GPU against the oracle over the same VPLs, at image sizes 64² … 256² and
-// shadow faces 128² … 512². Leaks along the junctions brightened the other room's mean by 2.2 %
+// on both sides: the GPU against the oracle over the same VPLs, at image sizes 64² and 128² and
+// shadow faces 128² and 256² (256² images held too, docs/results.md; the oracle's cost keeps them
+// out of CI). Leaks along the junctions brightened the other room's mean by 2.2 %
 // (issue 32); what the shadow maps may still differ by is their texel-wide band at every shadow
 // edge, under 0.5 % of the mean here (the Cornell box's is 0.1 %: test_vpl_pipeline.cpp).
 TEST_F(ThinWallTest, TwoRoomsMeanMatchesTheOracle) {
@@ -282,7 +283,7 @@ TEST_F(ThinWallTest, TwoRoomsMeanMatchesTheOracle) {
         light.position = Vec3(-1.1f, 1.7f, 0.4f);
         s.lights = {light};
         const light::VplSet vpls = test::monte_carlo_vpls(s, 256, 6, 7);
-        for (const auto& [res, shadow_res] : {std::pair{64, 128}, {128, 256}, {256, 512}}) {
+        for (const auto& [res, shadow_res] : {std::pair{64, 128}, {128, 256}}) {
             SCOPED_TRACE(std::string(double_sided ? "double" : "one") + "-sided, image " +
                          std::to_string(res) + "², faces " + std::to_string(shadow_res) + "²");
             const test::VplRenderSettings settings{
