@@ -88,6 +88,7 @@ void SceneSession::warn(const std::string& what) const {
 bool SceneSession::warn_if_clipped(int width, int height) const {
     constexpr int kGrid = 32;  // rays a side: finds any surface wider than 1/32 of the image
     const scene::Camera& camera = m_scene.camera;
+    const Vec3 eye = camera.position();
     bool nearer = false;
     for (int j = 0; j < kGrid; ++j) {
         for (int i = 0; i < kGrid; ++i) {
@@ -95,7 +96,6 @@ bool SceneSession::warn_if_clipped(int width, int height) const {
                             (float(j) + 0.5f) * float(height) / kGrid);
             const scene::CameraRay r = scene::generate_camera_ray(camera, width, height, film);
             if (m_accel.intersect_camera({r.origin, r.direction})) return false;
-            const Vec3 eye = camera.position();
             nearer =
                 nearer || m_accel.intersect_camera({eye, r.direction, glm::length(r.origin - eye)});
         }
