@@ -34,6 +34,7 @@
 #include "engine/render/ism_pass.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shadow_clusters.h"
+#include "shaders/shared/shadow_map.h"
 
 namespace mvpl::gpu {
 class CommandList;
@@ -44,8 +45,7 @@ namespace mvpl::render {
 
 class SceneGeometry;
 
-// The distance a shadow texel holds where no surface was rendered.
-inline constexpr float kShadowNoOccluder = 3.0e38f;
+using shared::kShadowNoOccluder;
 
 // resolution: the side of a cube face in texels; max_batch: cubes in the array.
 struct ShadowPassOptions {

@@ -11,12 +11,12 @@
 // the next batch.
 layout(local_size_x = 256) in;
 #include "shared/ism.h"
+#include "shared/shadow_map.h"
 layout(std430, set = 0, binding = 0) buffer Depths { uint depths[]; };
 layout(std430, set = 0, binding = 1) readonly buffer Vpls { IsmVpl vpls[]; };
 layout(set = 0, binding = 2, r32f) uniform writeonly image2DArray shadow_cubes;
 layout(push_constant) uniform IsmPushBlock { IsmPush pc; };
 
-const float kNoOccluder = 3.0e38;  // ShadowPass's kShadowNoOccluder: no point reached the texel
 const float kPullTolerance = 0.05;
 
 // The levels of a kMaxIsmResolution face, finest first: 64², 32², … 1².
@@ -37,7 +37,7 @@ void main() {
     const uint slot = vpls[v].slot.x;
     const uint base = (6u * slot + face) * res * res;
     const uint lid = gl_LocalInvocationID.x;
-    const uint cleared = floatBitsToUint(kNoOccluder);
+    const uint cleared = floatBitsToUint(kShadowNoOccluder);
     for (uint i = lid; i < res * res; i += 256u) {
         s_depth[i] = uintBitsToFloat(depths[base + i]);
         depths[base + i] = cleared;
@@ -62,12 +62,12 @@ void main() {
             float sum = 0.0;
             float count = 0.0;
             for (int k = 0; k < 4; ++k) {
-                if (c[k] < kNoOccluder && c[k] <= nearest * (1.0 + kPullTolerance)) {
+                if (c[k] < kShadowNoOccluder && c[k] <= nearest * (1.0 + kPullTolerance)) {
                     sum += c[k];
                     count += 1.0;
                 }
             }
-            s_depth[coarse + i] = count > 0.0 ? sum / count : kNoOccluder;
+            s_depth[coarse + i] = count > 0.0 ? sum / count : kShadowNoOccluder;
         }
         barrier();
     }
@@ -77,7 +77,7 @@ void main() {
         const uint fine = level_offset(l - 1u, res);
         const uint coarse = level_offset(l, res);
         for (uint i = lid; i < side * side; i += 256u) {
-            if (s_depth[fine + i] < kNoOccluder) continue;
+            if (s_depth[fine + i] < kShadowNoOccluder) continue;
             const uint x = (i % side) / 2u;
             const uint y = (i / side) / 2u;
             s_depth[fine + i] = s_depth[coarse + y * (side / 2u) + x];
