@@ -6,7 +6,7 @@
 //   chain(y_i):  continues_chain(bsdf, ω towards y_{i−1}) — the camera path is continued there
 //                (light/specular_chain.h);
 //   vpl(y_j):    leaves_vpl(bsdf, ω towards y_{j+1}) — the light path leaves a VPL there, which
-//                reflects light (its closure keeps no transmission: sampler/light_tracer.h).
+//                reflects light (its closure keeps no transmission: engine/sampler/light_tracer.h).
 //
 // VPLs + chains: chain(y_1…y_{m−1}), not chain(y_m), y_m seen from above (the receiver), and
 //   y_{m+1} the light or a vpl vertex that reflects towards y_m (towards the side it was lit on).

@@ -1,7 +1,7 @@
 #pragma once
 // One VPL's contribution to one receiver (the formulas of vpl.h, Embree visibility): the one
 // implementation that the CPU oracle (reference::gather_vpls) and the Metropolis sampler's target
-// (sampler/importance.h) share, so that the target sees exactly what the oracle shades.
+// (engine/sampler/importance.h) share, so that the target sees exactly what the oracle shades.
 #include <optional>
 
 #include "engine/core/color.h"

@@ -11,7 +11,7 @@
 // caustics seen through a chain (path_partition.h, "Neither").
 //
 // Estimate of pixel P from N light paths (β_j the throughput at x_j, as a VPL's power there:
-// sampler/light_tracer.h):
+// engine/sampler/light_tracer.h):
 //     I_P = (1/N) Σ β_j · f(ω_cam, ω_in) · |n_g·ω_cam| / d² · W_e(ω_cam) · V · [x_j projects into
 //     P]
 // with the pinhole's importance for a box-filtered pixel of image-plane area A_pix (at distance

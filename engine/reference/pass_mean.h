@@ -1,7 +1,7 @@
 #pragma once
 // The running mean of an image estimator's passes (ClampCompensation, CausticTracer): one thread
 // adds passes while others read the mean so far, as the renders that run these estimators beside
-// the GPU's batches do (tools/cli/compensation_thread.h).
+// the GPU's batches do (engine/integrator/cpu_estimator_thread.h).
 #include <cstdint>
 #include <mutex>
 #include <vector>

@@ -130,6 +130,8 @@ TEST_F(MpiRender, TimeBudgetEndsEveryRank) {
     const size_t summary = r.out.find("VPL/s");
     EXPECT_NE(summary, std::string::npos) << r.out;
     EXPECT_EQ(summary, r.out.rfind("VPL/s")) << r.out;
+    // The ranks shared the work and summed their images (not each the whole render alone).
+    EXPECT_NE(r.out.find("; 2 ranks, images summed in"), std::string::npos) << r.out;
 }
 
 // The JSON's value of `key` (a number), or "" when it is missing.

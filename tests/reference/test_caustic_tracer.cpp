@@ -18,7 +18,7 @@
 #include "engine/reference/vpl_gather.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/support/sample_statistics.h"
 #include "tests/support/scene_builder.h"
 

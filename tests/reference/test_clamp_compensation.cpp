@@ -14,7 +14,7 @@
 #include "engine/reference/vpl_gather.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_stream.h"
+#include "engine/sampler/monte_carlo_stream.h"
 #include "tests/support/mirror_box.h"
 #include "tests/support/sample_statistics.h"
 

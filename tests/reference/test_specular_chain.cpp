@@ -18,7 +18,7 @@
 #include "engine/reference/vpl_gather.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/support/mirror_box.h"
 #include "tests/support/oracle_against_tracer.h"
 #include "tests/support/sample_statistics.h"

@@ -10,7 +10,7 @@
 #include "engine/reference/path_tracer.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/support/scene_builder.h"
 

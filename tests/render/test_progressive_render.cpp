@@ -16,7 +16,7 @@
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/support/scaled_vpls.h"
 

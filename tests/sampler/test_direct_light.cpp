@@ -1,4 +1,4 @@
-// The direct light apart from the Metropolis chains (sampler/direct_light.h): the shares of a
+// The direct light apart from the Metropolis chains (engine/sampler/direct_light.h): the shares of a
 // sample's steps over next() calls, the estimate's expectation against Monte Carlo, and its
 // spread against the chains' own emitter VPLs (direct_stride 0).
 #include <gtest/gtest.h>
@@ -11,9 +11,9 @@
 #include "engine/light/light_sampler.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/direct_light.h"
-#include "sampler/metropolis_stream.h"
-#include "sampler/monte_carlo_stream.h"
+#include "engine/sampler/direct_light.h"
+#include "engine/sampler/metropolis_stream.h"
+#include "engine/sampler/monte_carlo_stream.h"
 
 namespace mvpl {
 namespace {

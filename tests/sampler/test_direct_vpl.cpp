@@ -19,7 +19,7 @@
 #include "engine/reference/vpl_gather.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/sampler/vpl_test_util.h"
 #include "tests/support/lit_plane.h"
 #include "tests/support/scene_builder.h"

@@ -9,7 +9,7 @@
 #include "engine/light/vpl.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
-#include "sampler/importance.h"
+#include "engine/sampler/importance.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl::sampler {

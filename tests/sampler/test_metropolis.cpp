@@ -11,9 +11,9 @@
 #include "engine/light/light_sampler.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "sampler/metropolis_stream.h"
-#include "sampler/monte_carlo_stream.h"
-#include "sampler/sampler_factory.h"
+#include "engine/sampler/metropolis_stream.h"
+#include "engine/sampler/monte_carlo_stream.h"
+#include "engine/sampler/sampler_factory.h"
 #include "tests/support/scaled_vpls.h"
 #include "tests/support/scene_builder.h"
 

@@ -1,9 +1,9 @@
-// The Metropolis start pool by time budget (sampler/metropolis_budget.h).
+// The Metropolis start pool by time budget (engine/sampler/metropolis_budget.h).
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "sampler/metropolis_budget.h"
+#include "engine/sampler/metropolis_budget.h"
 
 namespace mvpl::sampler {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "sampler/primary_sample_vector.h"
+#include "engine/sampler/primary_sample_vector.h"
 
 namespace mvpl {
 namespace {

@@ -1,4 +1,4 @@
-// The Metropolis chains' stratified starts (sampler/start_resampling.h): each pool item's count
+// The Metropolis chains' stratified starts (engine/sampler/start_resampling.h): each pool item's count
 // is within one of its expectation, pick c is marginally ∝ w for every c (the shuffle), and the
 // sampler stays unbiased when the chains run unequal numbers of steps.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <vector>
 
-#include "sampler/start_resampling.h"
+#include "engine/sampler/start_resampling.h"
 #include "tests/sampler/metropolis_unbiased.h"
 
 namespace mvpl {

@@ -4,7 +4,7 @@
 
 #include "engine/core/image.h"
 #include "engine/scene/scene.h"
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 
 namespace mvpl::test {
 

@@ -8,7 +8,7 @@
 #include "engine/reference/path_tracer.h"
 #include "engine/reference/vpl_gather.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 
 namespace mvpl::test {
 

@@ -4,7 +4,7 @@
 #include "engine/reference/vpl_gather.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/trace/accel.h"
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 
 namespace mvpl::test {
 

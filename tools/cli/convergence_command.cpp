@@ -16,7 +16,7 @@
 #include "engine/core/reference_noise.h"
 #include "engine/gpu/context.h"
 #include "engine/render/vpl_renderer.h"
-#include "sampler/sampler_factory.h"
+#include "engine/sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/convergence_analysis.h"

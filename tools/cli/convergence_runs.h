@@ -12,7 +12,7 @@
 #include "engine/cluster/cluster.h"
 #include "engine/core/image.h"
 #include "engine/render/vpl_renderer.h"
-#include "sampler/sampler_factory.h"
+#include "engine/sampler/sampler_factory.h"
 #include "tools/cli/convergence_analysis.h"
 #include "tools/session/scene_session.h"
 
@@ -25,7 +25,7 @@ struct ConvergenceRun {
     int max_depth = 6;
     uint64_t seed = 0;
     bool quiet = false;
-    // VPL runs add clamping compensation (compensation_thread.h): compensation_passes samples per
+    // VPL runs add clamping compensation (engine/integrator/cpu_estimator_thread.h): compensation_passes samples per
     // pixel, or 0: paced by the VPLs shaded.
     bool compensate = false;
     uint32_t compensation_passes = 0;
@@ -46,7 +46,7 @@ std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run);
 // steps doubling per chunk, resolved after each. The time counts the sampler's start-up (the
 // Metropolis bootstrap) and the G-buffer, not the renderer's construction (shader compilation),
 // which `mvpl bench` reports. `options` gives all but the image size (the reference's). Over
-// ranks they share each chunk as `mvpl render` does (sampler/vpl_stream.h: Monte Carlo path
+// ranks they share each chunk as `mvpl render` does (engine/sampler/vpl_stream.h: Monte Carlo path
 // ranges, Metropolis chains), so that each point's image is the one-process run's at that work.
 std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const std::string& name,
                                               const sampler::SamplerSettings& settings,

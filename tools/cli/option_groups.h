@@ -10,7 +10,7 @@
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/scene_loader.h"
-#include "sampler/sampler_factory.h"
+#include "engine/sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/session/scene_session.h"
 

@@ -13,7 +13,7 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/device_info.h"
-#include "sampler/metropolis_budget.h"
+#include "engine/sampler/metropolis_budget.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/device_choice.h"
@@ -97,22 +97,19 @@ void add_options(ArgParser& parser, RenderArgs& a) {
 RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     RenderJob job;
     job.session = &session;
-    job.sampler = a.sampler_name;
     job.quiet = a.quiet;
-    sampler::SamplerSettings& s = a.settings;
+    integrator::Estimate& e = job.estimate;
+    e.sampler = a.sampler_name;
+    sampler::SamplerSettings& s = e.sampling;
+    s = a.settings;
     if (a.qmc && a.random_paths)
         throw UsageError("render: --qmc and --random-paths exclude each other");
     if (a.random_paths) s.qmc = false;
     s.per_path = a.per_path == "one" ? sampler::VplsPerPath::One : sampler::VplsPerPath::All;
     s.metropolis_per_path =
         a.per_path == "all" ? sampler::VplsPerPath::All : sampler::VplsPerPath::One;
-    s.width = a.width;
-    s.height = a.height;
-    s.clamp = a.renderer.clamp;
-    s.vsl_radius = a.renderer.vsl();
-    job.settings = s;
     const int max_depth = s.tracer.max_depth;
-    render::RenderOptions& ro = job.render;
+    render::RenderOptions& ro = e.render;
     ro.width = uint32_t(a.width);
     ro.height = uint32_t(a.height);
     a.renderer.apply(ro);
@@ -124,39 +121,10 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     ro.interleave = a.renderer.interleave_for(session.scene(), ro.chains, ro.width, ro.height);
     ro.batches_per_position = a.renderer.batches_per_position_for(session.scene());
     ro.chain_seed = s.seed;
-    job.settings.specular_chains = ro.chains;  // the Metropolis target follows them too
-    reference::GatherOptions& g = job.gather;
-    g.width = a.width;
-    g.height = a.height;
-    g.clamp = a.renderer.clamp;
-    g.vsl_radius = a.renderer.vsl();
-    g.max_depth = max_depth;
-    g.quiet = a.quiet;
-    g.subpixel = render::subpixel_schedule(ro);  // the GPU's sub-pixel positions
-    g.chains = ro.chains;                        // and its specular chains
-    g.chain_seed = ro.chain_seed;
-    g.interleave = int(ro.interleave);
-    job.compensate = a.compensation.enabled();
-    job.compensation_passes = uint32_t(a.compensation.spp);
-    reference::CompensationOptions& c = job.compensation;
-    c.width = a.width;
-    c.height = a.height;
-    c.clamp = a.renderer.clamp;
-    c.vsl_radius = a.renderer.vsl();
-    c.max_depth = max_depth;
-    c.chains = ro.chains;  // compensated where the VPLs light: at the chains' ends
-    c.seed = s.seed;
+    e.compensate = a.compensation.enabled();
+    e.compensation_passes = uint32_t(a.compensation.spp);
     // Paired with the chains: what they continue leaves no VPL, the caustic tracer carries it.
-    job.caustics = !a.no_caustics;
-    reference::CausticOptions& k = job.caustic;
-    k.width = a.width;
-    k.height = a.height;
-    k.max_depth = max_depth;
-    k.rr_depth = s.tracer.rr_depth;
-    k.specular = ro.chains;
-    k.clamp = job.compensate ? c.clamp : 0.0f;  // the compensation's share of near vertices
-    k.vsl_radius = c.vsl_radius;                // which share: lobe-wise or all
-    k.seed = s.seed;
+    e.caustics = !a.no_caustics;
     return job;
 }
 
@@ -210,6 +178,7 @@ int run_render(const Args& args) {
     }
     RenderJob job = make_job(a, *session);
     job.renderer = renderer.get();
+    if (ranks.size() > 1) job.cluster = &ranks;
 
     const RenderOutcome result =
         a.time_budget > 0.0f ? render_for(job, double(a.time_budget)) : render_once(job, a.paths);

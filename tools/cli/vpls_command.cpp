@@ -13,7 +13,7 @@
 #include "engine/trace/accel.h"
 #include "engine/trace/interaction.h"
 #include "engine/trace/ray.h"
-#include "sampler/sampler_factory.h"
+#include "engine/sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/option_groups.h"

@@ -18,7 +18,7 @@
 #include "engine/light/specular_chain.h"
 #include "engine/render/batch_plan.h"
 #include "engine/render/vpl_renderer.h"
-#include "sampler/sampler_factory.h"
+#include "engine/sampler/sampler_factory.h"
 #include "tools/preview/camera_controller.h"
 #include "tools/preview/hud.h"
 #include "tools/preview/present_pass.h"

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "engine/light/vpl.h"
-#include "sampler/vpl_stream.h"
+#include "engine/sampler/vpl_stream.h"
 
 namespace mvpl::preview {
 

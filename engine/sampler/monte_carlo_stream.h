@@ -4,9 +4,9 @@
 // the number of paths; scale() = 1 / paths traced so far.
 #include <string>
 
-#include "sampler/light_tracer.h"
-#include "sampler/monte_carlo_sampler.h"
-#include "sampler/vpl_stream.h"
+#include "engine/sampler/light_tracer.h"
+#include "engine/sampler/monte_carlo_sampler.h"
+#include "engine/sampler/vpl_stream.h"
 
 namespace mvpl::sampler {
 

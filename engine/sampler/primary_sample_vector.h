@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "engine/core/rng.h"
-#include "sampler/sample_stream.h"
+#include "engine/sampler/sample_stream.h"
 
 namespace mvpl::sampler {
 

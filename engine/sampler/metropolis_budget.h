@@ -16,7 +16,7 @@
 // to 1.05, 0.94, 0.87, 0.63 · 10⁻³ and the image mean's largest deviation from 3.3 % to 1.7 %, for
 // ≈ 9.5 s of sampling instead of 4; 16× (1048576) gave 0.71, 0.97, 0.93, 0.74 for 11–16 s
 // (docs/results.md, "Four references, stratified starts and the 60 s target").
-#include "sampler/sampler_factory.h"
+#include "engine/sampler/sampler_factory.h"
 
 namespace mvpl::sampler {
 

@@ -1,4 +1,4 @@
-#include "sampler/start_resampling.h"
+#include "engine/sampler/start_resampling.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,4 +1,4 @@
-#include "sampler/light_tracer.h"
+#include "engine/sampler/light_tracer.h"
 
 #include <algorithm>
 #include <cmath>

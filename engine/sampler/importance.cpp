@@ -1,4 +1,4 @@
-#include "sampler/importance.h"
+#include "engine/sampler/importance.h"
 
 #include <algorithm>
 #include <cmath>

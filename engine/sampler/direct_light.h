@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "engine/light/vpl.h"
-#include "sampler/light_tracer.h"
+#include "engine/sampler/light_tracer.h"
 
 namespace mvpl::sampler {
 

@@ -8,9 +8,9 @@
 #include "engine/light/light_sampler.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
-#include "sampler/metropolis_stream.h"
-#include "sampler/monte_carlo_sampler.h"
-#include "sampler/vpl_stream.h"
+#include "engine/sampler/metropolis_stream.h"
+#include "engine/sampler/monte_carlo_sampler.h"
+#include "engine/sampler/vpl_stream.h"
 
 namespace mvpl::sampler {
 

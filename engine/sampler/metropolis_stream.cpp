@@ -1,4 +1,4 @@
-#include "sampler/metropolis_stream.h"
+#include "engine/sampler/metropolis_stream.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,8 +8,8 @@
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
 #include "engine/core/timer.h"
-#include "sampler/primary_sample_vector.h"
-#include "sampler/start_resampling.h"
+#include "engine/sampler/primary_sample_vector.h"
+#include "engine/sampler/start_resampling.h"
 
 namespace mvpl::sampler {
 

@@ -14,7 +14,7 @@
 
 #include "engine/core/image.h"
 
-namespace mvpl::cli {
+namespace mvpl::integrator {
 
 // Compensation passes (samples per pixel) to allow after `vpls` VPLs: one per 32, a default
 // shading batch, at most `most`. On the Cornell box at 256² with 2923 VPLs (1024 paths, seed 1),
@@ -54,16 +54,16 @@ private:
     std::unique_ptr<Estimator> m_estimator;
 };
 
-class CompensationThread {
+class CpuEstimatorThread {
 public:
-    explicit CompensationThread(std::unique_ptr<PassImage> passes);
+    explicit CpuEstimatorThread(std::unique_ptr<PassImage> passes);
     template <class Estimator>
-    explicit CompensationThread(std::unique_ptr<Estimator> estimator)
-        : CompensationThread(
+    explicit CpuEstimatorThread(std::unique_ptr<Estimator> estimator)
+        : CpuEstimatorThread(
               std::unique_ptr<PassImage>(new PassImageOf<Estimator>(std::move(estimator)))) {}
-    ~CompensationThread();
-    CompensationThread(const CompensationThread&) = delete;
-    CompensationThread& operator=(const CompensationThread&) = delete;
+    ~CpuEstimatorThread();
+    CpuEstimatorThread(const CpuEstimatorThread&) = delete;
+    CpuEstimatorThread& operator=(const CpuEstimatorThread&) = delete;
 
     // Lets the thread run passes until it has done `passes` (never lowers the allowance).
     void allow(uint32_t passes);
@@ -90,4 +90,4 @@ private:
     std::thread m_thread;
 };
 
-}  // namespace mvpl::cli
+}  // namespace mvpl::integrator

@@ -45,11 +45,11 @@
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
-#include "sampler/direct_light.h"
-#include "sampler/importance.h"
-#include "sampler/light_tracer.h"
-#include "sampler/monte_carlo_sampler.h"
-#include "sampler/vpl_stream.h"
+#include "engine/sampler/direct_light.h"
+#include "engine/sampler/importance.h"
+#include "engine/sampler/light_tracer.h"
+#include "engine/sampler/monte_carlo_sampler.h"
+#include "engine/sampler/vpl_stream.h"
 
 namespace mvpl::sampler {
 

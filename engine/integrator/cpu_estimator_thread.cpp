@@ -1,19 +1,19 @@
-#include "tools/cli/compensation_thread.h"
+#include "engine/integrator/cpu_estimator_thread.h"
 
 #include <algorithm>
 
-namespace mvpl::cli {
+namespace mvpl::integrator {
 
 uint32_t paced_compensation_passes(uint64_t vpls, uint32_t most) {
     return uint32_t(std::min<uint64_t>(1 + vpls / 32, most));
 }
 
-CompensationThread::CompensationThread(std::unique_ptr<PassImage> compensation)
+CpuEstimatorThread::CpuEstimatorThread(std::unique_ptr<PassImage> compensation)
     : m_compensation(std::move(compensation)) {
     m_thread = std::thread([this] { run(); });
 }
 
-CompensationThread::~CompensationThread() {
+CpuEstimatorThread::~CpuEstimatorThread() {
     {
         const std::lock_guard lock(m_mutex);
         m_stop = true;
@@ -22,7 +22,7 @@ CompensationThread::~CompensationThread() {
     if (m_thread.joinable()) m_thread.join();
 }
 
-void CompensationThread::allow(uint32_t passes) {
+void CpuEstimatorThread::allow(uint32_t passes) {
     {
         const std::lock_guard lock(m_mutex);
         m_allowed = std::max(m_allowed, passes);
@@ -30,7 +30,7 @@ void CompensationThread::allow(uint32_t passes) {
     m_wake.notify_all();
 }
 
-void CompensationThread::run() {
+void CpuEstimatorThread::run() {
     try {
         for (;;) {
             {
@@ -47,7 +47,7 @@ void CompensationThread::run() {
     }
 }
 
-Image CompensationThread::finish(bool wait, bool at_least_one) {
+Image CpuEstimatorThread::finish(bool wait, bool at_least_one) {
     {
         const std::lock_guard lock(m_mutex);
         if (wait) {
@@ -63,4 +63,4 @@ Image CompensationThread::finish(bool wait, bool at_least_one) {
     return m_compensation->image();
 }
 
-}  // namespace mvpl::cli
+}  // namespace mvpl::integrator

@@ -1,4 +1,4 @@
-#include "sampler/monte_carlo_stream.h"
+#include "engine/sampler/monte_carlo_stream.h"
 
 namespace mvpl::sampler {
 

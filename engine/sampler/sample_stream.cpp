@@ -1,4 +1,4 @@
-#include "sampler/sample_stream.h"
+#include "engine/sampler/sample_stream.h"
 
 #include <algorithm>
 

@@ -1,9 +1,9 @@
-#include "sampler/direct_light.h"
+#include "engine/sampler/direct_light.h"
 
 #include <algorithm>
 
 #include "engine/core/rng.h"
-#include "sampler/sample_stream.h"
+#include "engine/sampler/sample_stream.h"
 
 namespace mvpl::sampler {
 

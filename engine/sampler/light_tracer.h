@@ -24,7 +24,7 @@
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
-#include "sampler/sample_stream.h"
+#include "engine/sampler/sample_stream.h"
 
 namespace mvpl::sampler {
 

@@ -19,7 +19,7 @@
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
-#include "sampler/light_tracer.h"
+#include "engine/sampler/light_tracer.h"
 
 namespace mvpl::sampler {
 

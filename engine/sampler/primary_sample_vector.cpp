@@ -1,4 +1,4 @@
-#include "sampler/primary_sample_vector.h"
+#include "engine/sampler/primary_sample_vector.h"
 
 #include <cmath>
 #include <numbers>

@@ -1,7 +1,7 @@
-#include "sampler/sampler_factory.h"
+#include "engine/sampler/sampler_factory.h"
 
 #include "engine/core/error.h"
-#include "sampler/monte_carlo_stream.h"
+#include "engine/sampler/monte_carlo_stream.h"
 
 namespace mvpl::sampler {
 

@@ -1,4 +1,4 @@
-#include "sampler/monte_carlo_sampler.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 
 #include <algorithm>
 

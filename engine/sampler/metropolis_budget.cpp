@@ -1,4 +1,4 @@
-#include "sampler/metropolis_budget.h"
+#include "engine/sampler/metropolis_budget.h"
 
 #include <algorithm>
 #include <cmath>

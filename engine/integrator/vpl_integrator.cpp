@@ -1,0 +1,221 @@
+#include "engine/integrator/vpl_integrator.h"
+
+#include <utility>
+
+#include "engine/core/error.h"
+#include "engine/core/timer.h"
+#include "engine/sampler/metropolis_stream.h"
+
+namespace mvpl::integrator {
+
+namespace {
+
+// Adds `part` into `sum`, pixel by pixel.
+void add_image(Image& sum, const Image& part, float scale = 1.0f) {
+    for (size_t i = 0; i < sum.pixels().size(); ++i)
+        sum.pixels()[i] += part.pixels()[i] * scale;
+}
+
+}  // namespace
+
+VplIntegrator::VplIntegrator(const SceneView& view, const Estimate& estimate,
+                             render::VplRenderer* renderer, cluster::Cluster* ranks, Pacing pacing)
+    : m_view(view),
+      m_estimate(estimate),
+      m_renderer(renderer),
+      m_ranks(ranks ? *ranks : cluster::single_process()),
+      m_pacing(pacing) {
+    if (shared() && !renderer)
+        throw UsageError("render: --oracle runs on one process, not under mpirun");
+    cluster::together(m_ranks, [&] {
+        if (m_renderer) m_renderer->begin(*view.camera, m_estimate.render);
+        start_cpu_estimators();
+    });
+    Timer setup;
+    sampler::SamplerSettings settings = sampler_settings(m_estimate);
+    // The caustic tracer carries the light of the chains' class: no VPL there.
+    if (m_caustics) settings.tracer.specular = m_estimate.render.chains;
+    if (shared()) settings.cluster = &m_ranks;
+    // The Metropolis bootstrap meets the other ranks inside (its own agreement points).
+    cluster::together(m_ranks, [&] {
+        m_stream = sampler::make_vpl_stream(m_estimate.sampler, *view.scene, *view.accel,
+                                            *view.lights, *view.camera, settings);
+    });
+    m_stats.sampling_seconds += setup.seconds();
+    m_gather = gather_options(m_estimate);
+    m_gather.max_depth = 0;  // VPL light only: the emitted radiance is added at the end
+    m_gather.quiet = true;
+    if (!m_renderer) m_sum = Image(m_gather.width, m_gather.height);
+}
+
+VplIntegrator::~VplIntegrator() = default;
+
+// Each rank runs every R-th pass from its rank (rank_passes), so that together they run one
+// process's passes.
+void VplIntegrator::start_cpu_estimators() {
+    const SceneView& v = m_view;
+    if (m_estimate.compensate) {
+        reference::CompensationOptions options = compensation_options(m_estimate);
+        options.first_pass = uint32_t(m_ranks.rank());
+        options.pass_stride = uint32_t(m_ranks.size());
+        auto compensation = std::make_unique<reference::ClampCompensation>(*v.scene, *v.accel,
+                                                                           *v.lights, options);
+        if (compensation->active())
+            m_compensation = std::make_unique<CpuEstimatorThread>(std::move(compensation));
+    }
+    if (m_estimate.caustics) {
+        reference::CausticOptions options = caustic_options(m_estimate);
+        options.first_pass = uint32_t(m_ranks.rank());
+        options.pass_stride = uint32_t(m_ranks.size());
+        auto caustics =
+            std::make_unique<reference::CausticTracer>(*v.scene, *v.accel, *v.lights, options);
+        if (caustics->active())
+            m_caustics = std::make_unique<CpuEstimatorThread>(std::move(caustics));
+    }
+    if (m_estimate.compensation_passes > 0) {
+        const uint32_t mine = my_passes(m_estimate.compensation_passes);
+        if (m_compensation) m_compensation->allow(mine);
+        if (m_caustics) m_caustics->allow(mine);
+    }
+}
+
+uint32_t VplIntegrator::my_passes(uint32_t passes) const {
+    return rank_passes(passes, m_ranks.rank(), m_ranks.size());
+}
+
+bool VplIntegrator::unlit() const {
+    const auto* metropolis = dynamic_cast<const sampler::MetropolisStream*>(m_stream.get());
+    return metropolis && metropolis->no_visible_light();
+}
+
+void VplIntegrator::advance(uint64_t work) {
+    m_chunk.clear();
+    Timer sampling;
+    m_stream->next(work, m_chunk);  // over ranks: an agreement point inside
+    m_stats.sampling_seconds += sampling.seconds();
+    Timer shading;
+    cluster::together(m_ranks, [&] {
+        if (m_renderer) {
+            m_renderer->accumulate(m_chunk, m_stream->last_index());
+        } else if (!m_chunk.empty()) {
+            // Shaded at the sub-pixel positions the GPU gives them: their indices since the start.
+            m_gather.first_vpl = m_stats.vpls;
+            add_image(m_sum, reference::gather_vpls(*m_view.scene, *m_view.accel, {m_chunk},
+                                                    m_gather));
+        }
+    });
+    m_stats.shading_seconds += shading.seconds();
+    m_stats.vpls = m_stream->vpls_total();
+    m_stats.units = m_stream->work_done();
+    if (m_estimate.compensation_passes == 0) {
+        const uint32_t most = m_pacing == Pacing::Fixed ? kFixedRenderPasses : uint32_t(1) << 20;
+        const uint32_t paced = my_passes(paced_compensation_passes(m_stats.vpls, most));
+        if (m_compensation) m_compensation->allow(paced);
+        if (m_caustics) m_caustics->allow(paced);
+    }
+}
+
+// One process, VPL light: scale · Σ contributions + emission (the GPU's resolve, or the oracle's
+// emission averaged over the positions of every VPL).
+Image VplIntegrator::vpl_image() {
+    if (m_renderer) return m_renderer->resolve(m_stream->scale());
+    reference::GatherOptions emission = gather_options(m_estimate);
+    emission.quiet = true;
+    emission.first_vpl = m_stats.vpls;
+    Image image = reference::gather_vpls(*m_view.scene, *m_view.accel, {}, emission);
+    add_image(image, m_sum, float(m_stream->scale()));
+    return image;
+}
+
+Image VplIntegrator::image() {
+    Timer shading;
+    Image image;
+    if (shared()) {
+        image = shared_image(false);
+    } else {
+        image = vpl_image();
+        for (const CpuEstimatorThread* thread : {m_compensation.get(), m_caustics.get()}) {
+            if (thread) add_image(image, thread->snapshot());
+        }
+    }
+    m_stats.shading_seconds += shading.seconds();
+    return image;
+}
+
+Image VplIntegrator::finish() {
+    m_stats.units = m_stream->work_done();
+    Timer shading;
+    Image image;
+    if (shared()) {
+        image = shared_image(true);
+    } else {
+        image = vpl_image();
+        const bool wait = m_pacing == Pacing::Fixed;
+        if (m_compensation) {
+            add_image(image, m_compensation->finish(wait));
+            m_stats.compensation_passes = m_compensation->passes();
+        }
+        if (m_caustics) {
+            add_image(image, m_caustics->finish(wait));
+            m_stats.caustic_passes = m_caustics->passes();
+        }
+    }
+    m_stats.shading_seconds += shading.seconds();
+    return image;
+}
+
+// Over ranks: the contributions and the CPU images' pass sums summed to rank 0, which resolves.
+// finishing: the CPU estimators finish (a fixed size: the passes allowed, of which rank 0's
+// share is never empty; open-ended: those done, at least one on rank 0); otherwise their
+// passes so far.
+Image VplIntegrator::shared_image(bool finishing) {
+    const CpuEstimatorThread* const threads[2] = {m_compensation.get(), m_caustics.get()};
+    Image sum, parts[2];
+    std::vector<double> passes(2, 0.0);
+    cluster::together(m_ranks, [&] {
+        sum = m_renderer->contributions();
+        for (int t = 0; t < 2; ++t) {
+            if (!threads[t]) continue;
+            CpuEstimatorThread& thread = t == 0 ? *m_compensation : *m_caustics;
+            uint32_t n = 0;
+            if (finishing) {
+                parts[t] = thread.finish(m_pacing == Pacing::Fixed, m_ranks.root());
+                n = thread.passes();
+            } else {
+                parts[t] = thread.snapshot(&n);
+            }
+            passes[size_t(t)] = double(n);
+            for (Rgb& c : parts[t].pixels())
+                c *= float(n);
+        }
+    });
+    // Met first, so that the time is the reduction's, not the wait for the slowest rank.
+    std::vector<double> met(1, 0.0);
+    m_ranks.sum_all(met);
+    Timer reduce;
+    m_ranks.sum_to_root(sum.channels());
+    m_stats.reduce_bytes = sum.channels().size_bytes();
+    for (int t = 0; t < 2; ++t) {
+        if (!threads[t]) continue;
+        m_ranks.sum_to_root(parts[t].channels());
+        m_stats.reduce_bytes += parts[t].channels().size_bytes();
+    }
+    if (threads[0] || threads[1]) m_ranks.sum_all(passes);
+    m_stats.reduce_seconds = reduce.seconds();
+    Image image;
+    cluster::together(m_ranks, [&] {
+        if (!m_ranks.root()) return;
+        image = m_renderer->resolve(m_stream->scale(), sum, m_stats.vpls);
+        for (int t = 0; t < 2; ++t) {
+            if (threads[t] && passes[size_t(t)] > 0.0)
+                add_image(image, parts[t], float(1.0 / passes[size_t(t)]));
+        }
+    });
+    if (finishing) {
+        m_stats.compensation_passes = uint32_t(passes[0]);
+        m_stats.caustic_passes = uint32_t(passes[1]);
+    }
+    return image;
+}
+
+}  // namespace mvpl::integrator

@@ -1,0 +1,99 @@
+#pragma once
+// The VPL estimator, whole: a sampler's stream of VPLs, shaded as they come by the GPU renderer
+// (or, without one, by the CPU oracle), with the CPU estimators that run beside it — clamping
+// compensation and caustics (cpu_estimator_thread.h) — and the ranks of a job under mpirun
+// (engine/cluster), which share the light paths and sum their images to rank 0. Its image's
+// expectation is the estimate's (estimate.h) whatever the loop around it: `mvpl render` advances
+// it by a fixed count or a time budget, `mvpl convergence` by doubling chunks, each reading the
+// image when it likes.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "engine/cluster/cluster.h"
+#include "engine/core/image.h"
+#include "engine/integrator/cpu_estimator_thread.h"
+#include "engine/integrator/estimate.h"
+#include "engine/light/light_sampler.h"
+#include "engine/render/vpl_renderer.h"
+#include "engine/sampler/vpl_stream.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl::integrator {
+
+// What the estimate is of: the scene, its BVH and lights, and the camera.
+struct SceneView {
+    const scene::Scene* scene = nullptr;
+    const trace::Accel* accel = nullptr;
+    const light::LightSampler* lights = nullptr;
+    const scene::Camera* camera = nullptr;
+};
+
+// How the CPU estimators are paced: a fixed amount of work runs every pass it allowed (at most
+// kFixedRenderPasses, deterministic for its seed); open-ended work (a time budget, doubling
+// chunks) stops them with the VPLs.
+enum class Pacing { Fixed, OpenEnded };
+
+// The counts and times of an estimate so far.
+struct IntegratorStats {
+    uint64_t units = 0;  // light paths (mc) or chain steps (metropolis)
+    size_t vpls = 0;     // by every rank
+    double sampling_seconds = 0.0;
+    double shading_seconds = 0.0;
+    uint32_t compensation_passes = 0;
+    uint32_t caustic_passes = 0;  // 0: no caustic tracer ran
+    // Over ranks: the seconds of summing the images to rank 0 and the bytes each rank sent.
+    double reduce_seconds = 0.0;
+    uint64_t reduce_bytes = 0;
+};
+
+class VplIntegrator {
+public:
+    // renderer: null to shade with the CPU oracle (one process only); ranks: null for this
+    // process alone. Every rank constructs it with the same arguments.
+    VplIntegrator(const SceneView& view, const Estimate& estimate, render::VplRenderer* renderer,
+                  cluster::Cluster* ranks, Pacing pacing);
+    ~VplIntegrator();
+    VplIntegrator(const VplIntegrator&) = delete;
+    VplIntegrator& operator=(const VplIntegrator&) = delete;
+
+    // Samples `work` more units (light paths or chain steps; over ranks, shared) and shades
+    // their VPLs. Every rank calls it with the same work.
+    void advance(uint64_t work);
+    // The estimate so far: scale · Σ contributions + the emitted radiance seen directly + the
+    // CPU estimators' passes done so far. Every rank calls it; rank 0 gets the image, the others
+    // an empty one.
+    Image image();
+    // The final image (as image(), the CPU estimators finished as the pacing says); once.
+    Image finish();
+
+    const sampler::VplStream& stream() const { return *m_stream; }
+    const IntegratorStats& stats() const { return m_stats; }
+    // Whether the stream knows already that the image stays black however long it runs (the
+    // Metropolis bootstrap found no light on anything the camera sees).
+    bool unlit() const;
+
+private:
+    bool shared() const { return m_ranks.size() > 1; }
+    uint32_t my_passes(uint32_t passes) const;
+    void start_cpu_estimators();
+    Image vpl_image();
+    Image shared_image(bool finishing);
+
+    SceneView m_view;
+    Estimate m_estimate;
+    render::VplRenderer* m_renderer;
+    cluster::Cluster& m_ranks;
+    Pacing m_pacing;
+    IntegratorStats m_stats;
+    std::unique_ptr<sampler::VplStream> m_stream;
+    reference::GatherOptions m_gather;  // the oracle's, per chunk
+    Image m_sum;                        // the oracle's Σ contributions
+    std::vector<light::Vpl> m_chunk;
+    std::unique_ptr<CpuEstimatorThread> m_compensation;
+    std::unique_ptr<CpuEstimatorThread> m_caustics;
+};
+
+}  // namespace mvpl::integrator
