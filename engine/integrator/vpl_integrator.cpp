@@ -29,12 +29,12 @@ VplIntegrator::VplIntegrator(const SceneView& view, const Estimate& estimate,
         throw UsageError("render: --oracle runs on one process, not under mpirun");
     cluster::together(m_ranks, [&] {
         if (m_renderer) m_renderer->begin(*view.camera, m_estimate.render);
-        start_cpu_estimators();
+        m_cpu = std::make_unique<CpuEstimators>(view, m_estimate, m_ranks.rank(), m_ranks.size());
     });
     Timer setup;
     sampler::SamplerSettings settings = sampler_settings(m_estimate);
     // The caustic tracer carries the light of the chains' class: no VPL there.
-    if (m_caustics) settings.tracer.specular = m_estimate.render.chains;
+    if (m_cpu->caustics()) settings.tracer.specular = m_estimate.render.chains;
     if (shared()) settings.cluster = &m_ranks;
     // The Metropolis bootstrap meets the other ranks inside (its own agreement points).
     cluster::together(m_ranks, [&] {
@@ -49,39 +49,6 @@ VplIntegrator::VplIntegrator(const SceneView& view, const Estimate& estimate,
 }
 
 VplIntegrator::~VplIntegrator() = default;
-
-// Each rank runs every R-th pass from its rank (rank_passes), so that together they run one
-// process's passes.
-void VplIntegrator::start_cpu_estimators() {
-    const SceneView& v = m_view;
-    if (m_estimate.compensate) {
-        reference::CompensationOptions options = compensation_options(m_estimate);
-        options.first_pass = uint32_t(m_ranks.rank());
-        options.pass_stride = uint32_t(m_ranks.size());
-        auto compensation = std::make_unique<reference::ClampCompensation>(*v.scene, *v.accel,
-                                                                           *v.lights, options);
-        if (compensation->active())
-            m_compensation = std::make_unique<CpuEstimatorThread>(std::move(compensation));
-    }
-    if (m_estimate.caustics) {
-        reference::CausticOptions options = caustic_options(m_estimate);
-        options.first_pass = uint32_t(m_ranks.rank());
-        options.pass_stride = uint32_t(m_ranks.size());
-        auto caustics =
-            std::make_unique<reference::CausticTracer>(*v.scene, *v.accel, *v.lights, options);
-        if (caustics->active())
-            m_caustics = std::make_unique<CpuEstimatorThread>(std::move(caustics));
-    }
-    if (m_estimate.compensation_passes > 0) {
-        const uint32_t mine = my_passes(m_estimate.compensation_passes);
-        if (m_compensation) m_compensation->allow(mine);
-        if (m_caustics) m_caustics->allow(mine);
-    }
-}
-
-uint32_t VplIntegrator::my_passes(uint32_t passes) const {
-    return rank_passes(passes, m_ranks.rank(), m_ranks.size());
-}
 
 bool VplIntegrator::unlit() const {
     const auto* metropolis = dynamic_cast<const sampler::MetropolisStream*>(m_stream.get());
@@ -100,19 +67,14 @@ void VplIntegrator::advance(uint64_t work) {
         } else if (!m_chunk.empty()) {
             // Shaded at the sub-pixel positions the GPU gives them: their indices since the start.
             m_gather.first_vpl = m_stats.vpls;
-            add_image(m_sum, reference::gather_vpls(*m_view.scene, *m_view.accel, {m_chunk},
-                                                    m_gather));
+            add_image(m_sum,
+                      reference::gather_vpls(*m_view.scene, *m_view.accel, {m_chunk}, m_gather));
         }
     });
     m_stats.shading_seconds += shading.seconds();
     m_stats.vpls = m_stream->vpls_total();
     m_stats.units = m_stream->work_done();
-    if (m_estimate.compensation_passes == 0) {
-        const uint32_t most = m_pacing == Pacing::Fixed ? kFixedRenderPasses : uint32_t(1) << 20;
-        const uint32_t paced = my_passes(paced_compensation_passes(m_stats.vpls, most));
-        if (m_compensation) m_compensation->allow(paced);
-        if (m_caustics) m_caustics->allow(paced);
-    }
+    m_cpu->pace(m_stats.vpls, m_pacing);
 }
 
 // One process, VPL light: scale · Σ contributions + emission (the GPU's resolve, or the oracle's
@@ -134,9 +96,7 @@ Image VplIntegrator::image() {
         image = shared_image(false);
     } else {
         image = vpl_image();
-        for (const CpuEstimatorThread* thread : {m_compensation.get(), m_caustics.get()}) {
-            if (thread) add_image(image, thread->snapshot());
-        }
+        add_image(image, m_cpu->snapshot(image.width(), image.height()));
     }
     m_stats.shading_seconds += shading.seconds();
     return image;
@@ -151,13 +111,13 @@ Image VplIntegrator::finish() {
     } else {
         image = vpl_image();
         const bool wait = m_pacing == Pacing::Fixed;
-        if (m_compensation) {
-            add_image(image, m_compensation->finish(wait));
-            m_stats.compensation_passes = m_compensation->passes();
+        if (CpuEstimatorThread* t = m_cpu->compensation_thread()) {
+            add_image(image, t->finish(wait));
+            m_stats.compensation_passes = t->passes();
         }
-        if (m_caustics) {
-            add_image(image, m_caustics->finish(wait));
-            m_stats.caustic_passes = m_caustics->passes();
+        if (CpuEstimatorThread* t = m_cpu->caustic_thread()) {
+            add_image(image, t->finish(wait));
+            m_stats.caustic_passes = t->passes();
         }
     }
     m_stats.shading_seconds += shading.seconds();
@@ -169,14 +129,14 @@ Image VplIntegrator::finish() {
 // share is never empty; open-ended: those done, at least one on rank 0); otherwise their
 // passes so far.
 Image VplIntegrator::shared_image(bool finishing) {
-    const CpuEstimatorThread* const threads[2] = {m_compensation.get(), m_caustics.get()};
+    CpuEstimatorThread* const threads[2] = {m_cpu->compensation_thread(), m_cpu->caustic_thread()};
     Image sum, parts[2];
     std::vector<double> passes(2, 0.0);
     cluster::together(m_ranks, [&] {
         sum = m_renderer->contributions();
         for (int t = 0; t < 2; ++t) {
             if (!threads[t]) continue;
-            CpuEstimatorThread& thread = t == 0 ? *m_compensation : *m_caustics;
+            CpuEstimatorThread& thread = *threads[t];
             uint32_t n = 0;
             if (finishing) {
                 parts[t] = thread.finish(m_pacing == Pacing::Fixed, m_ranks.root());

@@ -13,28 +13,13 @@
 
 #include "engine/cluster/cluster.h"
 #include "engine/core/image.h"
-#include "engine/integrator/cpu_estimator_thread.h"
+#include "engine/integrator/cpu_estimators.h"
 #include "engine/integrator/estimate.h"
-#include "engine/light/light_sampler.h"
+#include "engine/integrator/scene_view.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/vpl_stream.h"
-#include "engine/scene/scene.h"
-#include "engine/trace/accel.h"
 
 namespace mvpl::integrator {
-
-// What the estimate is of: the scene, its BVH and lights, and the camera.
-struct SceneView {
-    const scene::Scene* scene = nullptr;
-    const trace::Accel* accel = nullptr;
-    const light::LightSampler* lights = nullptr;
-    const scene::Camera* camera = nullptr;
-};
-
-// How the CPU estimators are paced: a fixed amount of work runs every pass it allowed (at most
-// kFixedRenderPasses, deterministic for its seed); open-ended work (a time budget, doubling
-// chunks) stops them with the VPLs.
-enum class Pacing { Fixed, OpenEnded };
 
 // The counts and times of an estimate so far.
 struct IntegratorStats {
@@ -77,8 +62,6 @@ public:
 
 private:
     bool shared() const { return m_ranks.size() > 1; }
-    uint32_t my_passes(uint32_t passes) const;
-    void start_cpu_estimators();
     Image vpl_image();
     Image shared_image(bool finishing);
 
@@ -92,8 +75,7 @@ private:
     reference::GatherOptions m_gather;  // the oracle's, per chunk
     Image m_sum;                        // the oracle's Σ contributions
     std::vector<light::Vpl> m_chunk;
-    std::unique_ptr<CpuEstimatorThread> m_compensation;
-    std::unique_ptr<CpuEstimatorThread> m_caustics;
+    std::unique_ptr<CpuEstimators> m_cpu;
 };
 
 }  // namespace mvpl::integrator

@@ -53,6 +53,7 @@ struct CausticTracer::Impl {
     const trace::Accel& accel;
     const light::LightSampler& lights;
     CausticOptions options;
+    scene::Camera camera;  // options.camera's, copied: the caller may move its own
     bool is_active = false;
     uint64_t paths_per_pass = 0;
     // The pinhole (header comment): the eye and 1/A_pix.
@@ -73,12 +74,12 @@ struct CausticTracer::Impl {
           accel(a),
           lights(l),
           options(o),
+          camera(o.camera ? *o.camera : s.camera),
           pass_image(size_t(o.width) * size_t(o.height)),
           mean(o.width, o.height) {
         paths_per_pass = o.paths_per_pass > 0 ? o.paths_per_pass : uint64_t(pass_image.size());
         is_active = !l.empty() && (o.max_depth < 0 || o.max_depth >= 3) &&
                     light::scene_may_need_caustics(s, o.specular);
-        const scene::Camera& camera = s.camera;
         eye = camera.position();
         const float tan_half = std::tan(0.5f * camera.yfov);
         const float aspect = float(o.width) / float(o.height);
@@ -98,16 +99,16 @@ struct CausticTracer::Impl {
         const float d2 = glm::dot(from_eye, from_eye);
         if (!(d2 > 0.0f)) return;
         const std::optional<scene::FilmPoint> projected =
-            scene::project_to_film(scene.camera, options.width, options.height, p);
+            scene::project_to_film(camera, options.width, options.height, p);
         // Behind the eye, or nearer than the near plane, where camera rays start.
-        if (!projected || !(projected->cos_theta * std::sqrt(d2) > scene.camera.znear)) return;
+        if (!projected || !(projected->cos_theta * std::sqrt(d2) > camera.znear)) return;
         const Vec2& film = projected->film;
         const float cos_theta = projected->cos_theta;
         if (!(film.x >= 0.0f && film.x < float(options.width) && film.y >= 0.0f &&
               film.y < float(options.height)))
             return;
         const scene::CameraRay cr =
-            scene::generate_camera_ray(scene.camera, options.width, options.height, film);
+            scene::generate_camera_ray(camera, options.width, options.height, film);
         const trace::Ray ray{cr.origin, cr.direction};
         const std::optional<trace::Hit> hit = accel.intersect_camera(ray);
         if (!hit) return;

@@ -69,6 +69,8 @@ struct CausticOptions {
     float vsl_radius = 0.0f;
     uint64_t seed = 0;
     uint64_t paths_per_pass = 0;  // 0: width × height
+    // The camera whose pixels receive the caustics (copied); null: the scene's.
+    const scene::Camera* camera = nullptr;
     // As CompensationOptions: pass i is pass first_pass + i · pass_stride of the seed's sequence.
     uint32_t first_pass = 0;
     uint32_t pass_stride = 1;

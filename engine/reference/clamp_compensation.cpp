@@ -20,6 +20,7 @@ struct ClampCompensation::Impl {
     const scene::Scene& scene;
     const trace::Accel& accel;
     CompensationOptions options;
+    scene::Camera camera;  // options.camera's, copied: the caller may move its own
     PathTracer path_tracer;
     float d_min = 0.0f;
     std::vector<const scene::Light*> punctual;  // point and spot lights
@@ -31,6 +32,7 @@ struct ClampCompensation::Impl {
         : scene(s),
           accel(a),
           options(o),
+          camera(o.camera ? *o.camera : s.camera),
           path_tracer(s, a, lights),
           d_min(o.clamp * s.bounds().diagonal()),
           pass_image(size_t(o.width) * size_t(o.height)),
@@ -76,7 +78,7 @@ struct ClampCompensation::Impl {
     Rgb sample_pixel(int x, int y, Rng& rng) const {
         const Vec2 film(float(x) + rng.next_float(), float(y) + rng.next_float());
         const scene::CameraRay cr =
-            scene::generate_camera_ray(scene.camera, options.width, options.height, film);
+            scene::generate_camera_ray(camera, options.width, options.height, film);
         const trace::Ray camera_ray{cr.origin, cr.direction};
         // The receiver the VPLs light: the first hit, or the rough end of its chain.
         std::optional<light::Receiver> r;

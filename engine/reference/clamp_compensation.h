@@ -55,6 +55,8 @@ struct CompensationOptions {
     // it, and not at its glossy first vertex, whose reflection the chain carries all of.
     light::ChainOptions chains;
     uint64_t seed = 0;
+    // The camera whose pixels are compensated (copied); null: the scene's.
+    const scene::Camera* camera = nullptr;
     // Pass i of this object is pass first_pass + i · pass_stride of the sequence the seed defines:
     // ranks of a cluster run every R-th pass from their rank, so that together they run one
     // process's passes.

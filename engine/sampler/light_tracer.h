@@ -22,9 +22,9 @@
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/vpl.h"
+#include "engine/sampler/sample_stream.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
-#include "engine/sampler/sample_stream.h"
 
 namespace mvpl::sampler {
 

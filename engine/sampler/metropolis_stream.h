@@ -43,13 +43,13 @@
 #include "engine/cluster/cluster.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/vpl.h"
-#include "engine/scene/scene.h"
-#include "engine/trace/accel.h"
 #include "engine/sampler/direct_light.h"
 #include "engine/sampler/importance.h"
 #include "engine/sampler/light_tracer.h"
 #include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/sampler/vpl_stream.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
 
 namespace mvpl::sampler {
 

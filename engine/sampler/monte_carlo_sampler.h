@@ -17,9 +17,9 @@
 #include "engine/core/progress.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/vpl.h"
+#include "engine/sampler/light_tracer.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
-#include "engine/sampler/light_tracer.h"
 
 namespace mvpl::sampler {
 

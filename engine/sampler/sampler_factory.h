@@ -6,11 +6,11 @@
 
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
-#include "engine/scene/scene.h"
-#include "engine/trace/accel.h"
 #include "engine/sampler/metropolis_stream.h"
 #include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/sampler/vpl_stream.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
 
 namespace mvpl::sampler {
 

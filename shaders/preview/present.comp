@@ -1,7 +1,8 @@
 #version 460
 #extension GL_GOOGLE_include_directive : require
 // mvpl preview: the running VPL estimate scale · Σ contributions + the emitted radiance averaged
-// over the G-buffers drawn so far (engine/render/emission_sum.h: rgb / a), exposed and
+// over the G-buffers drawn so far (engine/render/emission_sum.h: rgb / a) + the CPU estimators'
+// image (clamping compensation and caustics, engine/integrator/cpu_estimators.h), exposed and
 // sRGB-encoded exactly as engine/core/image.cpp writes a PNG (linear_to_srgb, then
 // round(255 · v)), into the 8-bit display image that is blitted to the window; the HUD's text
 // (an RGBA8 image with coverage in alpha, at hud_origin) is blended on top when enabled.
@@ -11,6 +12,7 @@ layout(set = 0, binding = 0, rgba32f) readonly uniform image2D accumulation;
 layout(set = 0, binding = 1, rgba32f) readonly uniform image2D emission_sum;
 layout(set = 0, binding = 2, rgba8) writeonly uniform image2D display;
 layout(set = 0, binding = 3, rgba8) readonly uniform image2D hud;
+layout(set = 0, binding = 4, rgba32f) readonly uniform image2D cpu_image;
 
 #include "shared/present_push.h"
 layout(push_constant) uniform PresentPushBlock { PresentPush params; };
@@ -31,7 +33,8 @@ void main() {
     const vec3 sum = imageLoad(accumulation, q).rgb;
     const vec4 emission = imageLoad(emission_sum, q);
     const vec3 emitted = emission.rgb / max(emission.a, 1.0);
-    const vec3 radiance = params.scale * sum + emitted;
+    vec3 radiance = params.scale * sum + emitted;
+    if (params.cpu_image != 0u) radiance += imageLoad(cpu_image, q).rgb;
     vec3 encoded;
     for (int c = 0; c < 3; ++c) {
         const float v = radiance[c] * params.exposure_scale;

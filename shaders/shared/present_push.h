@@ -19,11 +19,12 @@ struct PresentPush {
     uint hud_width;  // 0: no HUD
     uint hud_height;
     uint linear_target;  // 1: the window's format encodes sRGB itself
+    uint cpu_image;      // 1: add the CPU estimators' image (the accumulation's size)
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(int) == 4);
-static_assert(sizeof(PresentPush) == 44);  // scalars only: std430 adds no padding
+static_assert(sizeof(PresentPush) == 48);  // scalars only: std430 adds no padding
 #endif
 
 MVPL_SHARED_END

@@ -16,9 +16,9 @@
 #include "engine/reference/clamp_compensation.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/reference/vpl_gather.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
-#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/support/sample_statistics.h"
 #include "tests/support/scene_builder.h"
 

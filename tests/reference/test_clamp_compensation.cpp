@@ -12,9 +12,9 @@
 #include "engine/light/light_sampler.h"
 #include "engine/reference/clamp_compensation.h"
 #include "engine/reference/vpl_gather.h"
+#include "engine/sampler/monte_carlo_stream.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "engine/sampler/monte_carlo_stream.h"
 #include "tests/support/mirror_box.h"
 #include "tests/support/sample_statistics.h"
 

@@ -16,9 +16,9 @@
 #include "engine/material/fresnel.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/reference/vpl_gather.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
-#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/support/glass_slab.h"
 #include "tests/support/oracle_against_tracer.h"
 

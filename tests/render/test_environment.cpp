@@ -9,8 +9,8 @@
 #include "engine/light/light_sampler.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/render/vpl_renderer.h"
-#include "engine/trace/accel.h"
 #include "engine/sampler/monte_carlo_sampler.h"
+#include "engine/trace/accel.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/support/scene_builder.h"
 

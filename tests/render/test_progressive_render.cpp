@@ -14,9 +14,9 @@
 #include "engine/gpu/memory.h"
 #include "engine/light/light_sampler.h"
 #include "engine/render/vpl_renderer.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/support/scaled_vpls.h"
 

@@ -1,5 +1,5 @@
-// The direct light apart from the Metropolis chains (engine/sampler/direct_light.h): the shares of a
-// sample's steps over next() calls, the estimate's expectation against Monte Carlo, and its
+// The direct light apart from the Metropolis chains (engine/sampler/direct_light.h): the shares of
+// a sample's steps over next() calls, the estimate's expectation against Monte Carlo, and its
 // spread against the chains' own emitter VPLs (direct_stride 0).
 #include <gtest/gtest.h>
 
@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "engine/light/light_sampler.h"
-#include "engine/scene/scene_loader.h"
-#include "engine/trace/accel.h"
 #include "engine/sampler/direct_light.h"
 #include "engine/sampler/metropolis_stream.h"
 #include "engine/sampler/monte_carlo_stream.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
 
 namespace mvpl {
 namespace {

@@ -5,9 +5,9 @@
 
 #include <vector>
 
+#include "engine/sampler/importance.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
-#include "engine/sampler/importance.h"
 #include "tests/support/scene_builder.h"
 
 namespace mvpl::sampler {

@@ -6,10 +6,10 @@
 #include <cstring>
 
 #include "engine/light/light_sampler.h"
-#include "engine/scene/scene_loader.h"
-#include "engine/trace/accel.h"
 #include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/sampler/sample_stream.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
 #include "tests/sampler/vpl_test_util.h"
 #include "tests/support/scaled_vpls.h"
 #include "tests/support/scene_builder.h"

@@ -9,11 +9,11 @@
 
 #include "engine/core/error.h"
 #include "engine/light/light_sampler.h"
-#include "engine/scene/scene_loader.h"
-#include "engine/trace/accel.h"
 #include "engine/sampler/metropolis_stream.h"
 #include "engine/sampler/monte_carlo_stream.h"
 #include "engine/sampler/sampler_factory.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
 #include "tests/support/scaled_vpls.h"
 #include "tests/support/scene_builder.h"
 

@@ -1,6 +1,6 @@
-// The Metropolis chains' stratified starts (engine/sampler/start_resampling.h): each pool item's count
-// is within one of its expectation, pick c is marginally ∝ w for every c (the shuffle), and the
-// sampler stays unbiased when the chains run unequal numbers of steps.
+// The Metropolis chains' stratified starts (engine/sampler/start_resampling.h): each pool item's
+// count is within one of its expectation, pick c is marginally ∝ w for every c (the shuffle), and
+// the sampler stays unbiased when the chains run unequal numbers of steps.
 #include <gtest/gtest.h>
 
 #include <cmath>

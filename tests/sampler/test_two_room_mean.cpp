@@ -25,10 +25,10 @@
 
 #include "engine/light/light_sampler.h"
 #include "engine/reference/vpl_gather.h"
-#include "engine/scene/scene_loader.h"
-#include "engine/trace/accel.h"
 #include "engine/sampler/metropolis_stream.h"
 #include "engine/sampler/monte_carlo_stream.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
 #include "tests/support/sample_statistics.h"
 
 namespace mvpl {

@@ -12,9 +12,9 @@
 #include "engine/light/light_sampler.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/reference/vpl_gather.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
-#include "engine/sampler/monte_carlo_sampler.h"
 #include "tests/sampler/vpl_test_util.h"
 #include "tests/support/scene_builder.h"
 

@@ -3,8 +3,8 @@
 #include <vector>
 
 #include "engine/core/image.h"
-#include "engine/scene/scene.h"
 #include "engine/sampler/monte_carlo_sampler.h"
+#include "engine/scene/scene.h"
 
 namespace mvpl::test {
 

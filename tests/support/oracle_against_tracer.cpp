@@ -7,8 +7,8 @@
 #include "engine/light/light_sampler.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/reference/vpl_gather.h"
-#include "engine/trace/accel.h"
 #include "engine/sampler/monte_carlo_sampler.h"
+#include "engine/trace/accel.h"
 
 namespace mvpl::test {
 

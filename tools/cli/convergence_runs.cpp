@@ -7,8 +7,8 @@
 #include "engine/core/progress.h"
 #include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
-#include "engine/reference/path_tracer.h"
 #include "engine/integrator/vpl_integrator.h"
+#include "engine/reference/path_tracer.h"
 #include "engine/render/vpl_renderer.h"
 
 namespace mvpl::cli {
@@ -140,8 +140,8 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     double per_work = 0.0, last = 0.0;
     while (true) {
         const double now = timer.seconds();
-        if (root_says(ranks, stream.work_done() > 0 &&
-                                 now + per_work * double(work) > run.budget_seconds))
+        if (root_says(ranks,
+                      stream.work_done() > 0 && now + per_work * double(work) > run.budget_seconds))
             break;
         integrator.advance(work);
         const Image image = integrator.image();

@@ -25,8 +25,8 @@ struct ConvergenceRun {
     int max_depth = 6;
     uint64_t seed = 0;
     bool quiet = false;
-    // VPL runs add clamping compensation (engine/integrator/cpu_estimator_thread.h): compensation_passes samples per
-    // pixel, or 0: paced by the VPLs shaded.
+    // VPL runs add clamping compensation (engine/integrator/cpu_estimator_thread.h):
+    // compensation_passes samples per pixel, or 0: paced by the VPLs shaded.
     bool compensate = false;
     uint32_t compensation_passes = 0;
     // And caustics (reference/caustic_tracer.h), paced as the compensation, with the chains' class

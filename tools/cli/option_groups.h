@@ -8,9 +8,9 @@
 
 #include "engine/gpu/device_info.h"
 #include "engine/render/vpl_renderer.h"
+#include "engine/sampler/sampler_factory.h"
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/scene_loader.h"
-#include "engine/sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/session/scene_session.h"
 

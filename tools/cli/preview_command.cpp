@@ -57,6 +57,10 @@ int run_preview(const Args& args) {
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
     add_renderer_options(parser, renderer);  // C toggles clamping in the window
+    CompensationArgs compensation;
+    add_compensation_options(parser, compensation);
+    bool no_caustics = false;
+    add_caustics_option(parser, no_caustics);
     parser.add_flag("--no-hud", &no_hud, "no text overlay");
     parser.add_flag("--no-motion-scaling", &no_motion_scaling,
                     "render at full resolution while the camera moves too");
@@ -84,6 +88,9 @@ int run_preview(const Args& args) {
     o.interleave_auto = renderer.interleave == 0;
     o.interleave_min_pixels = RendererArgs::kInterleaveMinPixels;
     o.batches_per_position_auto = renderer.batches_per_position == 0;
+    o.compensate = compensation.enabled();
+    o.compensation_passes = uint32_t(compensation.spp);
+    o.caustics = !no_caustics;
     o.hud = !no_hud;
     o.motion_scaling = !no_motion_scaling;
     o.camera = camera.choice;

@@ -134,18 +134,21 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
     if (job.cluster) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "; %d ranks, images summed in %.1f ms (%.1f MB a rank)",
-                      job.cluster->size(), 1e3 * r.stats.reduce_seconds, double(r.stats.reduce_bytes) / 1e6);
+                      job.cluster->size(), 1e3 * r.stats.reduce_seconds,
+                      double(r.stats.reduce_bytes) / 1e6);
         pass_times += buf;
     }
     char line[512];
-    std::snprintf(line, sizeof line,
-                  "render: %zu VPLs from %llu %s, %ux%u: sampling %.2f s, shading %.2f s (%s), "
-                  "total %.2f s, %.1f VPL/s%s%s\n",
-                  r.stats.vpls, static_cast<unsigned long long>(r.stats.units),
-                  job.estimate.sampler == "mc" ? "paths" : "steps", job.estimate.render.width, job.estimate.render.height,
-                  r.stats.sampling_seconds, r.stats.shading_seconds, pass_times.c_str(), total_seconds,
-                  double(r.stats.vpls) / std::max(r.stats.shading_seconds + r.stats.sampling_seconds, 1e-9),
-                  r.statistics.empty() ? "" : "; ", r.statistics.c_str());
+    std::snprintf(
+        line, sizeof line,
+        "render: %zu VPLs from %llu %s, %ux%u: sampling %.2f s, shading %.2f s (%s), "
+        "total %.2f s, %.1f VPL/s%s%s\n",
+        r.stats.vpls, static_cast<unsigned long long>(r.stats.units),
+        job.estimate.sampler == "mc" ? "paths" : "steps", job.estimate.render.width,
+        job.estimate.render.height, r.stats.sampling_seconds, r.stats.shading_seconds,
+        pass_times.c_str(), total_seconds,
+        double(r.stats.vpls) / std::max(r.stats.shading_seconds + r.stats.sampling_seconds, 1e-9),
+        r.statistics.empty() ? "" : "; ", r.statistics.c_str());
     return line;
 }
 

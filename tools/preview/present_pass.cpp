@@ -77,7 +77,8 @@ void to_general(VkCommandBuffer cmd, VkImage image, VkPipelineStageFlags2 dst_st
 gpu::ComputeLayout present_layout() {
     gpu::ComputeLayout layout;
     layout.bindings = {gpu::BindingType::storage_image, gpu::BindingType::storage_image,
-                       gpu::BindingType::storage_image, gpu::BindingType::storage_image};
+                       gpu::BindingType::storage_image, gpu::BindingType::storage_image,
+                       gpu::BindingType::storage_image};
     layout.push_constant_bytes = sizeof(Push);
     return layout;
 }
@@ -94,6 +95,8 @@ struct PresentPass::Impl {
     VkDescriptorSet set = VK_NULL_HANDLE;
     gpu::Image display;
     gpu::Image hud;  // 1×1 transparent until the first set_hud
+    gpu::Image cpu;  // 1×1 black while there is no CPU image
+    bool cpu_active = false;
     uint32_t hud_width = 0;
     uint32_t hud_height = 0;
     int32_t hud_x = 0;
@@ -112,7 +115,7 @@ struct PresentPass::Impl {
 PresentPass::PresentPass(gpu::Context& context, bool linear_target)
     : m_impl(std::make_unique<Impl>(context, linear_target)) {
     Impl& m = *m_impl;
-    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 4};
+    const VkDescriptorPoolSize size{VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, 5};
     VkDescriptorPoolCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
     info.maxSets = 1;
@@ -133,6 +136,29 @@ PresentPass::PresentPass(gpu::Context& context, bool linear_target)
     desc.usage = gpu::ImageUsage::storage;
     m.hud = gpu::Image(context, desc, "preview hud");
     m.hud.upload(std::vector<uint8_t>(4, 0));
+    desc.format = gpu::Format::rgba32_float;
+    m.cpu = gpu::Image(context, desc, "preview cpu image");
+    m.cpu.upload(std::vector<float>(4, 0.0f));
+}
+
+void PresentPass::set_cpu_image(const Image& image) {
+    Impl& m = *m_impl;
+    m.cpu_active = image.width() > 0 && image.height() > 0;
+    if (!m.cpu_active) return;
+    const auto w = uint32_t(image.width()), h = uint32_t(image.height());
+    if (m.cpu.width() != w || m.cpu.height() != h) {
+        gpu::ImageDesc desc;
+        desc.width = w;
+        desc.height = h;
+        desc.format = gpu::Format::rgba32_float;
+        desc.usage = gpu::ImageUsage::storage;
+        m.cpu = gpu::Image(*m.context, desc, "preview cpu image");
+    }
+    std::vector<float> rgba(size_t(w) * h * 4, 0.0f);
+    for (size_t i = 0; i < size_t(w) * h; ++i)
+        for (int c = 0; c < 3; ++c)
+            rgba[4 * i + size_t(c)] = image.pixels()[i][c];
+    m.cpu.upload(rgba);
 }
 
 PresentPass::~PresentPass() {
@@ -182,9 +208,12 @@ void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& acc
     }
 
     // The frame before has finished (Swapchain::end_frame waits), so the set is free to update.
-    const std::array<const gpu::Image*, 4> images{&accumulation, &emission, &m.display, &m.hud};
-    std::array<VkDescriptorImageInfo, 4> infos{};
-    std::array<VkWriteDescriptorSet, 4> writes{};
+    const bool cpu = m.cpu_active && m.cpu.width() == accumulation.width() &&
+                     m.cpu.height() == accumulation.height();
+    const std::array<const gpu::Image*, 5> images{&accumulation, &emission, &m.display, &m.hud,
+                                                  &m.cpu};
+    std::array<VkDescriptorImageInfo, 5> infos{};
+    std::array<VkWriteDescriptorSet, 5> writes{};
     for (size_t i = 0; i < images.size(); ++i) {
         infos[i].imageView = images[i]->view();
         infos[i].imageLayout = VK_IMAGE_LAYOUT_GENERAL;
@@ -214,6 +243,7 @@ void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& acc
     push.source_width = accumulation.width();
     push.source_height = accumulation.height();
     push.linear_target = m.linear_target ? 1u : 0u;
+    push.cpu_image = cpu ? 1u : 0u;
     const auto dispatch = [&](bool hud) {
         push.hud_width = hud ? m.hud_width : 0;
         push.hud_height = hud ? m.hud_height : 0;

@@ -1,5 +1,6 @@
 #pragma once
-// The preview's present pass: scale · accumulation + the mean emission, exposed and sRGB-encoded
+// The preview's present pass: scale · accumulation + the mean emission + the CPU estimators'
+// image, exposed and sRGB-encoded
 // like the PNG writer (shaders/preview/present.comp), the HUD blended on top, blitted into the
 // swapchain image. A capture reads the display image back before the HUD is drawn, so that a
 // screenshot is the rendered picture only. Vulkan-free to include.
@@ -7,6 +8,7 @@
 #include <memory>
 #include <vector>
 
+#include "engine/core/image.h"
 #include "engine/gpu/swapchain.h"
 
 namespace mvpl::gpu {
@@ -34,6 +36,9 @@ public:
 
     // Uploads the HUD text image (outside a frame's recording).
     void set_hud(const HudBitmap& hud);
+    // Uploads the CPU estimators' image that is added to the VPLs' (outside a frame's
+    // recording); it must have the accumulation's size. An empty image: none.
+    void set_cpu_image(const Image& image);
     // Records into frame.cmd. The display image has the frame's size and shows the accumulation
     // scaled to it (nearest neighbour; 1:1 when the sizes agree). emission: VplRenderer::emission()
     // (Σ over the G-buffers drawn, their count in alpha). capture: read the encoded picture back

@@ -11,17 +11,17 @@
 #include "engine/core/file_extension.h"
 #include "engine/core/image.h"
 #include "engine/core/png.h"
-#include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/swapchain.h"
-#include "engine/light/specular_chain.h"
-#include "engine/render/batch_plan.h"
+#include "engine/integrator/cpu_estimators.h"
+#include "engine/integrator/estimate.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/sampler_factory.h"
 #include "tools/preview/camera_controller.h"
 #include "tools/preview/hud.h"
 #include "tools/preview/present_pass.h"
+#include "tools/preview/preview_estimate.h"
 #include "tools/preview/preview_stats.h"
 #include "tools/preview/script.h"
 #include "tools/preview/vpl_history.h"
@@ -84,18 +84,20 @@ private:
         return co;
     }
     float clamp() const { return m_clamping ? m_options.clamp : 0.0f; }
-    light::ChainOptions chain_options() const {
-        light::ChainOptions c = m_options.levers.chains;
-        c.max_depth = m_options.max_depth;
-        return c;
-    }
-    std::unique_ptr<VplHistory> make_history(const std::string& sampler) const;
+    render::RenderOptions render_options(uint32_t width, uint32_t height) const;
+    integrator::Estimate estimate(const render::RenderOptions& ro,
+                                  const std::string& sampler) const;
+    integrator::SceneView view() const;
+    std::unique_ptr<VplHistory> make_history(const std::string& sampler,
+                                             const render::RenderOptions& ro) const;
     void apply(const Input& input, double dt);
     void apply_key(const std::string& key);
     void apply_script(uint64_t frame);
     // Starts a new sum for the window's framebuffer, at 1/divisor of its size.
     void restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving);
     void render_work();
+    void update_cpu_image(bool force);
+    Image resolved();
     void update_hud(bool force);
     void save(const std::string& path, bool png_from_display);
 
@@ -117,6 +119,10 @@ private:
     std::unique_ptr<VplHistory> m_mc_history;
     std::unique_ptr<VplHistory> m_chain;
     VplHistory* m_history = nullptr;  // the one the current sum draws from
+    // The compensation and caustics of the picture at rest (none while the camera moves), their
+    // image uploaded to the present pass every kHudInterval.
+    std::unique_ptr<integrator::CpuEstimators> m_cpu;
+    Timer m_cpu_timer;
 
     float m_exposure;
     bool m_clamping = true;
@@ -139,15 +145,26 @@ private:
     bool m_hud_dirty = true;
 };
 
-std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler) const {
-    sampler::SamplerSettings s;
-    s.seed = m_options.seed;
-    s.tracer.max_depth = m_options.max_depth;
-    s.width = int(m_window_width ? m_window_width : uint32_t(m_options.width));
-    s.height = int(m_window_height ? m_window_height : uint32_t(m_options.height));
-    s.clamp = clamp();
-    s.specular_chains = chain_options();  // the target follows the chains the image traces
-    s.vsl_radius = m_options.levers.vsl_radius;
+render::RenderOptions PreviewApp::render_options(uint32_t width, uint32_t height) const {
+    return preview_render_options(m_options, m_session.scene(), clamp(), width, height);
+}
+
+integrator::Estimate PreviewApp::estimate(const render::RenderOptions& ro,
+                                          const std::string& sampler) const {
+    return preview_estimate(m_options, ro, sampler);
+}
+
+integrator::SceneView PreviewApp::view() const {
+    return {&m_session.scene(), &m_session.accel(), &m_session.lights(), &m_controller.camera()};
+}
+
+std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler,
+                                                     const render::RenderOptions& ro) const {
+    const integrator::Estimate e = estimate(ro, sampler);
+    sampler::SamplerSettings s = integrator::sampler_settings(e);
+    // Where the caustic tracer runs at rest, the light tracer leaves no VPL on the chains' class
+    // (whose light it carries), moving or not: the same VPLs as `mvpl render`.
+    if (integrator::caustics_needed(view(), e)) s.tracer.specular = ro.chains;
     return std::make_unique<VplHistory>(
         sampler::make_vpl_stream(sampler, m_session.scene(), m_session.accel(), m_session.lights(),
                                  m_controller.camera(), s),
@@ -225,34 +242,22 @@ void PreviewApp::apply_script(uint64_t frame) {
 }
 
 void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving) {
+    m_cpu.reset();  // its pixels were the old view's (or size's)
+    m_present.set_cpu_image(Image());
     m_window_width = width;
     m_window_height = height;
     m_render_width = std::max(width / divisor, 1u);
     m_render_height = std::max(height / divisor, 1u);
-    if (!m_mc_history) m_mc_history = make_history("mc");
+    const render::RenderOptions ro = render_options(m_render_width, m_render_height);
+    if (!m_mc_history) m_mc_history = make_history("mc", ro);
     const bool chain = m_sampler != "mc";
     if (moving) m_chain.reset();  // its target was what the old view saw
-    if (chain && !moving && !m_chain) m_chain = make_history(m_sampler);
+    if (chain && !moving && !m_chain) m_chain = make_history(m_sampler, ro);
     m_history = chain && !moving ? m_chain.get() : m_mc_history.get();
     m_motion_sum = moving && (divisor > 1 || chain);
-    render::RenderOptions ro = m_options.levers;
-    ro.width = m_render_width;
-    ro.height = m_render_height;
-    ro.shadow_resolution = m_options.shadow_resolution;
-    ro.batch = m_options.batch;
-    ro.jitter = m_options.jitter;
-    ro.subpixel_rotation = subpixel_rotation(m_options.seed);  // as `mvpl render --seed`
-    ro.clamp = clamp();
-    ro.chains = chain_options();
-    ro.chain_seed = m_options.seed;
-    if (m_options.interleave_auto &&
-        (light::scene_may_chain(m_session.scene(), ro.chains) ||
-         uint64_t(ro.width) * ro.height < m_options.interleave_min_pixels))
-        ro.interleave = 1;
-    if (m_options.batches_per_position_auto)
-        ro.batches_per_position =
-            render::default_batches_per_position(m_session.scene().triangle_count());
     m_renderer.begin(m_controller.camera(), ro);
+    if (!moving)
+        m_cpu = std::make_unique<integrator::CpuEstimators>(view(), estimate(ro, m_sampler));
     m_replayed = 0;
     m_scale = 0.0;
     m_moved = false;
@@ -289,8 +294,26 @@ void PreviewApp::render_work() {
         const double per_unit = ms / double(std::max<uint64_t>(drawn, 1));
         m_ms_per_unit = m_ms_per_unit > 0.0 ? 0.7 * m_ms_per_unit + 0.3 * per_unit : per_unit;
         m_stats.add_vpls(to - from);
+        if (m_cpu) m_cpu->pace(to, integrator::Pacing::OpenEnded);
         if (fixed) break;
     }
+}
+
+void PreviewApp::update_cpu_image(bool force) {
+    if (!m_cpu || (!force && m_cpu_timer.seconds() < kHudInterval)) return;
+    m_cpu_timer.reset();
+    m_present.set_cpu_image(m_cpu->snapshot(int(m_render_width), int(m_render_height)));
+}
+
+// scale · Σ + emission + the CPU estimators' image: what the window shows at rest.
+Image PreviewApp::resolved() {
+    Image image = m_renderer.resolve(m_scale);
+    if (m_cpu) {
+        const Image cpu = m_cpu->snapshot(image.width(), image.height());
+        for (size_t i = 0; i < image.pixels().size(); ++i)
+            image.pixels()[i] += cpu.pixels()[i];
+    }
+    return image;
 }
 
 void PreviewApp::update_hud(bool force) {
@@ -310,13 +333,13 @@ void PreviewApp::update_hud(bool force) {
 
 void PreviewApp::save(const std::string& path, bool png_from_display) {
     if (lower_extension(path) == ".exr") {
-        write_exr(m_renderer.resolve(m_scale), path);
+        write_exr(resolved(), path);
     } else if (png_from_display) {
         uint32_t w = 0, h = 0;
         const std::vector<uint8_t> rgba = m_present.captured(w, h);
         write_rgba_png(path, rgba, w, h);
     } else {
-        write_png(m_renderer.resolve(m_scale), path, m_exposure);
+        write_png(resolved(), path, m_exposure);
     }
     if (!m_options.quiet) std::printf("preview: wrote %s\n", path.c_str());
 }
@@ -346,8 +369,15 @@ int PreviewApp::run(const Timer& start) {
         render_work();
         const double shaded = phase.seconds();
         update_hud(moving || refine);
-
         const bool last = m_options.frames > 0 && frame + 1 == m_options.frames;
+        if (last && !m_options.screenshot.empty() && m_cpu) {
+            // The passes `mvpl render` runs for the VPLs shaded, all of them: its image.
+            m_cpu->pace(m_history->segment_begin(m_replayed), integrator::Pacing::Fixed);
+            m_present.set_cpu_image(m_cpu->finish(true, int(m_render_width), int(m_render_height)));
+        } else {
+            update_cpu_image(moving || refine);
+        }
+
         const bool capture = m_screenshot_key || (last && !m_options.screenshot.empty());
         PresentParams params;
         params.scale = m_scale;

@@ -2,8 +2,9 @@
 // `mvpl preview`: the interactive progressive VPL preview. Each frame shades as many VPL batches
 // as fit a time budget into the running sum and shows scale · Σ + emission; a camera move
 // restarts the sum. Monte Carlo VPLs do not depend on the view, so they are kept and shaded
-// again after a move (the picture converges to the same image as `mvpl render` with the same
-// seed); a Metropolis chain's target depends on the camera, so it restarts with it.
+// again after a move; a Metropolis chain's target depends on the camera, so it restarts with it.
+// At rest the clamping compensation and the caustic tracer run beside, so that the picture
+// converges to the same image as `mvpl render` with the same seed.
 #include <cstdint>
 #include <string>
 
@@ -46,6 +47,12 @@ struct PreviewOptions {
     // levers.batches_per_position was the default (--batches-per-position 0): the scene's
     // (render::default_batches_per_position), as `mvpl render`.
     bool batches_per_position_auto = false;
+    // The CPU estimators beside the VPLs at rest, as `mvpl render` runs them
+    // (engine/integrator/cpu_estimators.h): clamping compensation (--no-compensate,
+    // --compensation-spp) and caustics (--no-caustics).
+    bool compensate = true;
+    uint32_t compensation_passes = 0;
+    bool caustics = true;
     bool hud = true;
     // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
     bool motion_scaling = true;
