@@ -133,6 +133,7 @@ const Member kMembers[] = {
     MVPL_MEMBER(PresentPush, hud_width),
     MVPL_MEMBER(PresentPush, hud_height),
     MVPL_MEMBER(PresentPush, linear_target),
+    MVPL_MEMBER(PresentPush, cpu_image),
 };
 
 #undef MVPL_MEMBER
