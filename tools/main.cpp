@@ -1,4 +1,5 @@
-// mvpl: the command line. The only place that wires the whole program together.
+// mvpl: the command line: dispatches to the commands (tools/cli), which parse their options and
+// drive the engine (the estimator itself: engine/integrator).
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>

@@ -11,7 +11,7 @@ Scenes (each a .gltf plus one .bin buffer, standard library only, same bytes on 
   assets/glossy/glossy.gltf       8 spheres (4 metal, 4 plastic, roughness 0.05/0.2/0.4/0.8) on a
                                   checkered floor, one emissive quad and one point light
 
-Conventions (docs: DESIGN.md "Units and conventions"): right-handed, metres, +Y up, the camera
+Conventions (docs: docs/design.md "Units and conventions"): right-handed, metres, +Y up, the camera
 looks down its local -Z. Emissive triangles emit from their front face only: the face whose
 counter-clockwise winding (a, b, c) gives the normal (b - a) x (c - a). Every flat face here is
 wound so that this geometric normal equals the stored NORMAL.

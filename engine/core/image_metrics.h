@@ -1,5 +1,5 @@
 #pragma once
-// Error of an image against a reference (DESIGN.md "Units and conventions"):
+// Error of an image against a reference (docs/design.md "Units and conventions"):
 // relMSE = mean((x − r)² / (r² + 10⁻²)), RMSE, mean absolute error, and the ratio of means; and
 // the spikes a mean hides (issue 15, "No spikes"): over pixels, with x and r the luminances, the
 // 99.9th percentile of |x − r| / (r + 10⁻²) and the largest x / (r + 10⁻²).

@@ -1,5 +1,5 @@
 #pragma once
-// Sub-pixel sample positions for anti-aliasing (DESIGN.md, "GPU passes"): the GPU renderer draws
+// Sub-pixel sample positions for anti-aliasing (docs/design.md, "GPU passes"): the GPU renderer draws
 // its G-buffer at one position per group of VPLs, and the CPU oracle shades the same VPLs at the
 // same positions, so that both estimate the box-filtered pixel (as Mitsuba's reference does).
 //

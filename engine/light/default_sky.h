@@ -1,5 +1,5 @@
 #pragma once
-// When a scene gets the default sky (README, "Lighting"): the rule that decides whether the
+// When a scene gets the default sky (README, "Commands", SCENE): the rule that decides whether the
 // scene's own emitters can light the model, as glTF viewers would show it lit.
 #include "engine/scene/scene.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// GLSL generation from material graphs (DESIGN.md, "Shader chain"): walks the scene's graphs,
+// GLSL generation from material graphs (docs/design.md, "Shader chain"): walks the scene's graphs,
 // emits each function they need once, dependencies first, then one function per material that
 // resolves its graph at a surface point, and the closure-evaluation dispatch that contains only
 // the closure types that occur.

@@ -1,5 +1,5 @@
 #pragma once
-// A material node kind in one place (DESIGN.md, "Shader chain"): its name, its inputs, its C++
+// A material node kind in one place (docs/design.md, "Shader chain"): its name, its inputs, its C++
 // evaluator, its GLSL function with the functions that one depends on, and how a material's
 // generated code calls it. Each kind is one file under nodes/ that defines its NodeKind, and one
 // line in node_registry.cpp that registers it by name — Mitsuba's one plugin a file, nori's

@@ -3,7 +3,7 @@
 // singularities"): the energy that the clamped geometric term of the VPL estimate removes,
 // recovered on the CPU by BSDF sampling from each receiver.
 //
-// The VPL estimate divides by max(d², d_min²) instead of d² (DESIGN.md, "The algorithm"), so a
+// The VPL estimate divides by max(d², d_min²) instead of d² (docs/design.md, "The algorithm"), so a
 // surface point y at distance d < d_min from the receiver x contributes only the fraction d²/d_min²
 // of its light. The rest is
 //

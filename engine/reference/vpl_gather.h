@@ -1,5 +1,5 @@
 #pragma once
-// The CPU VPL gather: the oracle for the GPU renderer (DESIGN.md "Reference and oracle"). It
+// The CPU VPL gather: the oracle for the GPU renderer (docs/design.md "Reference and oracle"). It
 // shades the same VPL list with light::vpl_contribution (engine/light/vpl_contribution.h, the
 // formulas of vpl.h) and exact Embree visibility, so that a difference from the GPU image is a
 // shadow-map or shader error, never a sampler error.

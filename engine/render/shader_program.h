@@ -1,5 +1,5 @@
 #pragma once
-// The GLSL of every stage, generated for one scene (DESIGN.md, "Shader chain"): the scene's
+// The GLSL of every stage, generated for one scene (docs/design.md, "Shader chain"): the scene's
 // material graphs resolved in the G-buffer fragment shader, and a shading shader with only the
 // closure types and VPL types the scene can produce. Vulkan-free.
 #include <array>

@@ -1,5 +1,5 @@
 #pragma once
-// Pass 2 (DESIGN.md, "GPU passes"): the distance from each VPL of a batch to the nearest surface
+// Pass 2 (docs/design.md, "GPU passes"): the distance from each VPL of a batch to the nearest surface
 // in every direction, as cube maps in an R32F 2D array (cube i = batch[i], layers 6i … 6i + 5 in
 // the order +X −X +Y −Y +Z −Z). Six single-layer passes per cube (the fastest on lavapipe;
 // multiview writes wrong layers there). Not a cube-map view: the shading pass selects face and
@@ -81,15 +81,8 @@ struct ShadowPassOptions {
 
 class ShadowPass {
 public:
-    // A simplified mesh may move the surface by this many texel footprints (d · 2 / resolution
-    // on a face, extent / resolution on an orthographic map): the shading pass's shadow tests
-    // allow as much depth in front of a receiver (kLodFootprint in shading_template.glsl; the
-    // plane test's bias is one footprint anyway), and a silhouette moves by at most a texel at a
-    // face's centre (three at its corners, whose texels span a third of the angle). One
-    // footprint rather than a quarter: the dragon draws 44 k instead of 85 k triangles per VPL
-    // (126 → 189 VPL/s) at 1.08× the full maps' error against the oracle (docs/results.md,
-    // "Scenes from outside the project").
-    static constexpr float kLodFootprint = 1.0f;
+    // shaders/shared/shadow_map.h: the depth a simplified mesh may move the surface by.
+    static inline const float kLodFootprint = shared::kLodFootprint;
 
     ShadowPass(gpu::Context& context, const SceneGeometry& geometry, const ShadowClusters& clusters,
                const ShadowPassOptions& options);

@@ -1,6 +1,6 @@
 #pragma once
 // The GPU VPL renderer: G-buffer once per view, then per batch of VPLs the shadow cubes and the
-// shading, accumulated into one linear radiance image (DESIGN.md, "GPU passes"). VPL powers are
+// shading, accumulated into one linear radiance image (docs/design.md, "GPU passes"). VPL powers are
 // not divided by the number of light paths (vpl.h): render() takes a VplSet and applies its scale
 // in the resolve; the progressive interface (begin/accumulate/resolve) takes the scale at the end
 // (engine/sampler/vpl_stream.h), for time budgets and the interactive preview.

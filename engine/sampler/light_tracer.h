@@ -1,9 +1,10 @@
 #pragma once
 // Light paths traced on Embree from primary samples, leaving virtual point lights
-// (DESIGN.md "The algorithm"; Keller 1997, Segovia et al. 2007).
+// (docs/design.md "The algorithm"; Keller 1997, Segovia et al. 2007).
 //
 // A path x_0 (on a light), x_1, …, x_k leaves an emitter VPL at x_0 (path_length 0: direct light)
-// and a surface VPL at every x_j, j ≥ 1 (all our closures are non-specular). The VPL's power is
+// and a surface VPL at every x_j, j ≥ 1 that path_partition.h's leaves_vpl keeps (not a vertex lit
+// from behind, nor one of the chains' class while the caustic tracer runs). The VPL's power is
 // the path throughput at x_j (not divided by the number of light paths: vpl.h):
 //   β_0 = Le·|cos θ_0| / (pick · pdf_pos · pdf_dir)                 (LightSampler::sample_le)
 //   β_j = β_{j−1} · f_{j−1} · |n_g,{j−1}·ω_out| / pdf  ·  |n_s,j·ω_in| / |n_g,j·ω_in|

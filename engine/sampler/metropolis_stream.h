@@ -1,5 +1,5 @@
 #pragma once
-// Metropolis–Hastings VPL sampling (DESIGN.md "The algorithm"; the seed's §3 and §4.4; Segovia
+// Metropolis–Hastings VPL sampling (docs/design.md "The algorithm"; the seed's §3 and §4.4; Segovia
 // et al. 2007; primary-sample-space mutations after Kelemen et al. 2002 and pbrt-v3's MLTSampler).
 //
 // Each of C independent chains walks primary-sample space (PrimarySampleVector) with the target

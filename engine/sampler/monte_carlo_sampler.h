@@ -1,5 +1,5 @@
 #pragma once
-// Monte Carlo VPL generation: N independent light paths (DESIGN.md "The algorithm").
+// Monte Carlo VPL generation: N independent light paths (docs/design.md "The algorithm").
 //
 // Primary samples are random (PCG32, one stream per path index) or Halton (`qmc`): the first
 // `qmc_dimensions` dimensions of path i are the i-th Halton point in the first primes with a

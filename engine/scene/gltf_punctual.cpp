@@ -67,7 +67,7 @@ std::optional<Light> node_light(const Document& doc, int node, const DMat4& worl
                                                  indexed(name + ".color", size_t(i))));
         }
     }
-    // Photometric intensity taken 1:1 as radiometric (DESIGN.md).
+    // Photometric intensity taken 1:1 as radiometric (docs/design.md).
     const double intensity =
         check_non_negative(doc, light.intensity, kMaxFactor, name + ".intensity");
     const double brightest = intensity * double(max_component(colour));

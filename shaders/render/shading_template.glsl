@@ -1,5 +1,5 @@
 #version 460
-// Pass 3 (DESIGN.md, "GPU passes"): adds the contribution of one batch of VPLs to every pixel's
+// Pass 3 (docs/design.md, "GPU passes"): adds the contribution of one batch of VPLs to every pixel's
 // accumulated radiance, with the formulas of engine/light/vpl.h. One invocation per pixel; each
 // pixel is read and written by its own invocation only.
 //
@@ -86,12 +86,9 @@ const float kMaxSlope = 4.0;
 const float kNormalOffset = 1.0;
 const float kJunctionReach = 8.0;
 // Texels drawn from a simplified level of detail hold their distance negated (shadow.frag): such a
-// surface lies up to this many footprints from the full one (ShadowPass::kLodFootprint), so a
-// receiver on the full surface is not shadowed by its own coarser copy standing that far in front
-// of it. The plane test's kFootprintBias covers it already; the junction lookups and the
-// orthographic maps' test allow it for those texels only, so that thin walls (never simplified)
-// shadow as before.
-const float kLodFootprint = 1.0;
+// surface lies up to kLodFootprint footprints from the full one (shared/shadow_map.h). The plane
+// test's kFootprintBias covers it already; the junction lookups and the orthographic maps' test
+// allow it for those texels only, so that thin walls (never simplified) shadow as before.
 
 // The distance a shadow texel holds, and the depth its level of detail may stand in front.
 vec2 stored_distance(float texel_value, float footprint) {

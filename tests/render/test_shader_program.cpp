@@ -1,4 +1,4 @@
-// The shader chain leaves out what a scene does not need (DESIGN.md, "Shader chain"): the
+// The shader chain leaves out what a scene does not need (docs/design.md, "Shader chain"): the
 // Cornell box (diffuse, one area light) gets no microfacet code, no 2D sampler and no code for
 // light types it has not; one more textured, glossy material adds exactly its nodes. And the
 // SPIR-V cache: hits, and a corrupt or unwritable cache never fails a compile.

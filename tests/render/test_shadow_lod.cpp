@@ -1,5 +1,5 @@
 // Levels of detail for shadow casters (issue 14, "coarser shadow geometry"): a large mesh far
-// from a VPL is drawn simplified, by no more than a quarter of a shadow texel's footprint at its
+// from a VPL is drawn simplified, by no more than kLodFootprint (one) shadow texel footprint at its
 // distance. On the CPU: each level's error bound holds on a sphere (whose surface is known), and
 // the choice follows the distance. On the GPU: far fewer triangles, at the error of full maps
 // against the CPU oracle's exact visibility (the issue's bound: within 1.2×), for cube faces and
