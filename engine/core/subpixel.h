@@ -1,7 +1,7 @@
 #pragma once
-// Sub-pixel sample positions for anti-aliasing (docs/design.md, "GPU passes"): the GPU renderer draws
-// its G-buffer at one position per group of VPLs, and the CPU oracle shades the same VPLs at the
-// same positions, so that both estimate the box-filtered pixel (as Mitsuba's reference does).
+// Sub-pixel sample positions for anti-aliasing (docs/design.md, "GPU passes"): the GPU renderer
+// draws its G-buffer at one position per group of VPLs, and the CPU oracle shades the same VPLs at
+// the same positions, so that both estimate the box-filtered pixel (as Mitsuba's reference does).
 //
 // The sequence: the pixel centre first (so that an image of one batch is the pixel-centre image),
 // then antithetic pairs c ± (r_j − c) about the centre c = (½, ½), r_j the R2 sequence (Roberts

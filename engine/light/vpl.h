@@ -1,6 +1,7 @@
 #pragma once
 // The virtual point light record: what the sampler produces and the renderer and the CPU oracle
-// consume (docs/design.md, "The algorithm"). The renderer knows this record, not how VPLs were chosen.
+// consume (docs/design.md, "The algorithm"). The renderer knows this record, not how VPLs were
+// chosen.
 //
 // Contribution of a VPL at x_j to a receiver x' (shading normal n', viewed from ω_o), with
 // ω = unit(x' − x_j), d = |x' − x_j|, V the visibility and d_min the clamping distance:

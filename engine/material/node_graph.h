@@ -1,7 +1,7 @@
 #pragma once
-// The material node graph (docs/design.md, "Shader chain"): every material is a small DAG of nodes of
-// the kinds that node_kind.h registers. Value nodes (constant, image texture, vertex colour, mix,
-// emission) produce a vec4; normal nodes (normal map, bump map) produce the shading normal;
+// The material node graph (docs/design.md, "Shader chain"): every material is a small DAG of nodes
+// of the kinds that node_kind.h registers. Value nodes (constant, image texture, vertex colour,
+// mix, emission) produce a vec4; normal nodes (normal map, bump map) produce the shading normal;
 // closure nodes (Lambertian, GGX conductor, dielectric over diffuse, glTF metal-rough, rough
 // dielectric) produce the ClosureParams that Bsdf, the VPLs and the G-buffer carry. The CPU
 // (graph_eval.h) and the GPU (material_codegen.h) evaluate the same graphs.

@@ -1,6 +1,6 @@
 #pragma once
-// Pass 1 (docs/design.md, "GPU passes"): rasterises every scene triangle once per view with the scene
-// camera into an RGBA32F 2D array, one layer per attribute, which the shading pass reads.
+// Pass 1 (docs/design.md, "GPU passes"): rasterises every scene triangle once per view with the
+// scene camera into an RGBA32F 2D array, one layer per attribute, which the shading pass reads.
 // Pixel (x, y) holds the first surface along scene::generate_camera_ray(camera, w, h,
 // (x + s.x, y + s.y)), row 0 at the top, for the sub-pixel position s ∈ [0, 1)² of the recording
 // (the pixel centre by default; engine/core/subpixel.h). Vulkan-free to include.

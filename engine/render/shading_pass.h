@@ -1,6 +1,6 @@
 #pragma once
-// Pass 3 (docs/design.md, "GPU passes"): for every pixel of the G-buffer, the sum over a batch of VPLs
-// of their contributions (engine/light/vpl.h), visibility from the shadow pass, added into an
+// Pass 3 (docs/design.md, "GPU passes"): for every pixel of the G-buffer, the sum over a batch of
+// VPLs of their contributions (engine/light/vpl.h), visibility from the shadow pass, added into an
 // RGBA32F accumulation image by a compute shader. Vulkan-free to include.
 #include <cstdint>
 #include <memory>

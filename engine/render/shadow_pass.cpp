@@ -29,8 +29,8 @@ constexpr float kNearFraction = 1e-5f;
 
 // Whether every direction through cube face `face` lies strictly below the plane of normal n, so
 // that an Area or Surface VPL (whose factor max(0, n·ω) is then 0) never looks the face up: the
-// "hemicube" of docs/design.md, one face fewer for axis-aligned normals. n·ω is linear over the face
-// before normalisation, so its maximum is at a corner; the margin keeps the shader's rounded
+// "hemicube" of docs/design.md, one face fewer for axis-aligned normals. n·ω is linear over the
+// face before normalisation, so its maximum is at a corner; the margin keeps the shader's rounded
 // n·ω from reaching 0 on the face.
 bool face_behind(const Vec3& n, uint32_t face) {
     const int axis = int(face / 2);

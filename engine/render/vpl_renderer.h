@@ -1,10 +1,10 @@
 #pragma once
 // The GPU VPL renderer: G-buffer once per view, then per batch of VPLs the shadow cubes and the
-// shading, accumulated into one linear radiance image (docs/design.md, "GPU passes"). VPL powers are
-// not divided by the number of light paths (vpl.h): render() takes a VplSet and applies its scale
-// in the resolve; the progressive interface (begin/accumulate/resolve) takes the scale at the end
-// (engine/sampler/vpl_stream.h), for time budgets and the interactive preview.
-// Anti-aliasing: each batch is shaded against a G-buffer drawn at its own sub-pixel position
+// shading, accumulated into one linear radiance image (docs/design.md, "GPU passes"). VPL powers
+// are not divided by the number of light paths (vpl.h): render() takes a VplSet and applies its
+// scale in the resolve; the progressive interface (begin/accumulate/resolve) takes the scale at the
+// end (engine/sampler/vpl_stream.h), for time budgets and the interactive preview. Anti-aliasing:
+// each batch is shaded against a G-buffer drawn at its own sub-pixel position
 // (engine/core/subpixel.h), and the emitted radiance seen directly is averaged over the
 // G-buffers drawn, so the image converges to the box-filtered pixel.
 // Tonemapping happens when a PNG is written. Vulkan-free to include (pimpl).

@@ -1,6 +1,6 @@
 #pragma once
-// The Metropolis target I(x̄) (docs/design.md "The algorithm"; the seed's §3): the luminance that the
-// VPLs of a light path add to a fixed set of K camera-visible points — the first hits of
+// The Metropolis target I(x̄) (docs/design.md "The algorithm"; the seed's §3): the luminance that
+// the VPLs of a light path add to a fixed set of K camera-visible points — the first hits of
 // stratified camera rays — averaged over the K rays, so that I estimates the path's share of the
 // image's mean luminance. Each point uses the oracle's per-point code (light::vpl_contribution:
 // the vpl.h formula, Embree visibility, d_min = clamp · scene diagonal), so the target sees what

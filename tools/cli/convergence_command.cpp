@@ -1,7 +1,7 @@
 // `mvpl convergence`: error against run time for the reference path tracer and the VPL samplers,
-// against a reference image (docs/design.md "Reference and oracle"; issue 6). Under mpirun every rank
-// loads the scene and its device and shares each measurement's work (convergence_runs.h); rank 0
-// alone measures, writes and prints, and whatever fails on one rank is met by the others at the
+// against a reference image (docs/design.md "Reference and oracle"; issue 6). Under mpirun every
+// rank loads the scene and its device and shares each measurement's work (convergence_runs.h); rank
+// 0 alone measures, writes and prints, and whatever fails on one rank is met by the others at the
 // next agreement point (cluster::together).
 #include <cstdio>
 #include <cstdlib>
