@@ -9,6 +9,7 @@
 
 #include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
+#include "engine/core/interrupt.h"
 #include "tools/cli/commands.h"
 
 namespace {
@@ -88,6 +89,9 @@ int main(int argc, char** argv) {
     // Past a file-size limit (ulimit -f) a write should fail and be reported, and the image's
     // temporary removed (atomic_files.h), rather than the process be killed with a partial file.
     std::signal(SIGXFSZ, SIG_IGN);
+    // SIGINT, SIGTERM: render and convergence stop after the chunk in flight and write what has
+    // converged; a second signal exits at once (interrupt.h).
+    install_interrupt_handlers();
     // MPI_Init when started by mpirun (and MPI_Finalize on return); nothing otherwise.
     const cluster::World world(&argc, &argv);
     cluster::Cluster& ranks = cluster::world();
@@ -104,7 +108,9 @@ int main(int argc, char** argv) {
     const std::string command = argv[1];
     const cli::Args args(argv + 2, argv + argc);
     try {
-        return run(command, args);
+        const int code = run(command, args);
+        // The outputs are written; a shell reports 128 + the signal for an interrupted job.
+        return code == 0 && interrupted() ? interrupt_exit_code() : code;
     } catch (const cluster::RankFailure& e) {
         // Every rank has it (an agreement point); the lowest failing rank's message.
         std::fprintf(stderr, "mvpl: %s: %s\n", e.code() == 2 ? "error" : "internal error",

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "engine/core/error.h"
+#include "engine/core/interrupt.h"
 
 namespace mvpl {
 namespace {
@@ -43,13 +44,16 @@ void write_files_atomically(const std::vector<std::string>& targets,
                             const std::function<void(size_t, const std::string&)>& write) {
     std::vector<std::string> temporaries;
     const auto remove_temporaries = [&] {
-        for (const std::string& t : temporaries)
+        for (const std::string& t : temporaries) {
             std::remove(t.c_str());
+            untrack_temporary(t);
+        }
     };
     size_t current = 0;
     try {
         for (current = 0; current < targets.size(); ++current) {
             temporaries.push_back(make_temporary(targets[current]));
+            track_temporary(temporaries.back());  // a second SIGINT removes it (interrupt.h)
             write(current, temporaries.back());
         }
     } catch (const std::exception& e) {
@@ -62,8 +66,11 @@ void write_files_atomically(const std::vector<std::string>& targets,
             const int error = errno;
             for (size_t j = i; j < targets.size(); ++j)
                 std::remove(temporaries[j].c_str());
+            for (const std::string& t : temporaries)
+                untrack_temporary(t);
             throw InputError(targets[i], std::string("cannot be written: ") + std::strerror(error));
         }
+        untrack_temporary(temporaries[i]);
     }
 }
 

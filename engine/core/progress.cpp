@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace mvpl {
 
@@ -14,8 +15,13 @@ Progress::Progress(std::string label, int64_t total, bool quiet)
     : m_label(std::move(label)),
       m_total(total > 0 ? total : 1),
       m_visible(!quiet && stderr_is_terminal()),
+      m_plain(!quiet && !m_visible),
       m_start(std::chrono::steady_clock::now()),
-      m_last_draw(m_start) {}
+      m_last_draw(m_start) {
+    const char* seconds = std::getenv("MVPL_PROGRESS_SECONDS");
+    m_plain_seconds = seconds ? std::atof(seconds) : kPlainLineSeconds;
+    if (!(m_plain_seconds > 0.0)) m_plain_seconds = kPlainLineSeconds;
+}
 
 Progress::~Progress() {
     finish();
@@ -23,12 +29,29 @@ Progress::~Progress() {
 
 void Progress::advance(int64_t amount) {
     m_done.fetch_add(amount, std::memory_order_relaxed);
-    if (!m_visible) return;
+    if (!m_visible && !m_plain) return;
     const auto now = std::chrono::steady_clock::now();
     std::unique_lock lock(m_mutex, std::try_to_lock);
-    if (!lock.owns_lock() || now - m_last_draw < std::chrono::milliseconds(100)) return;
+    if (!lock.owns_lock()) return;
+    const std::chrono::duration<double> since = now - m_last_draw;
+    if (since.count() < (m_visible ? 0.1 : m_plain_seconds)) return;
     m_last_draw = now;
-    draw(false);
+    if (m_visible) {
+        draw(false);
+    } else {
+        write_plain_line();
+    }
+}
+
+void Progress::write_plain_line() {
+    const int64_t done = std::min(m_done.load(std::memory_order_relaxed), m_total);
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - m_start).count();
+    std::fprintf(stderr, "%s: %.0f%% (%lld/%lld), %.0f s elapsed%s%s\n", m_label.c_str(),
+                 100.0 * double(done) / double(m_total), static_cast<long long>(done),
+                 static_cast<long long>(m_total), elapsed, m_status.empty() ? "" : "; ",
+                 m_status.c_str());
+    std::fflush(stderr);
 }
 
 void Progress::set_status(const std::string& status) {

@@ -3,6 +3,7 @@
 #include <utility>
 
 #include "engine/core/error.h"
+#include "engine/core/interrupt.h"
 #include "engine/core/timer.h"
 #include "engine/sampler/metropolis_stream.h"
 
@@ -110,7 +111,8 @@ Image VplIntegrator::finish() {
         image = shared_image(true);
     } else {
         image = vpl_image();
-        const bool wait = m_pacing == Pacing::Fixed;
+        // Interrupted (interrupt.h): the passes done, not those allowed.
+        const bool wait = m_pacing == Pacing::Fixed && !interrupted();
         if (CpuEstimatorThread* t = m_cpu->compensation_thread()) {
             add_image(image, t->finish(wait));
             m_stats.compensation_passes = t->passes();
@@ -139,7 +141,8 @@ Image VplIntegrator::shared_image(bool finishing) {
             CpuEstimatorThread& thread = *threads[t];
             uint32_t n = 0;
             if (finishing) {
-                parts[t] = thread.finish(m_pacing == Pacing::Fixed, m_ranks.root());
+                parts[t] =
+                    thread.finish(m_pacing == Pacing::Fixed && !interrupted(), m_ranks.root());
                 n = thread.passes();
             } else {
                 parts[t] = thread.snapshot(&n);

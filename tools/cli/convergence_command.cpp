@@ -13,6 +13,7 @@
 #include "engine/core/error.h"
 #include "engine/core/finite_check.h"
 #include "engine/core/image.h"
+#include "engine/core/interrupt.h"
 #include "engine/core/reference_noise.h"
 #include "engine/gpu/context.h"
 #include "engine/render/vpl_renderer.h"
@@ -228,6 +229,10 @@ int run_convergence(const Args& args) {
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<render::VplRenderer> renderer;
     for (const std::string& method : methods) {
+        // SIGINT/SIGTERM on any rank (interrupt.h): the methods run so far are written.
+        std::vector<double> stop(1, interrupted() ? 1.0 : 0.0);
+        ranks.sum_all(stop);
+        if (stop[0] > 0.0) break;
         std::vector<ConvergencePoint> points;
         if (method == "pt") {
             points = run_path_tracer(run);

@@ -4,6 +4,7 @@
 #include <memory>
 
 #include "engine/core/image_metrics.h"
+#include "engine/core/interrupt.h"
 #include "engine/core/progress.h"
 #include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
@@ -69,8 +70,10 @@ std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run) {
     double per_spp = 0.0, last = 0.0;
     for (uint64_t round = 0;; ++round) {
         // Stop before a chunk that would overrun the budget (its time extrapolated per spp).
-        if (root_says(ranks,
-                      spp > 0 && timer.seconds() + per_spp * double(chunk) > run.budget_seconds))
+        // Or on SIGINT/SIGTERM (interrupt.h): the points so far are written.
+        if (root_says(ranks, interrupted() ||
+                                 (spp > 0 &&
+                                  timer.seconds() + per_spp * double(chunk) > run.budget_seconds)))
             break;
         // This rank's share of the chunk's samples, under a seed of its own: the sum over ranks
         // is the image of all of them. On one process the seed is the chunk's as ever.
@@ -140,8 +143,8 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     double per_work = 0.0, last = 0.0;
     while (true) {
         const double now = timer.seconds();
-        if (root_says(ranks,
-                      stream.work_done() > 0 && now + per_work * double(work) > run.budget_seconds))
+        if (root_says(ranks, interrupted() || (stream.work_done() > 0 &&
+                                               now + per_work * double(work) > run.budget_seconds)))
             break;
         integrator.advance(work);
         const Image image = integrator.image();

@@ -1,0 +1,178 @@
+// Runs that survive Ctrl-C (engine/core/interrupt.h): SIGINT or SIGTERM during `mvpl render` or
+// `mvpl convergence` finishes the chunk in flight, writes what has converged and exits 130 (143);
+// a second signal exits at once and leaves no partial file. And progress as plain lines when
+// stderr is not a terminal (engine/core/progress.h).
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <chrono>
+#include <csignal>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <thread>
+
+#include "engine/core/image.h"
+#include "tests/cli/run_command.h"
+
+namespace {
+
+namespace fs = std::filesystem;
+using mvpl::test::shell_quote;
+
+const std::string kScene = std::string(MVPL_ASSETS_DIR) + "/cornell-box/cbox.gltf";
+
+std::string slurp(const fs::path& p) {
+    std::ifstream in(p);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+class Interrupt : public ::testing::Test {
+protected:
+    void SetUp() override {
+        m_dir = fs::temp_directory_path() /
+                ("mvpl_interrupt_" + std::to_string(::getpid()) + "_" +
+                 ::testing::UnitTest::GetInstance()->current_test_info()->name());
+        fs::remove_all(m_dir);
+        fs::create_directories(m_dir);
+    }
+    void TearDown() override { fs::remove_all(m_dir); }
+
+    // `mvpl ARGS` in the background (exec'd by the shell, so that the pid is mvpl's), progress
+    // lines every 0.2 s on its stderr file (not a terminal).
+    void start(const std::string& args) {
+        const std::string cmd = "cd " + shell_quote(m_dir.string()) +
+                                " && ASAN_OPTIONS=${ASAN_OPTIONS:+$ASAN_OPTIONS:}detect_leaks=0 "
+                                "MVPL_PROGRESS_SECONDS=0.2 exec " +
+                                shell_quote(MVPL_EXE) + " " + args +
+                                " </dev/null >out.txt 2>err.txt";
+        m_pid = fork();
+        if (m_pid == 0) {
+            execl("/bin/sh", "sh", "-c", cmd.c_str(), static_cast<char*>(nullptr));
+            _exit(127);
+        }
+        ASSERT_GT(m_pid, 0);
+    }
+    // Waits until stderr shows `text` (the job is in its loop) or the process ended.
+    bool wait_for_progress(const std::string& text, double seconds = 120.0) {
+        const auto until =
+            std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        while (std::chrono::steady_clock::now() < until) {
+            if (slurp(m_dir / "err.txt").find(text) != std::string::npos) return true;
+            std::this_thread::sleep_for(std::chrono::milliseconds(50));
+        }
+        return false;
+    }
+    // The exit code, or -1 after `seconds` (then the process is killed).
+    int wait_exit(double seconds) {
+        const auto until =
+            std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+        int status = 0;
+        while (std::chrono::steady_clock::now() < until) {
+            if (waitpid(m_pid, &status, WNOHANG) == m_pid)
+                return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+            std::this_thread::sleep_for(std::chrono::milliseconds(20));
+        }
+        kill(m_pid, SIGKILL);
+        waitpid(m_pid, &status, 0);
+        return -1;
+    }
+    // Hidden temporaries of the atomic writer (".NAME.XXXXXX") left in the folder.
+    int temporaries() const {
+        int n = 0;
+        for (const auto& e : fs::directory_iterator(m_dir))
+            n += e.path().filename().string().rfind(".", 0) == 0;
+        return n;
+    }
+    std::string out() const { return slurp(m_dir / "out.txt"); }
+    std::string err() const { return slurp(m_dir / "err.txt"); }
+
+    fs::path m_dir;
+    pid_t m_pid = -1;
+};
+
+// The image of the chunks before the signal: finite, lit, and the summary says so.
+void expect_lit_image(const fs::path& path) {
+    ASSERT_TRUE(fs::exists(path));
+    const mvpl::Image image = mvpl::read_exr(path.string());
+    double sum = 0.0;
+    for (const mvpl::Rgb& c : image.pixels()) {
+        ASSERT_TRUE(std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b));
+        sum += c.g;
+    }
+    EXPECT_GT(sum / double(image.pixels().size()), 0.01);
+}
+
+TEST_F(Interrupt, SigintEndsATimeBudgetWithItsImage) {
+    start("render " + shell_quote(kScene) + " --res 32x32 --time-budget 600 -o a.exr");
+    ASSERT_TRUE(wait_for_progress("render: ")) << err();
+    kill(m_pid, SIGINT);
+    EXPECT_EQ(wait_exit(60.0), 130) << err();
+    expect_lit_image(m_dir / "a.exr");
+    EXPECT_NE(out().find("; interrupted"), std::string::npos) << out();
+    EXPECT_EQ(temporaries(), 0);
+}
+
+TEST_F(Interrupt, SigtermEndsAFixedRenderWithItsImage) {
+    start("render " + shell_quote(kScene) + " --res 32x32 --vpls 4294967296 -o a.exr -o a.png");
+    ASSERT_TRUE(wait_for_progress("render: ")) << err();
+    kill(m_pid, SIGTERM);
+    EXPECT_EQ(wait_exit(60.0), 143) << err();
+    expect_lit_image(m_dir / "a.exr");
+    EXPECT_TRUE(fs::exists(m_dir / "a.png"));
+    EXPECT_EQ(temporaries(), 0);
+}
+
+TEST_F(Interrupt, ASecondSignalExitsAtOnceWithoutAPartialFile) {
+    start("render " + shell_quote(kScene) + " --res 32x32 --time-budget 600 -o a.exr");
+    ASSERT_TRUE(wait_for_progress("render: ")) << err();
+    kill(m_pid, SIGINT);
+    // Delivered apart (two pending SIGINTs merge into one), within the chunk the first lets
+    // finish (about half a second under a time budget).
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    kill(m_pid, SIGINT);
+    EXPECT_EQ(wait_exit(10.0), 130) << err();
+    EXPECT_FALSE(fs::exists(m_dir / "a.exr"));
+    EXPECT_EQ(temporaries(), 0);
+}
+
+TEST_F(Interrupt, ConvergenceWritesThePointsSoFar) {
+    start("convergence " + shell_quote(kScene) + " --ref " +
+          shell_quote(std::string(MVPL_ASSETS_DIR) + "/cornell-box/ref-cbox-d6-4096.exr") +
+          " --budget 600 --methods mc,metropolis --no-plot --out conv");
+    ASSERT_TRUE(wait_for_progress("mc: ")) << err();
+    kill(m_pid, SIGINT);
+    EXPECT_EQ(wait_exit(60.0), 130) << err();
+    const std::string csv = slurp(m_dir / "conv" / "convergence.csv");
+    EXPECT_NE(csv.find("mc,"), std::string::npos) << csv;
+    EXPECT_EQ(csv.find("metropolis,"), std::string::npos) << csv;  // never started
+}
+
+// Not a terminal: a plain line about every MVPL_PROGRESS_SECONDS; none with --quiet.
+TEST(Progress, PlainLinesWhenStderrIsNotATerminal) {
+    const fs::path out = fs::temp_directory_path() / ("mvpl_progress_" + std::to_string(getpid()));
+    const auto lines = mvpl::test::run_mvpl_gpu("render " + shell_quote(kScene) +
+                                                    " --res 32x32 --time-budget 2 -o " +
+                                                    shell_quote((out.string() + ".exr")),
+                                                "MVPL_PROGRESS_SECONDS=0.25");
+    ASSERT_EQ(lines.exit_code, 0) << lines.err;
+    size_t count = 0;
+    for (size_t at = lines.err.find("render: "); at != std::string::npos;
+         at = lines.err.find("render: ", at + 1))
+        ++count;
+    EXPECT_GE(count, 3u) << lines.err;                   // 2 s at one line per 0.25 s
+    EXPECT_EQ(lines.err.find('\r'), std::string::npos);  // no bar redraws in a log
+    const auto quiet = mvpl::test::run_mvpl_gpu("render " + shell_quote(kScene) +
+                                                    " --res 32x32 --time-budget 1 --quiet -o " +
+                                                    shell_quote((out.string() + ".exr")),
+                                                "MVPL_PROGRESS_SECONDS=0.25");
+    ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
+    EXPECT_EQ(quiet.err, "");
+    fs::remove(out.string() + ".exr");
+}
+
+}  // namespace
