@@ -257,8 +257,7 @@ VkDescriptorSet write_image_set(CommandList& cmd, const GraphicsPipeline& pipeli
 }
 
 void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
-                     const DepthTarget* depth, const RenderArea* area,
-                     const RenderArea* viewport_area) {
+                     const DepthTarget* depth, const RenderArea* area) {
     const Image* first = !colors.empty() ? colors[0].image : depth ? depth->image : nullptr;
     if (!first) throw GpuError("begin_rendering without targets");
     const uint32_t width = first->width();
@@ -312,15 +311,7 @@ void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
     info.pColorAttachments = attachments.data();
     info.pDepthAttachment = depth ? &depth_attachment : nullptr;
     vkCmdBeginRendering(cmd.handle(), &info);
-    VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
-    if (viewport_area) {
-        viewport = {float(viewport_area->x),
-                    float(viewport_area->y),
-                    float(viewport_area->width),
-                    float(viewport_area->height),
-                    0.0f,
-                    1.0f};
-    }
+    const VkViewport viewport{0.0f, 0.0f, float(width), float(height), 0.0f, 1.0f};
     vkCmdSetViewport(cmd.handle(), 0, 1, &viewport);
     vkCmdSetScissor(cmd.handle(), 0, 1, &scissor);
 }

@@ -115,11 +115,9 @@ struct RenderArea {
 
 // Begins dynamic rendering over the full extent of the targets (all of the same size) and sets
 // the viewport to it. depth may be nullptr. With an area, only it is cleared and drawn (render
-// area and scissor; texels outside keep what they held); with a viewport, NDC maps to it rather
-// than to the full extent.
+// area and scissor; texels outside keep what they held); the viewport stays the full extent.
 void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
-                     const DepthTarget* depth, const RenderArea* area = nullptr,
-                     const RenderArea* viewport = nullptr);
+                     const DepthTarget* depth, const RenderArea* area = nullptr);
 void end_rendering(CommandList& cmd);
 
 // Culls back faces (or not) in the draws that follow, of a pipeline with dynamic_cull (inside

@@ -26,7 +26,7 @@ GpuVpl to_gpu_vpl(const light::Vpl& vpl, const scene::Bounds& bounds) {
     store(g.power, Vec3(vpl.power.r, vpl.power.g, vpl.power.b));
     g.cos_inner = vpl.cos_inner;
     g.cos_outer = vpl.cos_outer;
-    g.face_and_length = std::min<uint32_t>(vpl.path_length, 0xFFFFu) << 16;
+    g.path_length = vpl.path_length;
     const material::ClosureParams c = material::clamp_to_valid_ranges(vpl.closure);
     store(g.base_color, Vec3(c.base_color.r, c.base_color.g, c.base_color.b));
     g.metallic = c.metallic;

@@ -6,7 +6,6 @@
 #include "engine/core/host_memory.h"
 #include "engine/render/g_buffer_pass.h"
 #include "shaders/shared/chain_record.h"
-#include "shaders/shared/ism.h"
 
 namespace mvpl::render {
 
@@ -32,11 +31,6 @@ MemoryEstimate estimate_memory(const RenderOptions& o) {
     e.device_bytes = g_buffer + pixels * kD32f + 2 * pixels * kRgba32f + cubes +
                      texels * kD32f * 6 + ortho + texels * kD32f;
     e.largest_image = std::max({g_buffer, cubes, ortho});
-    if (o.ism) {
-        // Imperfect shadow maps (ism_pass.h): the points, and a uint per face texel per VPL.
-        e.device_bytes += uint64_t(o.ism_points) * sizeof(shared::IsmPoint) +
-                          uint64_t(o.ism_resolution) * o.ism_resolution * 4 * 6 * o.batch;
-    }
     // The accumulation and the emission sum read back as RGBA32F, then the linear RGB image.
     e.host_bytes = pixels * (2 * kRgba32f + 12);
     if (o.chains.enabled()) {

@@ -78,16 +78,12 @@ ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height,
 
 ShadingPass::~ShadingPass() = default;
 
-void ShadingPass::upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds,
-                         std::span<const uint32_t> shadow_resolutions) {
+void ShadingPass::upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds) {
     if (batch.size() > m_max_batch) {
         throw gpu::GpuError("shading pass: a batch of " + std::to_string(batch.size()) +
                             " VPLs for room for " + std::to_string(m_max_batch));
     }
-    std::vector<GpuVpl> gpu_vpls = to_gpu_vpls(batch, bounds);
-    for (size_t i = 0; i < shadow_resolutions.size() && i < gpu_vpls.size(); ++i)
-        gpu_vpls[i].face_and_length =
-            (gpu_vpls[i].face_and_length & 0xFFFF0000u) | (shadow_resolutions[i] & 0xFFFFu);
+    const std::vector<GpuVpl> gpu_vpls = to_gpu_vpls(batch, bounds);
     ShaderFeatures needed = m_features;
     for (const GpuVpl& g : gpu_vpls) {
         if (g.type >= uint32_t(kVplTypeCount)) {

@@ -56,10 +56,8 @@ public:
 
     // Writes the batch into the VPL buffer: outside a recording, and not while a submitted
     // batch is still running (submit_and_wait guarantees that).
-    // bounds: the scene's (the extent of directional VPLs' maps); shadow_resolutions: each VPL's
-    // face side (ShadowPass::face_resolution), empty when all use the whole array's.
-    void upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds,
-                std::span<const uint32_t> shadow_resolutions = {});
+    // bounds: the scene's (the extent of directional VPLs' maps).
+    void upload(std::span<const light::Vpl> batch, const scene::Bounds& bounds);
     // Records the clear of the accumulation image.
     void record_clear(gpu::CommandList& cmd);
     // Records the shading of the uploaded batch against g_buffer (GBufferPass::image()).

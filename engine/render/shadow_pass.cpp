@@ -145,17 +145,7 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
     for (const GeometryDraw& draw : geometry.draws()) {
         if (draw.material < masked.size() && masked[draw.material]) m_masked_draws.push_back(draw);
     }
-    if (m_masked_draws.empty()) {
-        // The imperfect faces fit in the cube layers: the largest power of two not above either.
-        uint32_t side = 0;
-        for (uint32_t p = 1; p <= std::min(options.ism_resolution, options.resolution); p *= 2)
-            side = p;
-        if (side >= 2) {
-            m_ism = std::make_unique<IsmPass>(
-                context, sample_ism_points(clusters, options.ism_points), side, options.max_batch);
-        }
-        return;
-    }
+    if (m_masked_draws.empty()) return;
     const ShadowAlphaSources code =
         generate_shadow_alpha_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
     const std::vector<uint32_t> frag_spirv = gpu::compile_glsl_cached(
@@ -222,17 +212,6 @@ void ShadowPass::draw_casters(gpu::CommandList& cmd, const gpu::GraphicsPipeline
     simplified = Flag(0);
 }
 
-bool ShadowPass::uses_ism(const light::Vpl& vpl) const {
-    return m_ism && (vpl.path_length > 0 || m_options.ism_emitters) &&
-           vpl.type != light::VplType::Directional;
-}
-
-uint32_t ShadowPass::face_resolution(const light::Vpl& vpl) const {
-    if (uses_ism(vpl)) return std::min(m_ism->resolution(), resolution());
-    if (vpl.path_length == 0 || m_options.indirect_resolution == 0) return resolution();
-    return std::min(m_options.indirect_resolution, resolution());
-}
-
 LodChoice ShadowPass::lod_choice(const light::Vpl& vpl, uint32_t res) const {
     LodChoice lod;
     // A face's texel spans at most 2 / res radians, at its centre. No VPL draws a simplified level
@@ -260,17 +239,10 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
         m_masked_set = gpu::write_image_set(cmd, *m_masked_pipeline, images);
         m_masked_ortho_set = gpu::write_image_set(cmd, *m_masked_ortho_pipeline, images);
     }
-    m_ism_batch.clear();
-    m_ism_slots.clear();
     for (uint32_t i = 0; i < batch.size(); ++i) {
         const light::Vpl& vpl = batch[i];
         ++m_vpl_seed;  // each VPL its own hashed-transparency pattern (glTF BLEND)
         if (!skip.empty() && skip[i]) continue;
-        if (uses_ism(vpl)) {
-            m_ism_batch.push_back(vpl);
-            m_ism_slots.push_back(i);
-            continue;
-        }
         if (vpl.type == light::VplType::Directional) {
             if (ortho_depth_in_use) cmd.barrier();
             ortho_depth_in_use = true;
@@ -283,10 +255,9 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
         depth_in_use = true;
         const bool hemisphere =
             vpl.type == light::VplType::Area || vpl.type == light::VplType::Surface;
+        const uint32_t res = resolution();
         for (uint32_t face = 0; face < 6; ++face) {
-            const uint32_t res = face_resolution(vpl);
-            const gpu::RenderArea viewport{0, 0, res, res};
-            gpu::RenderArea area = viewport;
+            gpu::RenderArea area{0, 0, res, res};
             if (hemisphere && m_options.hemicube) {
                 const std::optional<FaceRect> rect = lit_face_rect(vpl.normal, face, res);
                 if (!rect) continue;
@@ -298,7 +269,7 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
             const gpu::ColorTarget color{
                 &m_cubes, 6 * i + face, {kShadowNoOccluder, 0.0f, 0.0f, 0.0f}};
             const gpu::DepthTarget depth{&m_depth, face, 0.0f};
-            gpu::begin_rendering(cmd, std::span(&color, 1), &depth, &area, &viewport);
+            gpu::begin_rendering(cmd, std::span(&color, 1), &depth, &area);
             ShadowPush push{{vpl.position.x, vpl.position.y, vpl.position.z, m_near},
                             {face, 0u, 0u, 0u}};
             // Materials do not matter for distances: one index buffer for the whole scene, of
@@ -318,11 +289,6 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
             }
             gpu::end_rendering(cmd);
         }
-    }
-    // Other layers than the rasterised cubes': no barrier between the two.
-    if (!m_ism_batch.empty()) {
-        m_ism->record(cmd, m_ism_batch, m_ism_slots, m_near, m_cubes);
-        m_ism_vpls += m_ism_batch.size();
     }
 }
 

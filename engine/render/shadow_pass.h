@@ -9,11 +9,6 @@
 // directions; the texels keep stale values that are never read).
 // Vulkan-free to include.
 //
-// Imperfect shadow maps (ism_pass.h, opt-in): VPLs of path length ≥ 1 that are not directional
-// get their cubes from splatted scene points instead, ism_resolution² per face, in the same
-// array; emitter VPLs keep rasterised cubes. Not for scenes with masked or blended materials
-// (the points carry no alpha): those rasterise every cube.
-//
 // Directional VPLs get no cube but an orthographic map instead: layer i of an R32F 2D array
 // holds, for batch[i], the distance along the direction of travel from the map's near plane
 // (directional_frame.h) to the first surface.
@@ -31,7 +26,6 @@
 #include "engine/gpu/graphics_pipeline.h"
 #include "engine/gpu/image.h"
 #include "engine/light/vpl.h"
-#include "engine/render/ism_pass.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shadow_clusters.h"
 #include "shaders/shared/shadow_map.h"
@@ -67,16 +61,6 @@ struct ShadowPassOptions {
     // Area and Surface VPLs draw only the texels of each face that their lit hemisphere can
     // reach (hemicube.h); false: every face that is not wholly behind them, in full.
     bool hemicube = true;
-    // The face side of VPLs with path length ≥ 1, drawn into the first rows and columns of
-    // their layers (0, or not below resolution: the same as emitters').
-    uint32_t indirect_resolution = 0;
-    // The face side of the imperfect maps of path length ≥ 1 (0: none; else a power of two ≤
-    // kMaxIsmResolution, and it takes precedence over indirect_resolution), splatted from
-    // ism_points points sampled over the clusters' full triangles; ism_emitters: emitter VPLs
-    // (not directional ones) too (an experiment: docs/results.md, "Imperfect shadow maps").
-    uint32_t ism_resolution = 0;
-    uint32_t ism_points = IsmPass::kDefaultPoints;
-    bool ism_emitters = false;
 };
 
 class ShadowPass {
@@ -101,9 +85,6 @@ public:
     // so that the view is always a 2D array).
     const gpu::Image& ortho_maps() const { return m_ortho; }
     uint32_t resolution() const { return m_cubes.width(); }
-    // The face side that vpl's cube uses (indirect_resolution or the imperfect maps' for path
-    // length ≥ 1).
-    uint32_t face_resolution(const light::Vpl& vpl) const;
     uint32_t max_batch() const { return m_cubes.layers() / 6; }
     // Surfaces closer than this to a VPL do not shadow (the near plane), relative to the scene.
     float near_distance() const { return m_near; }
@@ -114,11 +95,6 @@ public:
     uint64_t front_only_triangles() const { return m_front_only_triangles; }
     // Cube-face texels cleared and drawn since construction (the hemicubes' effect).
     uint64_t texels_drawn() const { return m_texels_drawn; }
-    // Whether VPL gets an imperfect map, and how many did since construction.
-    bool uses_ism(const light::Vpl& vpl) const;
-    uint64_t ism_vpls() const { return m_ism_vpls; }
-    // The imperfect maps' points (0 without them).
-    size_t ism_points() const { return m_ism ? m_ism->point_count() : 0; }
 
 private:
     void record_directional(gpu::CommandList& cmd, const light::Vpl& vpl, uint32_t layer);
@@ -141,10 +117,6 @@ private:
     uint64_t m_triangles_drawn = 0;
     uint64_t m_front_only_triangles = 0;
     uint64_t m_texels_drawn = 0;
-    uint64_t m_ism_vpls = 0;
-    std::unique_ptr<IsmPass> m_ism;       // null without imperfect maps
-    std::vector<light::Vpl> m_ism_batch;  // scratch: this batch's VPLs with imperfect maps
-    std::vector<uint32_t> m_ism_slots;    // and their cubes
     gpu::Image m_cubes;
     gpu::Image m_depth;  // six layers, reused by every cube
     gpu::Image m_ortho;

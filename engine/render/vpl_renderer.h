@@ -35,21 +35,7 @@ struct RenderOptions {
     uint32_t width = 256;
     uint32_t height = 256;
     uint32_t shadow_resolution = 256;  // side of a shadow cube face in texels
-    // The face side of indirect VPLs' cubes (path length ≥ 1), whose light is the smoother; 0:
-    // shadow_resolution (issue 14, "many small maps", rasterised).
-    uint32_t indirect_shadow_resolution = 0;
-    // Imperfect shadow maps (Ritschel et al. 2008; issue 14, "many small maps"; ism_pass.h) for
-    // VPLs of path length ≥ 1: ism_points scene points splatted into ism_resolution² faces
-    // (a power of two ≤ 64), holes filled by pull-push; emitter VPLs keep rasterised cubes.
-    // Off by default (docs/results.md, "Imperfect shadow maps"). Scenes with masked or blended
-    // materials rasterise every cube.
-    bool ism = false;
-    uint32_t ism_resolution = 32;
-    uint32_t ism_points = 32768;
-    // Emitter VPLs (path length 0) get imperfect maps too: an experiment (their shadows are the
-    // sharpest; docs/results.md), off.
-    bool ism_emitters = false;
-    uint32_t batch = 32;  // VPLs per shadow/shading batch
+    uint32_t batch = 32;               // VPLs per shadow/shading batch
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.
     float clamp = light::kDefaultClamp;
     // Radius of the virtual spherical lights that area and surface VPLs become, as a fraction of
@@ -125,7 +111,6 @@ struct RenderTimings {
     uint64_t g_buffer_front_only_triangles = 0;
     uint64_t shadow_texels = 0;  // cube-face texels cleared and drawn
     uint64_t culled_vpls = 0;    // VPLs that could not reach the view (vpl_culling.h)
-    uint64_t ism_vpls = 0;       // VPLs whose cubes were imperfect shadow maps
     // G-buffers drawn: one per sub-pixel position (and device that shades it)
     uint32_t g_buffers = 0;
     // Host time tracing specular chains (in wall_ms on one device; summed over several).

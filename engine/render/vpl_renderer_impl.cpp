@@ -11,7 +11,6 @@
 #include "engine/gpu/image.h"
 #include "engine/light/specular_chain.h"
 #include "engine/render/batch_plan.h"
-#include "engine/render/gpu_vpl.h"
 #include "engine/render/render_memory.h"
 #include "engine/scene/camera.h"
 
@@ -113,10 +112,7 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
     if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
         o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
         o.shadow_proxy != built_for.shadow_proxy || o.shadow_lod != built_for.shadow_lod ||
-        o.backface_culling != built_for.backface_culling || o.hemicube != built_for.hemicube ||
-        o.indirect_shadow_resolution != built_for.indirect_shadow_resolution ||
-        o.ism != built_for.ism || o.ism_resolution != built_for.ism_resolution ||
-        o.ism_points != built_for.ism_points || o.ism_emitters != built_for.ism_emitters) {
+        o.backface_culling != built_for.backface_culling || o.hemicube != built_for.hemicube) {
         ShadowPassOptions so;
         so.resolution = o.shadow_resolution;
         so.max_batch = o.batch;
@@ -125,10 +121,6 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
         so.lod = o.shadow_lod;
         so.front_faces = o.backface_culling;
         so.hemicube = o.hemicube;
-        so.indirect_resolution = o.indirect_shadow_resolution;
-        so.ism_resolution = o.ism ? o.ism_resolution : 0;
-        so.ism_points = o.ism_points;
-        so.ism_emitters = o.ism_emitters;
         shadow = std::make_unique<ShadowPass>(*context, geometry, *clusters, so);
         shading.reset();
     }
@@ -210,10 +202,8 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
     const uint64_t drawn_before = m.shadow->triangles_drawn();
     const uint64_t front_before = m.shadow->front_only_triangles();
     const uint64_t texels_before = m.shadow->texels_drawn();
-    const uint64_t ism_before = m.shadow->ism_vpls();
     std::vector<light::Vpl> kept;
     std::vector<bool> skip;
-    std::vector<uint32_t> resolutions;
     for (size_t si = 0; si < slices.size(); ++si) {
         const Slice& s = slices[si];
         // The interleaved shares of a position are filtered once, after its last batch of the
@@ -238,14 +228,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
                 skip.clear();
             }
         }
-        resolutions.clear();
-        if (options.shadows) {
-            for (const light::Vpl& v : slice) {
-                resolutions.push_back(m.shadow->face_resolution(v) |
-                                      (m.shadow->uses_ism(v) ? shared::kImperfectMap : 0u));
-            }
-        }
-        m.shading->upload(slice, m.geometry.bounds(), resolutions);
+        m.shading->upload(slice, m.geometry.bounds());
         if (m.interleave) {
             batch.interleave = options.interleave;
             batch.vpl_offset = index.empty() ? shaded_before + s.first : index[s.first];
@@ -281,7 +264,6 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
     m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
     m.timings.shadow_front_only_triangles += m.shadow->front_only_triangles() - front_before;
     m.timings.shadow_texels += m.shadow->texels_drawn() - texels_before;
-    m.timings.ism_vpls += m.shadow->ism_vpls() - ism_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
 }
 

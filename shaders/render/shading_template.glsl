@@ -141,8 +141,8 @@ CubeTexel cube_texel(vec3 w, float res) {
 
 // to_receiver = p − VPL, d = |to_receiver|, ng the receiver's geometric normal on the side it is
 // shaded from.
-float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res, bool imperfect) {
-    const float footprint = d * (2.0 / res);  // a texel's angle at the face's centre: 2 / res
+float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
+    const float footprint = d * pc.texel_angle;
     const vec3 w = to_receiver / d;
     const CubeTexel ct = cube_texel(w, res);
     const vec2 stored = stored_distance(
@@ -157,7 +157,7 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res, bool 
         lit = stored.x >= d_plane - (kConstantBias * d + kFootprintBias * footprint);
     } else {
         const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
-        lit = stored.x >= d - d * (kConstantBias + kSlopeBias * (2.0 / res) * tan_r) - stored.y;
+        lit = stored.x >= d - d * (kConstantBias + kSlopeBias * pc.texel_angle * tan_r) - stored.y;
     }
 
 //@if thin_walls
@@ -171,8 +171,7 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res, bool 
         imageLoad(shadow_cubes, ivec3(moved.texel.xy, 6 * int(cube) + moved.texel.z)).r,
         footprint);
     const float in_front = d_lookup - near.x;
-    if (!imperfect && in_front > kConstantBias * d_lookup + near.y &&
-        in_front < kJunctionReach * footprint)
+    if (in_front > kConstantBias * d_lookup + near.y && in_front < kJunctionReach * footprint)
         lit = false;
 //@endif
     return lit ? 1.0 : 0.0;
@@ -308,7 +307,7 @@ void main() {
     for (uint i = first_vpl; i < vpl_count; i += vpl_step) {
         const GpuVpl v = vpls[i];
 //@if specular_chains
-        if ((v.face_and_length >> 16u) > max_vpl_length) continue;
+        if (v.path_length > max_vpl_length) continue;
 //@endif
 //@if directional
         if (v.type == kVplDirectional) {
@@ -380,9 +379,7 @@ void main() {
 //@endif
         if (max_component(f_r) <= 0.0) continue;
         const float vis =
-            (pc.flags & kShadows) != 0u
-                ? visibility(i, r, d, ng, (v.face_and_length & 0x7FFFu) != 0u ? float(v.face_and_length & 0x7FFFu) : shadow_res, (v.face_and_length & kImperfectMap) != 0u)
-                : 1.0;
+            (pc.flags & kShadows) != 0u ? visibility(i, r, d, ng, shadow_res) : 1.0;
 //@if glossy
         if (by_lobe) {
             const vec3 diffuse = closure_eval_diffuse(receiver, n, wo, -w) * f_vpl_diffuse;

@@ -15,11 +15,6 @@ const uint kVplArea = 2u;
 const uint kVplSurface = 3u;
 const uint kVplDirectional = 4u;
 
-// GpuVpl::face_and_length bit 15: the VPL's cube is an imperfect map (engine/render/ism_pass.h),
-// splatted from points, whose holes and spread the shadow test's junction lookup (made for
-// rasterised maps) would take for walls at the receiver's foot.
-const uint kImperfectMap = 0x8000u;
-
 // Directional VPLs carry their orthographic map (engine/render/directional_frame.h) in the fields
 // they do not otherwise use: position = the map's origin (u, v, w), shading_normal = its u axis,
 // wi = its v axis, map_extent and map_depth; normal = the unit direction of travel.
@@ -43,11 +38,7 @@ struct GpuVpl {
     float roughness;
     float ior;
     uint closure_type;  // engine/material/closure.h, ClosureType
-    // Bits 0–14: the side of the VPL's cube faces in texels, of which it uses the first rows and
-    // columns of each layer (ShadowPass::face_resolution), 0 for the cube array's; bit 15:
-    // kImperfectMap; bits 16–31:
-    // its path_length (segments from the light, engine/light/vpl.h; saturated at 65535).
-    uint face_and_length;
+    uint path_length;   // segments from the light (engine/light/vpl.h)
 };
 
 #ifdef __cplusplus

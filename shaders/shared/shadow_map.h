@@ -1,6 +1,6 @@
 // What a shadow texel holds: the shadow pass's cubes and orthographic maps
-// (engine/render/shadow_pass.h), the imperfect maps' resolve (shaders/render/ism_resolve.comp) and
-// the shading pass's tests (shaders/render/shading_template.glsl) read the same value.
+// (engine/render/shadow_pass.h) and the shading pass's tests
+// (shaders/render/shading_template.glsl) read the same value.
 #ifndef MVPL_SHADERS_SHARED_SHADOW_MAP_H
 #define MVPL_SHADERS_SHARED_SHADOW_MAP_H
 

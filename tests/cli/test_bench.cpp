@@ -42,9 +42,8 @@ void expect_positive_numbers(const json& j, const std::string& where) {
     if (j.is_object()) {
         for (const auto& [key, value] : j.items()) {
             // Counts that are 0 where a lever is off, and the chains' bound.
-            if (key == "culled_vpls" || key == "ism_vpls" || key == "chain_ms" ||
-                key == "chain_rays" || key == "chain_roughness" ||
-                key == "shadow_front_only_share") {
+            if (key == "culled_vpls" || key == "chain_ms" || key == "chain_rays" ||
+                key == "chain_roughness" || key == "shadow_front_only_share") {
                 EXPECT_GE(value.get<double>(), 0.0) << where;
                 continue;
             }
@@ -187,9 +186,8 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     const json j = json::parse(s_text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
-    // indirect faces of half the side, specular chains, imperfect shadow maps, levels of detail,
-    // back-face culling of solids, the other device count.
-    ASSERT_EQ(j["sweep"].size(), 26u);
+    // specular chains, levels of detail, back-face culling of solids, the other device count.
+    ASSERT_EQ(j["sweep"].size(), 24u);
     std::set<std::pair<int, int>> pairs;
     for (size_t i = 0; i < 15; ++i) {
         const json& r = j["sweep"][i];
@@ -212,35 +210,23 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     EXPECT_EQ(j["sweep"][18]["culled_vpls"].get<int>(), 0);
     EXPECT_EQ(j["render"]["interleave"].get<int>(), 2);  // the command line's default
     EXPECT_EQ(j["sweep"][19]["interleave"].get<int>(), 1);
-    // Indirect faces as emitters' (16² in this run) by default; switched: half of that.
-    EXPECT_EQ(j["render"]["indirect_shadow_resolution"].get<int>(), 16);
-    EXPECT_EQ(j["sweep"][20]["indirect_shadow_resolution"].get<int>(), 8);
     // Chains on by default and off when switched; the Cornell box has no glossy material, so
     // neither traces a chain ray (a diffuse scene pays nothing for them).
     EXPECT_TRUE(j["render"]["chains"].get<bool>());
-    EXPECT_FALSE(j["sweep"][21]["chains"].get<bool>());
+    EXPECT_FALSE(j["sweep"][20]["chains"].get<bool>());
     EXPECT_EQ(j["render"]["chain_rays"].get<int64_t>(), 0);
-    EXPECT_EQ(j["sweep"][21]["chain_rays"].get<int64_t>(), 0);
-    // Imperfect shadow maps off by default; switched on, the indirect VPLs' cubes are theirs and
-    // the emitters' stay rasterised (fewer triangles drawn, but some).
-    EXPECT_FALSE(j["render"]["ism"].get<bool>());
-    EXPECT_EQ(j["render"]["ism_vpls"].get<int>(), 0);
-    EXPECT_TRUE(j["sweep"][22]["ism"].get<bool>());
-    EXPECT_GT(j["sweep"][22]["ism_vpls"].get<int>(), 0);
-    EXPECT_LT(j["sweep"][22]["shadow_triangles_per_vpl"].get<double>(),
-              j["render"]["shadow_triangles_per_vpl"].get<double>());
-    EXPECT_GT(j["sweep"][22]["shadow_triangles_per_vpl"].get<double>(), 0.0);
+    EXPECT_EQ(j["sweep"][20]["chain_rays"].get<int64_t>(), 0);
     // Levels of detail on by default and off when switched (the Cornell box's meshes are all
     // below the threshold: the same triangles either way).
     EXPECT_TRUE(j["render"]["shadow_lod"].get<bool>());
-    EXPECT_FALSE(j["sweep"][23]["shadow_lod"].get<bool>());
-    EXPECT_EQ(j["sweep"][23]["shadow_triangles_per_vpl"].get<double>(),
+    EXPECT_FALSE(j["sweep"][21]["shadow_lod"].get<bool>());
+    EXPECT_EQ(j["sweep"][21]["shadow_triangles_per_vpl"].get<double>(),
               j["render"]["shadow_triangles_per_vpl"].get<double>());
     EXPECT_TRUE(j["render"]["backface_culling"].get<bool>());
-    EXPECT_FALSE(j["sweep"][24]["backface_culling"].get<bool>());
+    EXPECT_FALSE(j["sweep"][22]["backface_culling"].get<bool>());
     // One device where the run had two (lavapipe) and two where it had one (a GPU): the same
     // VPLs and batches, on a renderer of its own.
-    const json& other = j["sweep"][25];
+    const json& other = j["sweep"][23];
     EXPECT_EQ(other["devices"].get<int>(), j["render"]["devices"].get<int>() == 1 ? 2 : 1);
     EXPECT_EQ(other["batches"], j["render"]["batches"]);
     // Hemicubes only ever remove texels from a face.

@@ -76,7 +76,7 @@ const Member kMembers[] = {
     MVPL_MEMBER(GpuVpl, roughness),
     MVPL_MEMBER(GpuVpl, ior),
     MVPL_MEMBER(GpuVpl, closure_type),
-    MVPL_MEMBER(GpuVpl, face_and_length),
+    MVPL_MEMBER(GpuVpl, path_length),
     MVPL_MEMBER(ChainRecord, position),
     MVPL_MEMBER(ChainRecord, state),
     MVPL_MEMBER(ChainRecord, shading_normal),

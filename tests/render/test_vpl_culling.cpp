@@ -83,10 +83,9 @@ TEST_F(VplCullingTest, TheTrianglesLightSurvivesAndImagesAreTheSame) {
         lit += max_component(p) > 0.0f ? 1 : 0;
     EXPECT_GT(lit, 0);
     // With interleaving, every lever of issue 14 is on (under the validation layers, as every
-    // GpuTest): hemicubes and shadow culling by default, smaller indirect faces here.
+    // GpuTest): hemicubes and shadow culling by default.
     for (const uint32_t k : {1u, 2u}) {
         o.interleave = k;
-        o.indirect_shadow_resolution = k > 1 ? 32u : 0u;
         o.vpl_culling = true;
         RenderTimings culled_timings;
         const Image culled = renderer.render({vpls}, o, &culled_timings);

@@ -56,14 +56,9 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     ro.interleave = uint32_t(c.interleave);
     ro.hemicube = c.hemicube;
     ro.vpl_culling = c.vpl_culling;
-    ro.indirect_shadow_resolution = uint32_t(c.indirect_shadow_resolution);
     ro.chains.max_roughness = c.chain_roughness;
     ro.chains.max_depth = c.max_depth;
     ro.vsl_radius = c.vsl_radius;
-    ro.ism = c.ism;
-    ro.ism_resolution = uint32_t(c.ism_resolution);
-    ro.ism_points = uint32_t(c.ism_points);
-    ro.ism_emitters = c.ism_emitters;
     return ro;
 }
 
@@ -125,7 +120,6 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.shadow_front_only_triangles = t.shadow_front_only_triangles;
     s.shadow_texels = t.shadow_texels;
     s.culled_vpls = t.culled_vpls;
-    s.ism_vpls = t.ism_vpls;
     s.g_buffers = t.g_buffers;
     s.chain_ms = t.chain_ms;
     s.chain_rays = t.chain_rays;
@@ -194,7 +188,7 @@ int run_bench(const Args& args) {
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
                     "each lever of issue 14 switched (shadow culling, proxy, hemicubes, VPL "
-                    "culling, interleave, indirect faces of half the side, imperfect shadow maps)");
+                    "culling, interleave)");
     parser.add_flag("--no-shadows", &no_shadows,
                     "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
                     "measure what visibility costs)");
@@ -219,14 +213,9 @@ int run_bench(const Args& args) {
         renderer_args.interleave > 0 ? renderer_args.interleave : RendererArgs::kDefaultInterleave;
     config.hemicube = !renderer_args.no_hemicube;
     config.vpl_culling = !renderer_args.no_vpl_culling;
-    config.indirect_shadow_resolution = renderer_args.indirect_shadow_res;
     config.chain_roughness = renderer_args.no_chains ? -1.0f : renderer_args.chain_roughness;
     config.max_depth = mc.tracer.max_depth;
     config.vsl_radius = renderer_args.vsl();
-    config.ism = renderer_args.ism;
-    config.ism_resolution = renderer_args.ism_res;
-    config.ism_points = renderer_args.ism_points;
-    config.ism_emitters = renderer_args.ism_emitters;
     const float clamp = renderer_args.clamp;
     mc.paths = paths;
     std::ofstream json_out;
@@ -265,14 +254,7 @@ int run_bench(const Args& args) {
         c.interleave = config.interleave == 1 ? kSweepInterleave : 1;
         sweep_configs.push_back(c);
         c = config;
-        c.indirect_shadow_resolution =
-            config.indirect_shadow_resolution == 0 ? std::max(config.shadow_resolution / 2, 4) : 0;
-        sweep_configs.push_back(c);
-        c = config;
         c.chain_roughness = config.chain_roughness >= 0.0f ? -1.0f : light::kDefaultChainRoughness;
-        sweep_configs.push_back(c);
-        c = config;
-        c.ism = !config.ism;
         sweep_configs.push_back(c);
         c = config;
         c.shadow_lod = !config.shadow_lod;

@@ -68,21 +68,11 @@ std::string render_json(const RenderResult& r, const std::string& indent) {
     s += i + "\"devices\": " + std::to_string(r.config.devices) + ",\n";
     s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
     s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
-    const int indirect =
-        r.config.indirect_shadow_resolution > 0
-            ? std::min(r.config.indirect_shadow_resolution, r.config.shadow_resolution)
-            : r.config.shadow_resolution;
-    s += i + "\"indirect_shadow_resolution\": " + std::to_string(indirect) + ",\n";
     const bool chains = r.config.chain_roughness >= 0.0f;
     s += i + "\"chains\": " + (chains ? "true" : "false") + ",\n";
     if (chains) s += i + "\"chain_roughness\": " + number(r.config.chain_roughness) + ",\n";
     s += i + "\"chain_ms\": " + number(r.median.chain_ms) + ",\n";
     s += i + "\"chain_rays\": " + std::to_string(r.median.chain_rays) + ",\n";
-    s += i + "\"ism\": " + (r.config.ism ? "true" : "false") + ",\n";
-    s += i + "\"ism_resolution\": " + std::to_string(r.config.ism_resolution) + ",\n";
-    s += i + "\"ism_points\": " + std::to_string(r.config.ism_points) + ",\n";
-    s += i + "\"ism_emitters\": " + (r.config.ism_emitters ? "true" : "false") + ",\n";
-    s += i + "\"ism_vpls\": " + std::to_string(r.median.ism_vpls) + ",\n";
     s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
     s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
     s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
@@ -113,17 +103,9 @@ std::string bench_levers(const BenchConfig& c) {
            (c.jitter ? ", sub-pixel position every " + std::to_string(c.batches_per_position) +
                            (c.batches_per_position == 1 ? " batch" : " batches")
                      : ", pixel centres") +
-           ", indirect faces " +
-           (c.indirect_shadow_resolution > 0
-                ? std::to_string(std::min(c.indirect_shadow_resolution, c.shadow_resolution)) + "²"
-                : "as emitters'") +
            ", chains " + (c.chain_roughness >= 0.0f ? chain_bound(c.chain_roughness) : "off") +
-           ", VSL radius " + vsl_radius(c.vsl_radius) +
-           (c.ism ? ", ISM " + std::to_string(c.ism_resolution) + "² × " +
-                        std::to_string(c.ism_points) + " points" +
-                        (c.ism_emitters ? ", emitters too" : "")
-                  : ", ISM off") +
-           ", " + std::to_string(c.devices) + (c.devices == 1 ? " device" : " devices");
+           ", VSL radius " + vsl_radius(c.vsl_radius) + ", " + std::to_string(c.devices) +
+           (c.devices == 1 ? " device" : " devices");
 }
 
 double BenchReport::paths_per_s() const {
@@ -163,7 +145,6 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
         samples.empty() ? 0 : samples.front().shadow_front_only_triangles;
     r.median.shadow_texels = samples.empty() ? 0 : samples.front().shadow_texels;
     r.median.culled_vpls = samples.empty() ? 0 : samples.front().culled_vpls;
-    r.median.ism_vpls = samples.empty() ? 0 : samples.front().ism_vpls;
     r.median.g_buffers = samples.empty() ? 0 : samples.front().g_buffers;
     const double n = double(vpls);
     r.shadow_triangles_per_vpl = ratio(double(r.median.shadow_triangles), n);

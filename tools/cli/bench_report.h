@@ -19,21 +19,16 @@ struct BenchConfig {
     bool backface_culling = true;  // render::RenderOptions::backface_culling
     bool jitter =
         true;  // a G-buffer per sub-pixel position (false with --no-jitter: one per render)
-    int batches_per_position = 0;        // render::RenderOptions's; 0: the scene's default
-    int interleave = 1;                  // render::RenderOptions::interleave
-    bool hemicube = true;                // render::RenderOptions::hemicube
-    bool vpl_culling = true;             // render::RenderOptions::vpl_culling
-    int indirect_shadow_resolution = 0;  // render::RenderOptions::indirect_shadow_resolution
+    int batches_per_position = 0;  // render::RenderOptions's; 0: the scene's default
+    int interleave = 1;            // render::RenderOptions::interleave
+    bool hemicube = true;          // render::RenderOptions::hemicube
+    bool vpl_culling = true;       // render::RenderOptions::vpl_culling
     // render::RenderOptions::chains: the roughness bound (negative: no specular chains) and the
     // light paths' --max-depth, which bounds them.
     float chain_roughness = -1.0f;
     int max_depth = -1;
-    float vsl_radius = 0.0f;    // render::RenderOptions::vsl_radius (0: point VPLs)
-    bool ism = false;           // render::RenderOptions::ism
-    int ism_resolution = 32;    // render::RenderOptions::ism_resolution
-    int ism_points = 32768;     // render::RenderOptions::ism_points
-    bool ism_emitters = false;  // render::RenderOptions::ism_emitters
-    int devices = 1;            // render::VplRenderer::devices
+    float vsl_radius = 0.0f;  // render::RenderOptions::vsl_radius (0: point VPLs)
+    int devices = 1;          // render::VplRenderer::devices
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".
@@ -50,7 +45,6 @@ struct RenderSample {
     uint64_t shadow_front_only_triangles = 0;  // of those, solids' with back faces culled
     uint64_t shadow_texels = 0;                // cube-face texels cleared and drawn
     uint64_t culled_vpls = 0;                  // VPLs that could not reach the view
-    uint64_t ism_vpls = 0;                     // VPLs whose cubes were imperfect shadow maps
     uint32_t g_buffers = 0;                    // one per sub-pixel position
     double chain_ms = 0.0;  // host time tracing specular chains (summed over devices)
     uint64_t chain_rays = 0;

@@ -75,11 +75,6 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.interleave = uint32_t(interleave > 0 ? interleave : kDefaultInterleave);
     // The scene's default needs the scene: batches_per_position_for.
     o.batches_per_position = uint32_t(std::max(batches_per_position, 1));
-    o.indirect_shadow_resolution = uint32_t(indirect_shadow_res);
-    o.ism = ism;
-    o.ism_resolution = uint32_t(ism_res);
-    o.ism_points = uint32_t(ism_points);
-    o.ism_emitters = ism_emitters;
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
@@ -111,19 +106,6 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
     parser.add_flag("--no-vpl-culling", &args.no_vpl_culling,
                     "keep surface and area VPLs whose lit side holds nothing in view (default: "
                     "they are neither drawn nor shaded)");
-    parser.add_int("--indirect-shadow-res", &args.indirect_shadow_res,
-                   "side of the shadow cube faces of indirect (surface) VPLs, at most --shadow-res "
-                   "(0: --shadow-res)");
-    parser.add_flag("--ism", &args.ism,
-                    "imperfect shadow maps for indirect VPLs: scene points splatted into small "
-                    "cube faces, many VPLs per pass (emitter VPLs keep full faces)");
-    parser.add_int("--ism-res", &args.ism_res,
-                   "side of an imperfect shadow map's cube face: 4, 8, 16, 32 or 64");
-    parser.add_int("--ism-points", &args.ism_points,
-                   "scene points of the imperfect shadow maps (sampled by area once)");
-    parser.add_flag("--ism-emitters", &args.ism_emitters,
-                    "with --ism, emitter VPLs get imperfect shadow maps too (an experiment: "
-                    "their shadows are the sharpest)");
     parser.add_int("--interleave", &args.interleave,
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
                    "then a geometry-aware K×K filter (1 = off; 0 = 2, or 1 below 256² pixels or "
@@ -157,13 +139,6 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
             out_of_range(parser, "--vsl-radius", "[0, 1]");
         if (!(args.chain_roughness >= 0.0f && args.chain_roughness <= 1.0f))
             out_of_range(parser, "--chain-roughness", "[0, 1]");
-        if (args.indirect_shadow_res != 0 &&
-            (args.indirect_shadow_res < 4 || args.indirect_shadow_res > 4096))
-            out_of_range(parser, "--indirect-shadow-res", "0 or 4..4096");
-        if (args.ism_res < 4 || args.ism_res > 64 || (args.ism_res & (args.ism_res - 1)) != 0)
-            out_of_range(parser, "--ism-res", "4, 8, 16, 32 or 64");
-        if (args.ism_points < 1 || args.ism_points > (1 << 24))
-            out_of_range(parser, "--ism-points", "1..2^24");
         if (args.interleave < 0 || args.interleave > 8)
             out_of_range(parser, "--interleave", "0..8");
         if (args.batches_per_position < 0 || args.batches_per_position > 1024)

@@ -17,8 +17,7 @@
 namespace mvpl::cli {
 
 // --shadow-res, --batch, --clamp, --vsl-radius, --no-vsl, --no-jitter, --no-shadow-culling,
-// --no-shadow-proxy, --no-hemicube, --no-vpl-culling, --interleave, --indirect-shadow-res, --ism,
-// --ism-res, --ism-points, --ism-emitters, --devices: the GPU
+// --no-shadow-proxy, --no-hemicube, --no-vpl-culling, --interleave, --devices: the GPU
 // renderer's (render::RenderOptions), as ints and flags for the parser.
 struct RendererArgs {
     int shadow_res = int(render::RenderOptions{}.shadow_resolution);
@@ -39,8 +38,6 @@ struct RendererArgs {
     // The command line interleaves (K = 2) by default, where RenderOptions (which the tests set
     // up) does not: shading is most of a render at the resolutions users ask for, and K = 2
     // halves it for ≤ 1.1× the error at equal VPL count (docs/results.md, "Many lights").
-    // Smaller indirect faces stay opt-in: on the two-room scene 128² faces leak light through its
-    // one-plane wall (mean +0.5 %, relMSE +24 % at equal VPL count).
     // 0 (the default): kDefaultInterleave, but 1 where the scene's specular chains are traced
     // (interleave_for): on assets/glossy at 160×120 interleaving costs chained pixels more than
     // it saves, 1.1–1.65× the error at equal time (docs/results.md, "Interleaving with chains");
@@ -52,12 +49,6 @@ struct RendererArgs {
     // 0 (the default): render::default_batches_per_position of the scene's triangles
     // (batches_per_position_for).
     int batches_per_position = 0;
-    int indirect_shadow_res = 0;
-    // Imperfect shadow maps for indirect VPLs: opt-in (docs/results.md, "Imperfect shadow maps").
-    bool ism = false;
-    int ism_res = int(render::RenderOptions{}.ism_resolution);
-    int ism_points = int(render::RenderOptions{}.ism_points);
-    bool ism_emitters = false;
     // 0 (the default): devices_for's choice.
     int devices = 0;
     static constexpr int kDefaultInterleave = 2;
