@@ -89,9 +89,6 @@ int main(int argc, char** argv) {
     // Past a file-size limit (ulimit -f) a write should fail and be reported, and the image's
     // temporary removed (atomic_files.h), rather than the process be killed with a partial file.
     std::signal(SIGXFSZ, SIG_IGN);
-    // SIGINT, SIGTERM: render and convergence stop after the chunk in flight and write what has
-    // converged; a second signal exits at once (interrupt.h).
-    install_interrupt_handlers();
     // MPI_Init when started by mpirun (and MPI_Finalize on return); nothing otherwise.
     const cluster::World world(&argc, &argv);
     cluster::Cluster& ranks = cluster::world();

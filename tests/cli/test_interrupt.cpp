@@ -152,6 +152,15 @@ TEST_F(Interrupt, ConvergenceWritesThePointsSoFar) {
     EXPECT_EQ(csv.find("metropolis,"), std::string::npos) << csv;  // never started
 }
 
+// A command that does not poll keeps the signal's default: it ends at once.
+TEST_F(Interrupt, ReferenceStopsAtOnce) {
+    start("reference " + shell_quote(kScene) + " --res 64x64 --spp 2000 -o r.exr");
+    ASSERT_TRUE(wait_for_progress("reference: ")) << err();
+    kill(m_pid, SIGINT);
+    EXPECT_EQ(wait_exit(5.0), 130) << err();
+    EXPECT_FALSE(fs::exists(m_dir / "r.exr"));
+}
+
 // Not a terminal: a plain line about every MVPL_PROGRESS_SECONDS; none with --quiet.
 TEST(Progress, PlainLinesWhenStderrIsNotATerminal) {
     const fs::path out = fs::temp_directory_path() / ("mvpl_progress_" + std::to_string(getpid()));

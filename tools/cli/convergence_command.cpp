@@ -118,6 +118,8 @@ std::vector<std::string> checked_methods(const std::string& ref_path, float budg
 
 int run_convergence(const Args& args) {
     cluster::Cluster& ranks = cluster::world();
+    // SIGINT, SIGTERM: the methods and points so far are written (engine/core/interrupt.h).
+    install_interrupt_handlers();
     std::string scene_path, ref_path, out_dir = "convergence";
     std::vector<std::string> more_references;
     std::string methods_text = "pt,mc,metropolis";

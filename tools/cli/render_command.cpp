@@ -9,6 +9,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/core/interrupt.h"
 #include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
@@ -136,6 +137,9 @@ int run_render(const Args& args) {
     // on one rank is met by the others at the next agreement point (cluster::together).
     cluster::Cluster& ranks = cluster::world();
     RenderArgs a;
+    // SIGINT, SIGTERM: stop after the chunk in flight and write what has converged; a second
+    // signal exits at once (engine/core/interrupt.h). Commands that do not poll keep the default.
+    install_interrupt_handlers();
     ArgParser parser(
         "render",
         "Renders SCENE with virtual point lights: a sampler traces light paths on the CPU\n"
