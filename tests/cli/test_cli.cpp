@@ -2,12 +2,17 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <sstream>
 #include <string>
 #include <utility>
 
+#include "engine/core/error.h"
 #include "engine/core/image.h"
 #include "engine/core/image_metrics.h"
 #include "tests/cli/run_command.h"
+#include "tools/cli/arg_parser.h"
 
 namespace mvpl {
 namespace {
@@ -50,8 +55,10 @@ TEST(Cli, OutOfRangeAndRepeatedOptionsAreRefused) {
     expect_one_line_error(run_mvpl("info --device -2"), "--device");
     expect_one_line_error(run_mvpl("reference " + kCbox + " --spp 2 --spp 3"), "--spp given twice");
     expect_one_line_error(run_mvpl("render " + kCbox + " --quiet --quiet"), "--quiet given twice");
-    expect_one_line_error(run_mvpl("render " + kCbox + " --chain-samples 0"), "--chain-samples");
-    expect_one_line_error(run_mvpl("render " + kCbox + " --chain-samples 65"), "--chain-samples");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --specular-chain-samples 0"),
+                          "--specular-chain-samples");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --chain-samples 65"),
+                          "--specular-chain-samples");
     expect_one_line_error(run_mvpl("render " + kCbox + " --interleave -1"), "--interleave");
     expect_one_line_error(run_mvpl("render " + kCbox + " --interleave 9"), "--interleave");
     expect_one_line_error(run_mvpl("render " + kCbox + " --batches-per-position -1"),
@@ -325,6 +332,146 @@ TEST(Cli, BadInputCorpus) {
         expect_one_line_error(r, path);
     }
     EXPECT_GE(files, 20);
+}
+
+// Each command's --help: exit 0, nothing on stderr, its usage line, and a value name for every
+// option that takes one (never the old placeholder VALUE).
+TEST(Cli, EveryCommandsHelpExitsZero) {
+    for (const std::string command :
+         {"render", "reference", "compare", "info", "preview", "vpls", "bench", "convergence"}) {
+        for (const std::string flag : {" --help", " -h"}) {
+            SCOPED_TRACE(command + flag);
+            const auto r = run_mvpl(command + flag);
+            EXPECT_EQ(r.exit_code, 0);
+            EXPECT_TRUE(r.err.empty()) << r.err;
+            EXPECT_EQ(r.out.rfind("usage: mvpl " + command, 0), 0u) << r.out;
+            EXPECT_EQ(r.out.find(" VALUE"), std::string::npos) << r.out;
+        }
+    }
+    const auto top = run_mvpl("--help");
+    EXPECT_EQ(top.exit_code, 0);
+    EXPECT_NE(top.out.find("commands:"), std::string::npos);
+}
+
+// `mvpl render --help`: the options under their groups' headings, in the order the command
+// declares the groups, with value names, the specular chains' old names as aliases and the
+// Metropolis chains named as such.
+TEST(Cli, RenderHelpIsGroupedWithValueNames) {
+    const auto r = run_mvpl("render --help");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string& help = r.out;
+    size_t at = 0;
+    for (const char* heading :
+         {"Arguments:", "Render options:", "Sampler:", "Metropolis sampler:", "GPU renderer:",
+          "Specular chains:", "Clamping compensation:", "Caustics:", "Path depth:", "Seed:",
+          "Camera:", "Environment:", "Mitsuba scene file:", "Device:", "Examples:"}) {
+        const size_t found = help.find(std::string("\n") + heading + "\n");
+        ASSERT_NE(found, std::string::npos) << heading << " missing:\n" << help;
+        EXPECT_GT(found, at) << heading << " out of order";
+        at = found;
+    }
+    for (const char* line :
+         {"\n  --time-budget SEC\n", "\n  --res WxH\n", "\n  -o FILE\n", "\n  --dump-shaders DIR\n",
+          "\n  --sampler mc|metropolis\n", "\n  --vpls N\n", "\n  --clamp X\n",
+          "\n  --no-specular-chains (alias: --no-chains)\n",
+          "\n  --specular-chain-roughness X (alias: --chain-roughness)\n",
+          "\n  --specular-chain-samples N (alias: --chain-samples)\n"}) {
+        EXPECT_NE(help.find(line), std::string::npos) << line;
+    }
+    EXPECT_EQ(help.find(" VALUE"), std::string::npos);
+    const size_t chains = help.find("\n  --chains N\n");
+    ASSERT_NE(chains, std::string::npos);
+    EXPECT_NE(help.find("Metropolis chains", chains), std::string::npos);
+    // Every option line sits under a heading: a blank line never precedes one.
+    EXPECT_EQ(help.find("\n\n  -"), std::string::npos);
+}
+
+// The examples at the end of render, convergence, bench and preview --help name files that exist.
+TEST(Cli, HelpExamplesNameFilesThatExist) {
+    const std::filesystem::path root = std::filesystem::path(MVPL_ASSETS_DIR).parent_path();
+    for (const std::string command : {"render", "convergence", "bench", "preview"}) {
+        SCOPED_TRACE(command);
+        const auto r = run_mvpl(command + " --help");
+        const size_t examples = r.out.find("\nExamples:\n");
+        ASSERT_NE(examples, std::string::npos);
+        std::istringstream words(r.out.substr(examples));
+        int files = 0, lines = 0;
+        for (std::string word; words >> word;) {
+            if (word == "mvpl") ++lines;
+            if (word.rfind("assets/", 0) != 0 && word.rfind("docs/", 0) != 0) continue;
+            ++files;
+            EXPECT_TRUE(std::filesystem::exists(root / word)) << word;
+        }
+        EXPECT_GE(lines, 2);
+        EXPECT_GE(files, lines);
+    }
+}
+
+// An alias is the option it names: given with it, the option is given twice (one line, exit 2),
+// and an out-of-range value through it is reported under the option's name.
+TEST(Cli, AnAliasAndItsOptionAreGivenTwice) {
+    const std::string pairs[][2] = {{"--no-chains", "--no-specular-chains"},
+                                    {"--chain-samples 4", "--specular-chain-samples 4"},
+                                    {"--chain-roughness=0.1", "--specular-chain-roughness 0.1"}};
+    for (const auto& [alias, name] : pairs) {
+        expect_one_line_error(run_mvpl("render " + kCbox + " " + alias + " " + name),
+                              "given twice");
+        expect_one_line_error(run_mvpl("render " + kCbox + " " + name + " " + alias),
+                              "given twice");
+    }
+    expect_one_line_error(run_mvpl("render " + kCbox + " --chain-roughness 2"),
+                          "--specular-chain-roughness must be in [0, 1]");
+    // The Metropolis chains are not an alias of anything.
+    expect_one_line_error(run_mvpl("render " + kCbox + " --chains 4 --no-chains --chains 8"),
+                          "--chains given twice");
+}
+
+// ArgParser::given answers for an option by its name and by its alias alike.
+TEST(Cli, ArgParserGivenCountsAnAliasAsItsOption) {
+    bool no_chains = false;
+    int samples = 8;
+    cli::ArgParser parser("test", "");
+    parser.add_flag("--no-specular-chains", &no_chains, "");
+    parser.add_alias("--no-chains", "--no-specular-chains");
+    parser.add_int("--specular-chain-samples", &samples, "");
+    parser.add_alias("--chain-samples", "--specular-chain-samples");
+    ASSERT_TRUE(parser.parse({"--no-chains", "--specular-chain-samples", "3"}));
+    EXPECT_TRUE(no_chains);
+    EXPECT_EQ(samples, 3);
+    for (const char* name :
+         {"--no-chains", "--no-specular-chains", "--chain-samples", "--specular-chain-samples"})
+        EXPECT_TRUE(parser.given(name)) << name;
+    ASSERT_TRUE(parser.parse({"--chain-samples=5"}));
+    EXPECT_FALSE(parser.given("--no-chains"));
+    EXPECT_FALSE(parser.given("--no-specular-chains"));
+    EXPECT_TRUE(parser.given("--specular-chain-samples"));
+    EXPECT_THROW(parser.parse({"--no-chains", "--no-specular-chains"}), UsageError);
+}
+
+// --no-chains and --no-specular-chains render the same image, and a different one from the
+// chained default (assets/glossy has near-mirrors; the Cornell box, all diffuse, traces no chains
+// and could not tell the flags apart).
+TEST(Cli, NoChainsAndNoSpecularChainsRenderTheSameImage) {
+    const std::string glossy = shell_quote(std::string(MVPL_ASSETS_DIR) + "/glossy/glossy.gltf");
+    const auto render = [&](const std::string& flag, const std::string& name) {
+        const std::string out = temp_file(name);
+        const auto r = run_gpu("render " + glossy + " --res 32x32 --vpls 16 --quiet " + flag +
+                               " -o " + shell_quote(out));
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        return out;
+    };
+    const std::string old_name = render("--no-chains", "old.exr");
+    const std::string new_name = render("--no-specular-chains", "new.exr");
+    const std::string chained = render("", "chained.exr");
+    const auto bytes = [](const std::string& path) {
+        std::ifstream in(path, std::ios::binary);
+        return std::string(std::istreambuf_iterator<char>(in), {});
+    };
+    EXPECT_FALSE(bytes(old_name).empty());
+    EXPECT_EQ(bytes(old_name), bytes(new_name));
+    EXPECT_NE(bytes(old_name), bytes(chained));
+    for (const auto& f : {old_name, new_name, chained})
+        std::filesystem::remove(f);
 }
 
 }  // namespace

@@ -157,6 +157,16 @@ std::ofstream open_output(const std::string& path) {
     return out;
 }
 
+void add_examples(ArgParser& parser) {
+    parser.add_example("mvpl bench assets/cornell-box/cbox.gltf --res 512x512 --shadow-res 256",
+                       "the Cornell box at 512², 256² shadow faces: pass times and VPL/s");
+    parser.add_example("mvpl bench assets/two-room/two-room.gltf --sweep --json rooms.json",
+                       "also each batch size, shadow resolution and lever, written as JSON");
+    parser.add_example(
+        "mvpl bench assets/glossy/glossy.gltf --res 512x512 --repeat 1 --no-specular-chains",
+        "the glossy scene's throughput without its specular chains");
+}
+
 }  // namespace
 
 int run_bench(const Args& args) {
@@ -173,17 +183,8 @@ int run_bench(const Args& args) {
                      "shading passes (GPU timestamps), end to end, start-up and peak memory.\n"
                      "Every number is the median of --repeat runs.");
     parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .ply, .obj)");
-    parser.add_resolution("--res", &config.width, &config.height, "image size WxH");
-    add_renderer_options(parser, renderer_args);
+    parser.add_resolution("--res", &config.width, &config.height, "image size");
     parser.add_uint64("--vpls", &paths, "light paths to trace, one VPL per bounce");
-    add_max_depth_option(parser, mc.tracer.max_depth);
-    add_seed_option(parser, mc.seed);
-    CameraArgs camera;
-    add_camera_options(parser, camera);
-    EnvironmentArgs environment;
-    add_environment_options(parser, environment);
-    SceneFileArgs scene_file;
-    add_scene_file_options(parser, scene_file);
     parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported");
     parser.add_flag("--sweep", &sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
@@ -192,8 +193,18 @@ int run_bench(const Args& args) {
     parser.add_flag("--no-shadows", &no_shadows,
                     "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
                     "measure what visibility costs)");
-    parser.add_string("--json", &json_path, "write the results as JSON to this file");
+    parser.add_string("--json", &json_path, "write the results as JSON to this file", "FILE");
     parser.add_flag("--quiet", &quiet, "no progress bar and no table");
+    add_renderer_options(parser, renderer_args);
+    add_max_depth_option(parser, mc.tracer.max_depth);
+    add_seed_option(parser, mc.seed);
+    CameraArgs camera;
+    add_camera_options(parser, camera);
+    EnvironmentArgs environment;
+    add_environment_options(parser, environment);
+    SceneFileArgs scene_file;
+    add_scene_file_options(parser, scene_file);
+    add_examples(parser);
     cluster::Cluster& ranks = cluster::world();
     bool parsed = false;
     cluster::together(ranks, [&] { parsed = parser.parse(args); });

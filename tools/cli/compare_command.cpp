@@ -25,13 +25,15 @@ int run_compare(const Args& args) {
         "the mean of several independent references, and the references' own share of relMSE.");
     parser.add_positional("IMAGE", &image_path, "EXR image");
     parser.add_positional("REFERENCE", &reference_path, "EXR reference of the same size");
-    parser.add_int("--block", &block, "compare K×K block averages (for differing pixel filters)");
+    parser.add_int("--block", &block, "compare K×K block averages (for differing pixel filters)",
+                   "K");
     parser.add_string("--region", &region,
-                      "X,Y,W,H: compare only the W×H pixels from (X, Y) (an object's pixels)");
+                      "compare only the W×H pixels from (X, Y) (an object's pixels)", "X,Y,W,H");
     parser.add_strings("--and-ref", &more_references,
                        "another independent reference (a different seed, the same sample count): "
                        "the references are averaged, and their noise's share of relMSE "
-                       "(reference_noise) and relMSE less it (relMSE_vs_truth) are printed");
+                       "(reference_noise) and relMSE less it (relMSE_vs_truth) are printed",
+                       "FILE");
     if (!parser.parse(args)) return 0;
     if (block < 1) throw UsageError("compare: --block must be at least 1");
     const Image image = read_finite_exr(image_path);

@@ -114,6 +114,21 @@ std::vector<std::string> checked_methods(const std::string& ref_path, float budg
     return methods;
 }
 
+void add_examples(ArgParser& parser) {
+    parser.add_example(
+        "mvpl convergence assets/cornell-box/cbox.gltf --ref "
+        "assets/cornell-box/ref-cbox-d6-4096.exr --budget 8 --out cbox-convergence",
+        "path tracer, Monte Carlo and Metropolis VPLs, 8 s each, against Mitsuba's reference");
+    parser.add_example(
+        "mvpl convergence assets/glossy/glossy.gltf --ref docs/results/glossy-ref.exr "
+        "--budget 30 --methods pt,mc --out glossy-convergence",
+        "the glossy scene: the path tracer and Monte Carlo VPLs only");
+    parser.add_example(
+        "mvpl convergence assets/two-room/two-room.gltf --ref docs/results/two-room-ref.exr "
+        "--and-ref docs/results/two-room-ref-2.exr --budget 60 --out rooms-convergence",
+        "against the mean of two independent references, with their own noise reported");
+}
+
 }  // namespace
 
 int run_convergence(const Args& args) {
@@ -138,20 +153,25 @@ int run_convergence(const Args& args) {
         "speed-up over the path tracer at equal relMSE and the bias floor.\n"
         "Under mpirun, the ranks share each method's work and rank 0 writes.");
     parser.add_positional("SCENE", &scene_path, "scene file");
-    parser.add_string("--ref", &ref_path, "reference image (.exr); its size is the image size");
+    parser.add_string("--ref", &ref_path, "reference image (.exr); its size is the image size",
+                      "FILE");
     parser.add_strings("--and-ref", &more_references,
                        "another independent reference (a different seed, the same sample count): "
                        "errors are against the references' mean, and the summary prints their "
-                       "own share of relMSE and each method's error less it (repeatable)");
-    parser.add_float("--budget", &budget, "seconds per method");
-    parser.add_string("--out", &out_dir, "output directory");
-    add_max_depth_option(parser, settings.tracer.max_depth);
+                       "own share of relMSE and each method's error less it",
+                       "FILE");
+    parser.add_float("--budget", &budget, "seconds per method", "SEC");
+    parser.add_string("--out", &out_dir, "output directory", "DIR");
     parser.add_resolution("--res", &width, &height,
-                          "image size WxH (default and only allowed: the reference's)");
-    parser.add_string("--methods", &methods_text, "comma-separated: pt,mc,metropolis");
+                          "image size (default and only allowed: the reference's)");
+    parser.add_string("--methods", &methods_text, "comma-separated, of pt, mc and metropolis",
+                      "NAME,...");
+    parser.add_flag("--no-plot", &no_plot, "write the CSV only");
+    parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
     add_renderer_options(parser, renderer_args);
     add_compensation_options(parser, compensation_args);
     add_caustics_option(parser, no_caustics);
+    add_max_depth_option(parser, settings.tracer.max_depth);
     add_seed_option(parser, settings.seed);
     CameraArgs camera;
     add_camera_options(parser, camera);
@@ -162,9 +182,9 @@ int run_convergence(const Args& args) {
     int device = -1;
     add_device_option(parser, device,
                       "Vulkan device index (see mvpl info), -1 = default; under mpirun "
-                      "local-rank: by the rank's place on its machine");
-    parser.add_flag("--no-plot", &no_plot, "write the CSV only");
-    parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
+                      "local-rank: by the rank's place on its machine",
+                      "N|local-rank");
+    add_examples(parser);
     bool parsed = false;
     std::vector<std::string> methods;
     Image reference;

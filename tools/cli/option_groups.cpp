@@ -78,6 +78,7 @@ void RendererArgs::apply(render::RenderOptions& o) const {
 }
 
 void add_renderer_options(ArgParser& parser, RendererArgs& args) {
+    parser.begin_group("GPU renderer");
     parser.add_int("--shadow-res", &args.shadow_res, "side of a shadow cube face in texels");
     parser.add_int("--batch", &args.batch, "VPLs per shadow/shading batch");
     parser.add_float("--clamp", &args.clamp,
@@ -110,7 +111,8 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                    "interleaved sampling: each pixel of a K×K block shades 1/K² of every batch, "
                    "then a geometry-aware K×K filter (1 = off; 0 = 2, or 1 below 256² pixels or "
                    "where specular "
-                   "chains are traced)");
+                   "chains are traced)",
+                   "K");
     parser.add_int("--batches-per-position", &args.batches_per_position,
                    "batches shaded at each sub-pixel position, each position's G-buffer drawn "
                    "once (0 = one per 65536 scene triangles, from 2 to 8: heavy scenes draw "
@@ -121,14 +123,19 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                    "runs beside the other's rasterisation; 1 on a GPU)");
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
-    parser.add_float("--chain-roughness", &args.chain_roughness,
+    // "Specular" tells these from the Metropolis sampler's --chains; the short names stay.
+    parser.begin_group("Specular chains");
+    parser.add_float("--specular-chain-roughness", &args.chain_roughness,
                      "continue camera paths through surfaces this glossy or glossier (perceptual "
                      "roughness) to the first rougher one, which the VPLs light");
-    parser.add_flag("--no-chains", &args.no_chains,
+    parser.add_alias("--chain-roughness", "--specular-chain-roughness");
+    parser.add_flag("--no-specular-chains", &args.no_chains,
                     "light glossy surfaces with the VPLs directly (no specular chains)");
-    parser.add_int("--chain-samples", &args.chain_samples,
+    parser.add_alias("--no-chains", "--no-specular-chains");
+    parser.add_int("--specular-chain-samples", &args.chain_samples,
                    "sub-pixel samples per batch of the light that glossy pixels reflect directly "
                    "(their highlights), where the pixel's centre is glossy");
+    parser.add_alias("--chain-samples", "--specular-chain-samples");
     // The renderer's limits: 4096² faces × 6 × a batch must still fit in memory.
     parser.add_check([&parser, &args] {
         if (args.shadow_res < 4 || args.shadow_res > 4096)
@@ -138,7 +145,7 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
         if (!(args.vsl_radius >= 0.0f && args.vsl_radius <= 1.0f))
             out_of_range(parser, "--vsl-radius", "[0, 1]");
         if (!(args.chain_roughness >= 0.0f && args.chain_roughness <= 1.0f))
-            out_of_range(parser, "--chain-roughness", "[0, 1]");
+            out_of_range(parser, "--specular-chain-roughness", "[0, 1]");
         if (args.interleave < 0 || args.interleave > 8)
             out_of_range(parser, "--interleave", "0..8");
         if (args.batches_per_position < 0 || args.batches_per_position > 1024)
@@ -146,11 +153,12 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
         if (args.devices < 0 || args.devices > int(render::kMaxRenderDevices))
             out_of_range(parser, "--devices", "0.." + std::to_string(render::kMaxRenderDevices));
         if (args.chain_samples < 1 || args.chain_samples > 64)
-            out_of_range(parser, "--chain-samples", "1..64");
+            out_of_range(parser, "--specular-chain-samples", "1..64");
     });
 }
 
 void add_compensation_options(ArgParser& parser, CompensationArgs& args) {
+    parser.begin_group("Clamping compensation");
     parser.add_flag("--compensate", &args.compensate,
                     "recover the light that --clamp removes (the default): BSDF-sampled CPU "
                     "rays from each pixel, bounded by the clamping distance (Kollig & Keller "
@@ -171,6 +179,7 @@ void add_compensation_options(ArgParser& parser, CompensationArgs& args) {
 }
 
 void add_caustics_option(ArgParser& parser, bool& no_caustics) {
+    parser.begin_group("Caustics");
     parser.add_flag("--no-caustics", &no_caustics,
                     "no light tracing of caustics (light through glass or off near-mirrors onto "
                     "rough surfaces) on a CPU thread beside the GPU; near-mirrors get VPLs instead "
@@ -178,7 +187,11 @@ void add_caustics_option(ArgParser& parser, bool& no_caustics) {
 }
 
 void add_sampler_option(ArgParser& parser, std::string& name) {
-    parser.add_string("--sampler", &name, "VPL sampler: mc (default) or metropolis");
+    parser.begin_group("Sampler");
+    std::string choices;
+    for (const std::string& n : sampler::sampler_names())
+        choices += (choices.empty() ? "" : "|") + n;
+    parser.add_string("--sampler", &name, "VPL sampler: mc (default) or metropolis", choices);
     parser.add_check([&parser, &name] {
         const std::vector<std::string>& names = sampler::sampler_names();
         if (std::find(names.begin(), names.end(), name) != names.end()) return;
@@ -191,18 +204,20 @@ void add_sampler_option(ArgParser& parser, std::string& name) {
 }
 
 void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& s) {
-    parser.add_float("--beta", &s.large_step, "metropolis: large-step probability");
-    parser.add_float("--sigma", &s.sigma, "metropolis: small-step width in primary sample space");
-    parser.add_int("--chains", &s.chains, "metropolis: independent chains");
+    parser.begin_group("Metropolis sampler");
+    parser.add_float("--beta", &s.large_step, "large-step probability");
+    parser.add_float("--sigma", &s.sigma, "small-step width in primary sample space");
+    parser.add_int("--chains", &s.chains,
+                   "independent Metropolis chains (Markov chains of VPLs, not the specular "
+                   "chains of camera paths)");
     parser.add_int("--importance-points", &s.importance_points,
-                   "metropolis: camera-visible points of the target");
-    parser.add_uint64("--bootstrap", &s.bootstrap,
-                      "metropolis: independent paths for the normalisation");
+                   "camera-visible points of the target");
+    parser.add_uint64("--bootstrap", &s.bootstrap, "independent paths for the normalisation");
     parser.add_float("--absolute-share", &s.absolute_share,
-                     "metropolis: share of the target's mass on plain luminance (the image's "
-                     "mean) beside the relative weights");
+                     "share of the target's mass on plain luminance (the image's mean) beside the "
+                     "relative weights");
     parser.add_int("--direct-stride", &s.direct_stride,
-                   "metropolis: chain steps per emitter VPL of the direct light's own stratified "
+                   "Metropolis chain steps per emitter VPL of the direct light's own stratified "
                    "sequence; 0 = the chains carry the direct light too");
     parser.add_check([&parser, &s] {
         if (!(s.large_step >= 0.0f && s.large_step <= 1.0f))
@@ -221,6 +236,7 @@ void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& s) {
 }
 
 void add_max_depth_option(ArgParser& parser, int& max_depth) {
+    parser.begin_group("Path depth");
     parser.add_int("--max-depth", &max_depth,
                    "path segments from the camera to the light (Mitsuba's max_depth; 1 = emitters, "
                    "2 = direct light, -1 = unlimited)");
@@ -232,8 +248,10 @@ void add_max_depth_option(ArgParser& parser, int& max_depth) {
     });
 }
 
-void add_device_option(ArgParser& parser, int& device, const std::string& help) {
-    parser.add_int("--device", &device, help);
+void add_device_option(ArgParser& parser, int& device, const std::string& help,
+                       const std::string& value_name) {
+    parser.begin_group("Device");
+    parser.add_int("--device", &device, help, value_name);
     parser.add_check([&parser, &device] {
         if (device < -1 || device > 1023)
             out_of_range(parser, "--device", "0..1023 (see mvpl info), or -1 for the default");
@@ -241,16 +259,19 @@ void add_device_option(ArgParser& parser, int& device, const std::string& help) 
 }
 
 void add_seed_option(ArgParser& parser, uint64_t& seed) {
+    parser.begin_group("Seed");
     parser.add_uint64("--seed", &seed, "random seed; the same seed gives the same result");
 }
 
 void add_camera_options(ArgParser& parser, CameraArgs& args) {
+    parser.begin_group("Camera");
     parser.add_int("--camera", &args.camera,
                    "render from the file's perspective camera N (0 = the first; default: the "
                    "first, or a three-quarter view of the bounds without one)");
-    parser.add_string("--look-at", &args.look_at,
-                      "EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ]: a camera at E looking at T, up U (+Y)");
-    parser.add_float("--fov", &args.fov, "vertical field of view in degrees (0 = the camera's)");
+    parser.add_string("--look-at", &args.look_at, "a camera at E looking at T, up U (+Y)",
+                      "EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ]");
+    parser.add_float("--fov", &args.fov, "vertical field of view in degrees (0 = the camera's)",
+                     "DEG");
     parser.add_check([&parser, &args] {
         if (args.camera < -1 || args.camera > 1000000)
             out_of_range(parser, "--camera", "0..1000000");
@@ -274,13 +295,17 @@ void add_camera_options(ArgParser& parser, CameraArgs& args) {
 }
 
 void add_environment_options(ArgParser& parser, EnvironmentArgs& args) {
+    parser.begin_group("Environment");
     parser.add_string("--env", &args.map,
                       "latitude-longitude environment map around the scene (.hdr or .exr, twice "
-                      "as wide as high; its centre faces +X, its top +Y)");
-    parser.add_float("--env-rotate", &args.rotate, "turns the environment map about +Y (degrees)");
+                      "as wide as high; its centre faces +X, its top +Y)",
+                      "FILE");
+    parser.add_float("--env-rotate", &args.rotate, "turns the environment map about +Y (degrees)",
+                     "DEG");
     parser.add_string("--env-color", &args.color,
-                      "R,G,B: a uniform environment of this radiance around the scene (linear); "
-                      "with --env, the map's tint");
+                      "a uniform environment of this radiance around the scene (linear); with "
+                      "--env, the map's tint",
+                      "R,G,B");
     parser.add_float("--env-scale", &args.scale, "multiplies the environment's radiance");
     parser.add_flag("--no-default-light", &args.no_default_light,
                     "a scene without light, or whose emission is too weak to light it, stays "
@@ -309,11 +334,12 @@ void add_environment_options(ArgParser& parser, EnvironmentArgs& args) {
 }
 
 void add_scene_file_options(ArgParser& parser, SceneFileArgs& args) {
+    parser.begin_group("Mitsuba scene file");
     parser.add_strings("-D", &args.defines,
-                       "NAME=VALUE: a Mitsuba XML parameter ($NAME), overriding its <default>");
-    parser.add_strings(
-        "-a", &args.paths,
-        "PATH: a folder where a Mitsuba XML scene's relative file names are searched");
+                       "a Mitsuba XML parameter ($NAME), overriding its <default>", "NAME=VALUE");
+    parser.add_strings("-a", &args.paths,
+                       "a folder where a Mitsuba XML scene's relative file names are searched",
+                       "DIR");
     parser.add_check([&parser, &args] {
         args.options = {};
         for (const std::string& d : args.defines) {

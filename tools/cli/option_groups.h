@@ -96,8 +96,10 @@ void add_metropolis_options(ArgParser& parser, sampler::SamplerSettings& setting
 
 // --max-depth (Mitsuba's max_depth; the default is the target's) and --seed.
 void add_max_depth_option(ArgParser& parser, int& max_depth);
-// --device: a Vulkan device index of mvpl info, or -1 for the default.
-void add_device_option(ArgParser& parser, int& device, const std::string& help);
+// --device: a Vulkan device index of mvpl info, or -1 for the default; `value_name` for commands
+// that also take a word (render and convergence under mpirun: local-rank).
+void add_device_option(ArgParser& parser, int& device, const std::string& help,
+                       const std::string& value_name = "N");
 void add_seed_option(ArgParser& parser, uint64_t& seed);
 
 // --camera N, --look-at EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ], --fov DEG: which camera to render from.

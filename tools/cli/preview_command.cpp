@@ -10,6 +10,22 @@
 
 namespace mvpl::cli {
 
+namespace {
+
+void add_examples(ArgParser& parser) {
+    parser.add_example("mvpl preview assets/glossy/glossy.gltf",
+                       "the glossy scene in a window: drag to orbit, P for a screenshot");
+    parser.add_example(
+        "mvpl preview assets/two-room/two-room.gltf --sampler metropolis "
+        "--budget-ms 100",
+        "Metropolis VPLs, 100 ms of shading a frame");
+    parser.add_example(
+        "mvpl preview assets/cornell-box/cbox.gltf --frames 120 --screenshot cbox.png",
+        "120 frames without a user, the last one written to cbox.png");
+}
+
+}  // namespace
+
 int run_preview(const Args& args) {
     preview::PreviewOptions o;
     int width = o.width, height = o.height;
@@ -36,35 +52,36 @@ int run_preview(const Args& args) {
         "--frames N with --screenshot FILE renders N frames, writes the last (.png: the window's\n"
         "picture without the HUD; .exr: linear radiance) and exits.");
     parser.add_positional("SCENE", &o.scene_path, "glTF 2.0 scene (.gltf or .glb)");
-    add_sampler_option(parser, o.sampler);
-    parser.add_resolution("--res", &width, &height, "initial window size WxH");
-    parser.add_float("--budget-ms", &budget, "shading time per frame in milliseconds");
+    parser.add_resolution("--res", &width, &height, "initial window size");
+    parser.add_float("--budget-ms", &budget, "shading time per frame in milliseconds", "MS");
     parser.add_uint64("--paths-per-frame", &o.paths_per_frame,
                       "fixed sampler work (light paths / chain steps) per frame instead of "
                       "--budget-ms");
     parser.add_uint64("--vpls", &o.max_paths,
                       "stop sampling after this many light paths / steps (0 = never)");
     parser.add_uint64("--frames", &o.frames, "exit after N frames (0 = when closed)");
-    parser.add_string("--screenshot", &o.screenshot, "image written after the last frame");
-    parser.add_string("--script", &o.script, "timed input events (format above)");
+    parser.add_string("--screenshot", &o.screenshot, "image written after the last frame", "FILE");
+    parser.add_string("--script", &o.script, "timed input events (format above)", "FILE");
     parser.add_float("--exposure", &o.exposure, "exposure in stops");
-    add_seed_option(parser, o.seed);
+    parser.add_flag("--no-hud", &no_hud, "no text overlay");
+    parser.add_flag("--no-motion-scaling", &no_motion_scaling,
+                    "render at full resolution while the camera moves too");
+    parser.add_flag("--quiet", &o.quiet, "no summary line");
+    add_sampler_option(parser, o.sampler);
+    add_renderer_options(parser, renderer);  // C toggles clamping in the window
+    CompensationArgs compensation;
+    add_compensation_options(parser, compensation);
+    bool no_caustics = false;
+    add_caustics_option(parser, no_caustics);
     add_max_depth_option(parser, o.max_depth);
+    add_seed_option(parser, o.seed);
     CameraArgs camera;
     add_camera_options(parser, camera);
     EnvironmentArgs environment;
     add_environment_options(parser, environment);
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
-    add_renderer_options(parser, renderer);  // C toggles clamping in the window
-    CompensationArgs compensation;
-    add_compensation_options(parser, compensation);
-    bool no_caustics = false;
-    add_caustics_option(parser, no_caustics);
-    parser.add_flag("--no-hud", &no_hud, "no text overlay");
-    parser.add_flag("--no-motion-scaling", &no_motion_scaling,
-                    "render at full resolution while the camera moves too");
-    parser.add_flag("--quiet", &o.quiet, "no summary line");
+    add_examples(parser);
     if (!parser.parse(args)) return 0;
 
     if (width < 16 || height < 16 || width > 8192 || height > 8192)

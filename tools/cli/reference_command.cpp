@@ -28,8 +28,12 @@ int run_reference(const Args& args) {
         "Russian roulette). Writes EXR (linear float) or PNG (sRGB) by the extension of -o.");
     parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .xml, .ply, .obj)");
     parser.add_int("--spp", &options.spp, "samples per pixel");
+    parser.add_resolution("--res", &options.width, &options.height, "image size");
+    parser.add_strings("-o", &outputs, "output image, .exr or .png", "FILE");
+    parser.add_float("--exposure", &exposure, "PNG exposure in stops");
+    parser.add_int("--threads", &threads, "worker threads (0 = all cores)");
+    parser.add_flag("--quiet", &options.quiet, "no progress bar and no summary line");
     add_max_depth_option(parser, options.max_depth);
-    parser.add_resolution("--res", &options.width, &options.height, "image size WxH");
     add_seed_option(parser, options.seed);
     CameraArgs camera;
     add_camera_options(parser, camera);
@@ -37,10 +41,6 @@ int run_reference(const Args& args) {
     add_environment_options(parser, environment);
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
-    parser.add_strings("-o", &outputs, "output image, .exr or .png");
-    parser.add_float("--exposure", &exposure, "PNG exposure in stops");
-    parser.add_int("--threads", &threads, "worker threads (0 = all cores)");
-    parser.add_flag("--quiet", &options.quiet, "no progress bar and no summary line");
     if (!parser.parse(args)) return 0;
     if (options.spp < 1) throw UsageError("reference: --spp must be at least 1");
     if (threads < 0) throw UsageError("reference: --threads must not be negative");

@@ -54,37 +54,48 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     parser.add_uint64("--vpls", &a.paths,
                       "mc: light paths to trace, each leaves one VPL per bounce (--vpl-per-path "
                       "all) or one; metropolis: chain steps");
-    add_sampler_option(parser, a.sampler_name);
-    parser.add_float(
-        "--time-budget", &a.time_budget,
-        "seconds of sampling + shading: render as many VPLs as fit (overrides --vpls)");
+    parser.add_float("--time-budget", &a.time_budget,
+                     "seconds of sampling + shading: render as many VPLs as fit (overrides --vpls)",
+                     "SEC");
     parser.add_flag("--qmc", &a.qmc,
                     "mc: Halton primary samples, randomly shifted by the seed (the default)");
     parser.add_flag("--random-paths", &a.random_paths,
                     "mc: random primary samples instead of Halton ones");
     parser.add_string("--vpl-per-path", &a.per_path,
-                      "all or one (the seed paper's choice); default all for mc, one for "
-                      "metropolis");
+                      "VPLs a light path leaves: all (one per bounce) or one (the seed paper's "
+                      "choice); default all for mc, one for metropolis",
+                      "all|one");
+    parser.add_resolution("--res", &a.width, &a.height, "image size");
+    parser.add_strings("-o", &a.outputs, "output image, .exr or .png", "FILE");
+    parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
+    parser.add_flag("--oracle", &a.oracle,
+                    "shade on the CPU with exact visibility instead of the GPU");
+    parser.add_flag("--quiet", &a.quiet, "no progress bar and no summary line");
+    parser.add_string("--dump-shaders", &a.dump_shaders,
+                      "write the GLSL generated for this scene, every stage, into DIR", "DIR");
+    parser.add_flag("--no-shader-cache", &a.no_shader_cache,
+                    "compile every shader; neither read nor write the SPIR-V cache");
+    add_sampler_option(parser, a.sampler_name);
     add_metropolis_options(parser, a.settings);
-    parser.add_resolution("--res", &a.width, &a.height, "image size WxH");
     add_renderer_options(parser, a.renderer);
+    add_compensation_options(parser, a.compensation);
+    add_caustics_option(parser, a.no_caustics);
     add_max_depth_option(parser, a.settings.tracer.max_depth);
     add_seed_option(parser, a.settings.seed);
     add_camera_options(parser, a.camera);
     add_environment_options(parser, a.environment);
     add_scene_file_options(parser, a.scene_file);
-    parser.add_strings("-o", &a.outputs, "output image, .exr or .png");
-    parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
-    add_device_option(parser, a.device, "Vulkan device index (see mvpl info); -1 = default");
-    add_compensation_options(parser, a.compensation);
-    add_caustics_option(parser, a.no_caustics);
-    parser.add_flag("--oracle", &a.oracle,
-                    "shade on the CPU with exact visibility instead of the GPU");
-    parser.add_flag("--quiet", &a.quiet, "no progress bar and no summary line");
-    parser.add_string("--dump-shaders", &a.dump_shaders,
-                      "write the GLSL generated for this scene, every stage, into DIR");
-    parser.add_flag("--no-shader-cache", &a.no_shader_cache,
-                    "compile every shader; neither read nor write the SPIR-V cache");
+    add_device_option(parser, a.device,
+                      "Vulkan device index (see mvpl info), -1 = default; under mpirun "
+                      "local-rank: by the rank's place on its machine",
+                      "N|local-rank");
+    parser.add_example("mvpl render assets/cornell-box/cbox.gltf --res 512x512 -o cbox.png",
+                       "the Cornell box from 1024 light paths' VPLs, as an sRGB PNG");
+    parser.add_example("mvpl render assets/glossy/glossy.gltf --time-budget 10 -o glossy.exr",
+                       "as many VPLs as fit in 10 seconds, as a linear EXR");
+    parser.add_example("mvpl render assets/two-room/two-room.gltf --sampler metropolis --vpls 4096",
+                       "VPLs from 4096 Metropolis chain steps, placed where they light what the "
+                       "camera sees; the image goes to render.exr");
     parser.add_check([&a] {
         if (!a.per_path.empty() && a.per_path != "all" && a.per_path != "one")
             throw UsageError("render: --vpl-per-path must be all or one");

@@ -109,10 +109,13 @@ int run_vpls(const Args& args) {
                      "(top: from above, back faces cut away; camera: the scene camera).\n"
                      "Yellow: emitter VPLs; orange: surface VPLs; dot area grows with power.");
     parser.add_positional("SCENE", &scene_path, "glTF 2.0 scene (.gltf or .glb)");
-    add_sampler_option(parser, sampler_name);
+    parser.begin_group("VPLs options");  // not "Vpls", the command's name capitalised
     parser.add_uint64("--vpls", &count, "light paths (mc) or chain steps (metropolis)");
-    parser.add_string("--view", &view_name, "top (default) or camera");
-    parser.add_resolution("--res", &width, &height, "image size WxH");
+    parser.add_string("--view", &view_name, "top (default) or camera", "top|camera");
+    parser.add_resolution("--res", &width, &height, "image size");
+    parser.add_strings("-o", &outputs, "output image, .png or .exr", "FILE");
+    parser.add_flag("--quiet", &quiet, "no summary line");
+    add_sampler_option(parser, sampler_name);
     add_metropolis_options(parser, settings);
     add_max_depth_option(parser, settings.tracer.max_depth);
     add_seed_option(parser, settings.seed);
@@ -122,8 +125,6 @@ int run_vpls(const Args& args) {
     add_environment_options(parser, environment);
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
-    parser.add_strings("-o", &outputs, "output image, .png or .exr");
-    parser.add_flag("--quiet", &quiet, "no summary line");
     if (!parser.parse(args)) return 0;
     if (view_name != "top" && view_name != "camera")
         throw UsageError("vpls: --view must be top or camera");
