@@ -9,7 +9,8 @@ namespace mvpl::light {
 // run).
 inline constexpr float kDefaultChainRoughness = 0.2f;
 // Sub-pixel samples of the light glossy pixels reflect directly, per position (ChainOptions::
-// emission_samples) as `mvpl render` sets it (docs/results.md, "Stop 25").
+// emission_samples) as `mvpl render` sets it (docs/results.md, "Sub-pixel samples of the chains'
+// direct light").
 inline constexpr int kDefaultChainEmissionSamples = 8;
 
 struct ChainOptions {

@@ -89,11 +89,11 @@ public:
     // own levels.
     static constexpr size_t kLodChunkTriangles = 8192;
     // The levels' error targets, as fractions of a mesh's extent (meshoptimizer's measure).
-    // Level kProxyLevel (kProxyError) is the shadow proxy (docs/results.md, "Shadow proxy", for
-    // the measurement behind its error); level 1, at half its error, serves VPLs a little nearer
-    // than the proxy's distance. Like every level, a VPL draws it only as far away as LodChoice
-    // allows. Both are simplified from the full triangles; each further level from the previous
-    // one, at kLodErrorStep × its error.
+    // Level kProxyLevel (kProxyError) is the shadow proxy (docs/results.md, "Shadow culling and
+    // the shadow proxy", for the measurement behind its error); level 1, at half its error,
+    // serves VPLs a little nearer than the proxy's distance. Like every level, a VPL draws it only
+    // as far away as LodChoice allows. Both are simplified from the full triangles; each further
+    // level from the previous one, at kLodErrorStep × its error.
     static constexpr float kProxyError = 1e-3f;
     static constexpr float kFinestError = 0.5f * kProxyError;
     static constexpr uint32_t kProxyLevel = 2;

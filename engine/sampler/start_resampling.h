@@ -4,13 +4,14 @@
 // At interactive and minute budgets the chains take a few steps each (two-room, 60 s: 4096 chains,
 // ≈ 4.5 steps each), so the image is close to the starts and their neighbourhoods, and independent
 // picks leave each region of the scene with a Poisson-distributed number of starts: a wall region
-// that expects 30 gets 30 ± 5.5, a blotch 18 % too bright or dark (docs/results.md, "Two rooms",
-// the start pool). Systematic resampling over the pool sorted along a space-filling curve of the
-// states' VPL positions gives each region its expected count to within one: the starts are
-// stratified in space. It stays unbiased: item i is picked count·w_i/Σw times in expectation
-// whatever the order, and the picks are shuffled so that chain c's start is marginally ∝ w for
-// every c, so that chains which run an extra step (a run's steps are rarely a multiple of the
-// chains) weight no region more than another (tests/sampler/test_start_resampling.cpp).
+// that expects 30 gets 30 ± 5.5, a blotch 18 % too bright or dark (docs/results.md, "Four
+// references, stratified starts and the 60 s target"). Systematic resampling over the pool sorted
+// along a space-filling curve of the states' VPL positions gives each region its expected count to
+// within one: the starts are stratified in space. It stays unbiased: item i is picked count·w_i/Σw
+// times in expectation whatever the order, and the picks are shuffled so that chain c's start is
+// marginally ∝ w for every c, so that chains which run an extra step (a run's steps are rarely a
+// multiple of the chains) weight no region more than another
+// (tests/sampler/test_start_resampling.cpp).
 #include <cstdint>
 #include <span>
 #include <vector>

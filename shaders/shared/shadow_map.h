@@ -18,7 +18,7 @@ const float kShadowNoOccluder = 3.0e38f;
 // shadowed by its own coarser copy. A silhouette moves by at most a texel at a face's centre
 // (three at its corners). One footprint rather than a quarter: the dragon draws 44 k instead of
 // 85 k triangles per VPL (126 → 189 VPL/s) at 1.08× the full maps' error against the oracle
-// (docs/results.md, "Scenes from outside the project").
+// (docs/results.md, "Closed interiors and the shadow levels of detail").
 const float kLodFootprint = 1.0f;
 
 MVPL_SHARED_END

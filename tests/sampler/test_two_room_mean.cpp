@@ -1,5 +1,6 @@
 // The two-room scene's image mean with clamping off: both VPL samplers against the path tracer at
-// max depth 3, 4 and 6 (issue 13, "Two-room mean"; docs/results.md, "The deficit, measured").
+// max depth 3, 4 and 6 (issue 13, "Two-room mean"; docs/results.md, "Unbiasedness: the two-room
+// mean").
 //
 // Both sides estimate the same number, the mean luminance over the film of the box-filtered
 // image (it does not depend on the resolution, so a small one keeps the gather cheap): the oracle

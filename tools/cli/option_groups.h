@@ -37,7 +37,7 @@ struct RendererArgs {
     bool no_vpl_culling = false;
     // The command line interleaves (K = 2) by default, where RenderOptions (which the tests set
     // up) does not: shading is most of a render at the resolutions users ask for, and K = 2
-    // halves it for ≤ 1.1× the error at equal VPL count (docs/results.md, "Many lights").
+    // halves it for ≤ 1.1× the error at equal VPL count (docs/results.md, "Interleaved sampling").
     // 0 (the default): kDefaultInterleave, but 1 where the scene's specular chains are traced
     // (interleave_for): on assets/glossy at 160×120 interleaving costs chained pixels more than
     // it saves, 1.1–1.65× the error at equal time (docs/results.md, "Interleaving with chains");
