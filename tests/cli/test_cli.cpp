@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <nlohmann/json.hpp>
+
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -116,6 +118,39 @@ TEST(Cli, ReferenceWritesExrAndPng) {
                  shell_quote(MVPL_ASSETS_DIR "/cornell-box/ref-cbox-d6-4096.exr")),
         "differs");
     for (const auto& f : {exr, png, again})
+        std::filesystem::remove(f);
+}
+
+// compare --json: the numbers of the text output, as one JSON object for scripts.
+TEST(Cli, CompareJsonHoldsTheTextsNumbers) {
+    const std::string a = temp_file("json_a.exr"), b = temp_file("json_b.exr");
+    for (const auto& [path, seed] : {std::pair{a, "1"}, std::pair{b, "2"}}) {
+        ASSERT_EQ(run_mvpl("reference " + kCbox + " --spp 2 --res 24x16 --quiet --seed " +
+                           std::string(seed) + " -o " + shell_quote(path))
+                      .exit_code,
+                  0);
+    }
+    const auto text = run_mvpl("compare " + shell_quote(a) + " " + shell_quote(b));
+    const auto json = run_mvpl("compare " + shell_quote(a) + " " + shell_quote(b) + " --json");
+    ASSERT_EQ(text.exit_code, 0) << text.err;
+    ASSERT_EQ(json.exit_code, 0) << json.err;
+    const nlohmann::json j = nlohmann::json::parse(json.out);
+    double rel_mse = 0.0;
+    ASSERT_EQ(std::sscanf(text.out.c_str(), "relMSE %lf", &rel_mse), 1) << text.out;
+    EXPECT_GT(rel_mse, 0.0);                                             // two seeds differ
+    EXPECT_NEAR(j.at("relMSE").get<double>(), rel_mse, 1e-5 * rel_mse);  // text: 6 digits
+    EXPECT_EQ(j.at("mean_ratio").size(), 3u);
+    for (const char* key : {"RMSE", "mean_abs", "rel_err_p999", "max_ratio"})
+        EXPECT_TRUE(j.contains(key)) << key;
+    EXPECT_FALSE(j.contains("reference_noise"));
+    const auto two = run_mvpl("compare " + shell_quote(a) + " " + shell_quote(b) + " --and-ref " +
+                              shell_quote(a) + " --json");
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    const nlohmann::json k = nlohmann::json::parse(two.out);
+    EXPECT_GT(k.at("reference_noise").get<double>(), 0.0);
+    EXPECT_NEAR(k.at("relMSE_vs_truth").get<double>(),
+                k.at("relMSE").get<double>() - k.at("reference_noise").get<double>(), 1e-12);
+    for (const auto& f : {a, b})
         std::filesystem::remove(f);
 }
 

@@ -1,5 +1,7 @@
 // `mvpl compare`: error of one image against a reference.
 #include <cstdio>
+#include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -13,11 +15,40 @@
 
 namespace mvpl::cli {
 
+namespace {
+
+// The error as text, a `name value` line each, or as one JSON object with the same names (for
+// scripts); reference_noise and relMSE_vs_truth only with several references.
+void print_error(const ImageError& e, std::optional<double> noise, bool json) {
+    if (json) {
+        nlohmann::json j = {{"relMSE", e.rel_mse},
+                            {"RMSE", e.rmse},
+                            {"mean_abs", e.mean_abs},
+                            {"mean_ratio", {e.mean_ratio.x, e.mean_ratio.y, e.mean_ratio.z}},
+                            {"rel_err_p999", e.rel_err_p999},
+                            {"max_ratio", e.max_ratio}};
+        if (noise) {
+            j["reference_noise"] = *noise;
+            j["relMSE_vs_truth"] = e.rel_mse - *noise;
+        }
+        std::printf("%s\n", j.dump().c_str());
+        return;
+    }
+    std::printf("relMSE %.6g\nRMSE %.6g\nmean_abs %.6g\nmean_ratio %.6f %.6f %.6f\n", e.rel_mse,
+                e.rmse, e.mean_abs, e.mean_ratio.x, e.mean_ratio.y, e.mean_ratio.z);
+    std::printf("rel_err_p999 %.6g\nmax_ratio %.6g\n", e.rel_err_p999, e.max_ratio);
+    if (noise)
+        std::printf("reference_noise %.6g\nrelMSE_vs_truth %.6g\n", *noise, e.rel_mse - *noise);
+}
+
+}  // namespace
+
 int run_compare(const Args& args) {
     std::string image_path, reference_path;
     int block = 1;
     std::string region;
     std::vector<std::string> more_references;
+    bool json = false;
     ArgParser parser(
         "compare",
         "Prints the error of IMAGE against REFERENCE: relMSE = mean((x-r)^2/(r^2+0.01)),\n"
@@ -34,6 +65,7 @@ int run_compare(const Args& args) {
                        "the references are averaged, and their noise's share of relMSE "
                        "(reference_noise) and relMSE less it (relMSE_vs_truth) are printed",
                        "FILE");
+    parser.add_flag("--json", &json, "print the error as one JSON object with the same names");
     if (!parser.parse(args)) return 0;
     if (block < 1) throw UsageError("compare: --block must be at least 1");
     const Image image = read_finite_exr(image_path);
@@ -70,13 +102,8 @@ int run_compare(const Args& args) {
     for (Image& reference : references)
         reference = prepare(reference);
     const ImageError e = compare_images(prepare(image), average_images(references));
-    std::printf("relMSE %.6g\nRMSE %.6g\nmean_abs %.6g\nmean_ratio %.6f %.6f %.6f\n", e.rel_mse,
-                e.rmse, e.mean_abs, e.mean_ratio.x, e.mean_ratio.y, e.mean_ratio.z);
-    std::printf("rel_err_p999 %.6g\nmax_ratio %.6g\n", e.rel_err_p999, e.max_ratio);
-    if (references.size() > 1) {
-        const double noise = reference_noise(references);
-        std::printf("reference_noise %.6g\nrelMSE_vs_truth %.6g\n", noise, e.rel_mse - noise);
-    }
+    print_error(
+        e, references.size() > 1 ? std::optional(reference_noise(references)) : std::nullopt, json);
     return 0;
 }
 

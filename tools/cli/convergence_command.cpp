@@ -6,10 +6,10 @@
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 #include <sstream>
 
 #include "engine/cluster/cluster.h"
+#include "engine/core/atomic_files.h"
 #include "engine/core/error.h"
 #include "engine/core/finite_check.h"
 #include "engine/core/image.h"
@@ -277,7 +277,12 @@ int run_convergence(const Args& args) {
     cluster::together(ranks, [&] {
         if (!ranks.root()) return;
         const std::filesystem::path csv = std::filesystem::path(out_dir) / "convergence.csv";
-        std::ofstream(csv) << to_csv(all);
+        // Whole or not at all, every write checked (atomic_files.h).
+        const std::string text = to_csv(all);
+        write_files_atomically({csv.string()}, [&](size_t, const std::string& temp) {
+            write_bytes(temp,
+                        std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
+        });
         if (!quiet) print_summary(all, methods, noise);
         if (!no_plot) {
             const std::filesystem::path png = std::filesystem::path(out_dir) / "convergence.png";
