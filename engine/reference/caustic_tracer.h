@@ -49,6 +49,7 @@
 #include "engine/core/image.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
+#include "engine/light/path_depth.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
@@ -57,8 +58,8 @@ namespace mvpl::reference {
 struct CausticOptions {
     int width = 256;
     int height = 256;
-    int max_depth = 6;  // of the whole path, camera included; < 0: unlimited
-    int rr_depth = 5;   // as sampler::LightTracerOptions::rr_depth
+    int max_depth = light::kDefaultMaxDepth;  // of the whole path, camera included; < 0: unlimited
+    int rr_depth = 5;                         // as sampler::LightTracerOptions::rr_depth
     // The chains' class (light/path_partition.h): the same options the renderer's chains and the
     // light tracer's `specular` use. Disabled: only transmission and back sides.
     light::ChainOptions specular;

@@ -34,6 +34,7 @@
 #include "engine/core/image.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
+#include "engine/light/path_depth.h"
 #include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
@@ -48,7 +49,7 @@ struct CompensationOptions {
     // The VPL image's virtual spherical lights (scene diagonals, light/virtual_sphere.h); 0
     // (--no-vsl): the whole BSDF is clamped and compensated.
     float vsl_radius = light::kDefaultVslRadius;
-    int max_depth = 6;  // of the whole path, camera included; < 0: unlimited
+    int max_depth = light::kDefaultMaxDepth;  // of the whole path, camera included; < 0: unlimited
     int rr_depth = 5;
     // The renderer's specular chains (light/specular_chain.h): a pixel they continue is
     // compensated at the rough end of its chain, weighted by its throughput, where the VPLs light

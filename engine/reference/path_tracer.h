@@ -7,6 +7,7 @@
 #include "engine/core/image.h"
 #include "engine/core/rng.h"
 #include "engine/light/light_sampler.h"
+#include "engine/light/path_depth.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
@@ -18,7 +19,7 @@ struct PathTracerOptions {
     int spp = 64;
     // Mitsuba's max_depth: segments from the camera to the light (1 = emitters seen directly,
     // 2 = direct light only); negative = unlimited (Russian roulette ends the paths).
-    int max_depth = 6;
+    int max_depth = light::kDefaultMaxDepth;
     // Russian roulette starts once a path has this many segments.
     int rr_depth = 5;
     uint64_t seed = 0;

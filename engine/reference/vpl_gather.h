@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "engine/core/subpixel.h"
+#include "engine/light/path_depth.h"
 
 #include "engine/core/image.h"
 #include "engine/light/specular_chain.h"
@@ -32,7 +33,7 @@ struct GatherOptions {
     float vsl_radius = light::kDefaultVslRadius;
     // Mitsuba's max_depth; it only decides whether emitters seen directly are shown (≥ 1 or < 0).
     // Which VPLs exist for that depth is the sampler's business (LightTracer).
-    int max_depth = 6;
+    int max_depth = light::kDefaultMaxDepth;
     bool quiet = true;
     // VPL i of the list is shaded at sub-pixel position subpixel.position_of(first_vpl + i), as
     // VplRenderer shades it after first_vpl others since begin() (a chunk of a progressive

@@ -22,6 +22,7 @@
 
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
+#include "engine/light/path_depth.h"
 #include "engine/light/vpl.h"
 #include "engine/sampler/sample_stream.h"
 #include "engine/scene/scene.h"
@@ -30,7 +31,7 @@
 namespace mvpl::sampler {
 
 struct LightTracerOptions {
-    int max_depth = 6;  // Mitsuba's max_depth of the whole camera-to-light path; < 0 unlimited
+    int max_depth = light::kDefaultMaxDepth;  // light/path_depth.h; < 0 unlimited
     // Russian roulette once the camera-to-light path through the next VPL would have at least
     // this many segments (the path tracer's rr_depth, counted the same way).
     int rr_depth = 5;

@@ -11,6 +11,7 @@
 
 #include "engine/cluster/cluster.h"
 #include "engine/core/image.h"
+#include "engine/light/path_depth.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/sampler_factory.h"
 #include "tools/cli/convergence_analysis.h"
@@ -22,7 +23,7 @@ struct ConvergenceRun {
     const session::SceneSession* session = nullptr;
     const Image* reference = nullptr;  // its size is the image size
     double budget_seconds = 10.0;
-    int max_depth = 6;
+    int max_depth = light::kDefaultMaxDepth;
     uint64_t seed = 0;
     bool quiet = false;
     // VPL runs add clamping compensation (engine/integrator/cpu_estimator_thread.h):

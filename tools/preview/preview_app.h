@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/light/path_depth.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/environment_choice.h"
@@ -32,7 +33,7 @@ struct PreviewOptions {
     float clamp = render::RenderOptions{}.clamp;
     float exposure = 0.0f;
     uint64_t seed = 0;
-    int max_depth = 6;
+    int max_depth = light::kDefaultMaxDepth;
     uint32_t shadow_resolution = render::RenderOptions{}.shadow_resolution;
     uint32_t batch = render::RenderOptions{}.batch;
     bool jitter = render::RenderOptions{}.jitter;  // a new sub-pixel position per batch
