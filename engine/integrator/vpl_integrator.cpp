@@ -19,34 +19,49 @@ void add_image(Image& sum, const Image& part, float scale = 1.0f) {
 
 }  // namespace
 
-VplIntegrator::VplIntegrator(const SceneView& view, const Estimate& estimate,
-                             render::VplRenderer* renderer, cluster::Cluster* ranks, Pacing pacing)
-    : m_view(view),
-      m_estimate(estimate),
-      m_renderer(renderer),
-      m_ranks(ranks ? *ranks : cluster::single_process()),
-      m_pacing(pacing) {
-    if (shared() && !renderer)
+VplIntegrator::VplIntegrator(const SceneView& view, gpu::Context* context, uint32_t devices,
+                             cluster::Cluster* ranks)
+    : m_ranks(ranks ? *ranks : cluster::single_process()), m_view(view) {
+    if (shared() && !context)
         throw UsageError("render: --oracle runs on one process, not under mpirun");
+    cluster::together(m_ranks, [&] {
+        if (context)
+            m_renderer =
+                std::make_unique<render::VplRenderer>(*context, *view.scene, view.accel, devices);
+    });
+}
+
+void VplIntegrator::begin(const SceneView& view, const Estimate& estimate, Pacing pacing,
+                          std::unique_ptr<sampler::VplStream> stream) {
+    m_view = view;
+    m_estimate = estimate;
+    m_pacing = pacing;
+    m_stats = {};
+    m_cpu.reset();  // its threads hold the old view
     cluster::together(m_ranks, [&] {
         if (m_renderer) m_renderer->begin(*view.camera, m_estimate.render);
         m_cpu = std::make_unique<CpuEstimators>(view, m_estimate, m_ranks.rank(), m_ranks.size());
     });
     Timer setup;
-    sampler::SamplerSettings settings = sampler_settings(m_estimate);
-    // The caustic tracer carries the light of the chains' class: no VPL there.
-    if (m_cpu->caustics()) settings.tracer.specular = m_estimate.render.chains;
-    if (shared()) settings.cluster = &m_ranks;
-    // The Metropolis bootstrap meets the other ranks inside (its own agreement points).
-    cluster::together(m_ranks, [&] {
-        m_stream = sampler::make_vpl_stream(m_estimate.sampler, *view.scene, *view.accel,
-                                            *view.lights, *view.camera, settings);
-    });
+    if (stream) {
+        m_stream = std::move(stream);
+    } else {
+        sampler::SamplerSettings settings = sampler_settings(m_estimate);
+        // The caustic tracer carries the light of the chains' class: no VPL there.
+        if (m_cpu->caustics()) settings.tracer.specular = m_estimate.render.chains;
+        if (shared()) settings.cluster = &m_ranks;
+        m_stream.reset();
+        // The Metropolis bootstrap meets the other ranks inside (its own agreement points).
+        cluster::together(m_ranks, [&] {
+            m_stream = sampler::make_vpl_stream(m_estimate.sampler, *view.scene, *view.accel,
+                                                *view.lights, *view.camera, settings);
+        });
+    }
     m_stats.sampling_seconds += setup.seconds();
     m_gather = gather_options(m_estimate);
     m_gather.max_depth = 0;  // VPL light only: the emitted radiance is added at the end
     m_gather.quiet = true;
-    if (!m_renderer) m_sum = Image(m_gather.width, m_gather.height);
+    m_sum = m_renderer ? Image() : Image(m_gather.width, m_gather.height);
 }
 
 VplIntegrator::~VplIntegrator() = default;
@@ -97,7 +112,7 @@ Image VplIntegrator::image() {
         image = shared_image(false);
     } else {
         image = vpl_image();
-        add_image(image, m_cpu->snapshot(image.width(), image.height()));
+        add_image(image, cpu_image());
     }
     m_stats.shading_seconds += shading.seconds();
     return image;
@@ -111,19 +126,30 @@ Image VplIntegrator::finish() {
         image = shared_image(true);
     } else {
         image = vpl_image();
-        // Interrupted (interrupt.h): the passes done, not those allowed.
-        const bool wait = m_pacing == Pacing::Fixed && !interrupted();
-        if (CpuEstimatorThread* t = m_cpu->compensation_thread()) {
-            add_image(image, t->finish(wait));
-            m_stats.compensation_passes = t->passes();
-        }
-        if (CpuEstimatorThread* t = m_cpu->caustic_thread()) {
-            add_image(image, t->finish(wait));
-            m_stats.caustic_passes = t->passes();
-        }
+        add_image(image, finish_cpu(m_pacing));
     }
     m_stats.shading_seconds += shading.seconds();
     return image;
+}
+
+Image VplIntegrator::cpu_image() const {
+    return m_cpu->snapshot(int(m_estimate.render.width), int(m_estimate.render.height));
+}
+
+Image VplIntegrator::finish_cpu(Pacing pacing) {
+    m_cpu->pace(m_stats.vpls, pacing);
+    Image sum(int(m_estimate.render.width), int(m_estimate.render.height));
+    // Interrupted (interrupt.h): the passes done, not those allowed.
+    const bool wait = pacing == Pacing::Fixed && !interrupted();
+    if (CpuEstimatorThread* t = m_cpu->compensation_thread()) {
+        add_image(sum, t->finish(wait));
+        m_stats.compensation_passes = t->passes();
+    }
+    if (CpuEstimatorThread* t = m_cpu->caustic_thread()) {
+        add_image(sum, t->finish(wait));
+        m_stats.caustic_passes = t->passes();
+    }
+    return sum;
 }
 
 // Over ranks: the contributions and the CPU images' pass sums summed to rank 0, which resolves.

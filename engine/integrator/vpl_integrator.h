@@ -4,8 +4,9 @@
 // compensation and caustics (cpu_estimator_thread.h) — and the ranks of a job under mpirun
 // (engine/cluster), which share the light paths and sum their images to rank 0. Its image's
 // expectation is the estimate's (estimate.h) whatever the loop around it: `mvpl render` advances
-// it by a fixed count or a time budget, `mvpl convergence` by doubling chunks, each reading the
-// image when it likes.
+// it by a fixed count or a time budget, `mvpl convergence` by doubling chunks, `mvpl bench` by
+// one fixed set of VPLs, the preview by frames; each reads the image when it likes. It lives as
+// long as its scene (the renderer's pipelines and maps), an estimate from begin() to finish().
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include "engine/cluster/cluster.h"
 #include "engine/core/image.h"
+#include "engine/gpu/context.h"
 #include "engine/integrator/cpu_estimators.h"
 #include "engine/integrator/estimate.h"
 #include "engine/integrator/scene_view.h"
@@ -36,14 +38,20 @@ struct IntegratorStats {
 
 class VplIntegrator {
 public:
-    // renderer: null to shade with the CPU oracle (one process only); ranks: null for this
-    // process alone. Every rank constructs it with the same arguments.
-    VplIntegrator(const SceneView& view, const Estimate& estimate, render::VplRenderer* renderer,
-                  cluster::Cluster* ranks, Pacing pacing);
+    // Shades on `context` with a GPU renderer of `devices` devices (render::VplRenderer), or,
+    // with no context, with the CPU oracle (one process only). ranks: null for this process
+    // alone; every rank constructs it with the same arguments. The view's camera is begin()'s.
+    VplIntegrator(const SceneView& view, gpu::Context* context, uint32_t devices,
+                  cluster::Cluster* ranks);
     ~VplIntegrator();
     VplIntegrator(const VplIntegrator&) = delete;
     VplIntegrator& operator=(const VplIntegrator&) = delete;
 
+    // Starts an estimate at the view's camera (its scene is the constructor's), from a new
+    // stream of the estimate's sampler, or from `stream` when given (the preview's VPLs, drawn
+    // once and shaded again after a camera move). Every rank calls it with the same arguments.
+    void begin(const SceneView& view, const Estimate& estimate, Pacing pacing,
+               std::unique_ptr<sampler::VplStream> stream = nullptr);
     // Samples `work` more units (light paths or chain steps; over ranks, shared) and shades
     // their VPLs. Every rank calls it with the same work.
     void advance(uint64_t work);
@@ -54,8 +62,17 @@ public:
     // The final image (as image(), the CPU estimators finished as the pacing says); once.
     Image finish();
 
+    // One process: the CPU estimators' image so far (black where none runs), and finished as
+    // `pacing` says for the VPLs shaded (Fixed: every pass `mvpl render` runs for them).
+    Image cpu_image() const;
+    Image finish_cpu(Pacing pacing);
+
     const sampler::VplStream& stream() const { return *m_stream; }
     const IntegratorStats& stats() const { return m_stats; }
+    // The GPU renderer (its timings, devices, and the sums the preview presents); null when the
+    // CPU oracle shades.
+    render::VplRenderer* renderer() { return m_renderer.get(); }
+    const render::VplRenderer* renderer() const { return m_renderer.get(); }
     // Whether the stream knows already that the image stays black however long it runs (the
     // Metropolis bootstrap found no light on anything the camera sees).
     bool unlit() const;
@@ -65,11 +82,11 @@ private:
     Image vpl_image();
     Image shared_image(bool finishing);
 
+    cluster::Cluster& m_ranks;
+    std::unique_ptr<render::VplRenderer> m_renderer;
     SceneView m_view;
     Estimate m_estimate;
-    render::VplRenderer* m_renderer;
-    cluster::Cluster& m_ranks;
-    Pacing m_pacing;
+    Pacing m_pacing = Pacing::Fixed;
     IntegratorStats m_stats;
     std::unique_ptr<sampler::VplStream> m_stream;
     reference::GatherOptions m_gather;  // the oracle's, per chunk

@@ -16,7 +16,7 @@
 #include "engine/core/interrupt.h"
 #include "engine/core/reference_noise.h"
 #include "engine/gpu/context.h"
-#include "engine/render/vpl_renderer.h"
+#include "engine/integrator/vpl_integrator.h"
 #include "engine/sampler/sampler_factory.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
@@ -249,7 +249,7 @@ int run_convergence(const Args& args) {
 
     std::vector<ConvergencePoint> all;
     std::unique_ptr<gpu::Context> context;
-    std::unique_ptr<render::VplRenderer> renderer;
+    std::unique_ptr<integrator::VplIntegrator> vpl_integrator;
     for (const std::string& method : methods) {
         // SIGINT/SIGTERM on any rank (interrupt.h): the methods run so far are written.
         std::vector<double> stop(1, interrupted() ? 1.0 : 0.0);
@@ -259,16 +259,17 @@ int run_convergence(const Args& args) {
         if (method == "pt") {
             points = run_path_tracer(run);
         } else {
-            cluster::together(ranks, [&] {
-                if (renderer) return;
-                gpu::ContextOptions co;
-                co.device_index = device;
-                context = std::make_unique<gpu::Context>(co);
-                renderer = std::make_unique<render::VplRenderer>(
-                    *context, session.scene(), &session.accel(),
-                    renderer_args.devices_for(context->device_info()));
-            });
-            points = run_vpl_sampler(run, method, settings, *renderer, render_options);
+            if (!vpl_integrator) {
+                cluster::together(ranks, [&] {
+                    gpu::ContextOptions co;
+                    co.device_index = device;
+                    context = std::make_unique<gpu::Context>(co);
+                });
+                vpl_integrator = std::make_unique<integrator::VplIntegrator>(
+                    session.view(), context.get(),
+                    renderer_args.devices_for(context->device_info()), &ranks);
+            }
+            points = run_vpl_sampler(run, method, settings, *vpl_integrator, render_options);
         }
         all.insert(all.end(), points.begin(), points.end());
     }

@@ -114,7 +114,7 @@ std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run) {
 
 std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const std::string& name,
                                               const sampler::SamplerSettings& settings,
-                                              render::VplRenderer& renderer,
+                                              integrator::VplIntegrator& integrator,
                                               const render::RenderOptions& options) {
     cluster::Cluster& ranks = ranks_of(run);
     start_together(ranks);
@@ -133,9 +133,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     e.compensate = run.compensate;
     e.compensation_passes = run.compensation_passes;
     e.caustics = run.caustics;
-    integrator::VplIntegrator integrator({&s.scene(), &s.accel(), &s.lights(), &s.camera()}, e,
-                                         &renderer, ranks.size() > 1 ? &ranks : nullptr,
-                                         integrator::Pacing::OpenEnded);
+    integrator.begin(s.view(), e, integrator::Pacing::OpenEnded);
     const sampler::VplStream& stream = integrator.stream();
     std::vector<ConvergencePoint> points;
     Progress progress(name, tenths(run.budget_seconds), run.quiet);

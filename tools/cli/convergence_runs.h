@@ -11,6 +11,7 @@
 
 #include "engine/cluster/cluster.h"
 #include "engine/core/image.h"
+#include "engine/integrator/vpl_integrator.h"
 #include "engine/light/path_depth.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/sampler_factory.h"
@@ -51,7 +52,7 @@ std::vector<ConvergencePoint> run_path_tracer(const ConvergenceRun& run);
 // ranges, Metropolis chains), so that each point's image is the one-process run's at that work.
 std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const std::string& name,
                                               const sampler::SamplerSettings& settings,
-                                              render::VplRenderer& renderer,
+                                              integrator::VplIntegrator& integrator,
                                               const render::RenderOptions& options);
 
 // The error of `image` against the reference as a point of `method`.

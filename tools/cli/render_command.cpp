@@ -161,7 +161,7 @@ int run_render(const Args& args) {
     Timer total;
     std::unique_ptr<session::SceneSession> session;
     std::unique_ptr<gpu::Context> context;
-    std::unique_ptr<render::VplRenderer> renderer;
+    std::unique_ptr<integrator::VplIntegrator> integrator;
     cluster::together(ranks, [&] {
         parsed = parser.parse(with_local_rank_device(args));
         if (!parsed) return;
@@ -181,18 +181,19 @@ int run_render(const Args& args) {
             gpu::ContextOptions co;
             co.device_index = a.device;
             context = std::make_unique<gpu::Context>(co);
-            renderer = std::make_unique<render::VplRenderer>(
-                *context, session->scene(), &session->accel(),
-                a.renderer.devices_for(context->device_info()));
         }
     });
     if (!parsed) return 0;
+    integrator = std::make_unique<integrator::VplIntegrator>(
+        session->view(), context.get(),
+        context ? a.renderer.devices_for(context->device_info()) : 1,
+        ranks.size() > 1 ? &ranks : nullptr);
     if (a.sampler_name == "metropolis") {
         sampler::scale_pool_for_budget(a.settings, double(a.time_budget), parser.given("--chains"),
                                        parser.given("--bootstrap"));
     }
     RenderJob job = make_job(a, *session);
-    job.renderer = renderer.get();
+    job.integrator = integrator.get();
     if (ranks.size() > 1) job.cluster = &ranks;
 
     const RenderOutcome result =

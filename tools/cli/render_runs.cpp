@@ -41,10 +41,9 @@ uint64_t next_chunk(uint64_t done, double elapsed, double remaining, uint64_t fi
     return std::clamp<uint64_t>(uint64_t(std::min(seconds / per_unit, 1e9)), 1, uint64_t(1) << 20);
 }
 
-integrator::VplIntegrator make_integrator(const RenderJob& job, integrator::Pacing pacing) {
-    const session::SceneSession& s = *job.session;
-    return integrator::VplIntegrator({&s.scene(), &s.accel(), &s.lights(), &s.camera()},
-                                     job.estimate, job.renderer, job.cluster, pacing);
+integrator::VplIntegrator& begin(const RenderJob& job, integrator::Pacing pacing) {
+    job.integrator->begin(job.session->view(), job.estimate, pacing);
+    return *job.integrator;
 }
 
 // Warns when the Metropolis bootstrap found no light on anything the camera sees (then sampling
@@ -65,19 +64,19 @@ bool any_rank_interrupted(const RenderJob& job) {
     return flag[0] > 0.0;
 }
 
-RenderOutcome outcome_of(const RenderJob& job, integrator::VplIntegrator& run) {
+RenderOutcome outcome_of(integrator::VplIntegrator& run) {
     RenderOutcome result;
     result.image = run.finish();
     result.stats = run.stats();
     result.statistics = run.stream().statistics();
-    if (job.renderer) result.timings = job.renderer->timings();
+    if (const render::VplRenderer* r = run.renderer()) result.timings = r->timings();
     return result;
 }
 
 }  // namespace
 
 RenderOutcome render_once(const RenderJob& job, uint64_t units) {
-    integrator::VplIntegrator run = make_integrator(job, integrator::Pacing::Fixed);
+    integrator::VplIntegrator& run = begin(job, integrator::Pacing::Fixed);
     warn_if_unlit(job, run);
     Progress progress("render", int64_t(std::min<uint64_t>(units, INT64_MAX)), job.quiet);
     // Chunk by chunk, so that memory does not grow with `units`: the same VPLs as at once (the
@@ -91,12 +90,12 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
         progress.advance(int64_t(work));
     }
     progress.finish();
-    return outcome_of(job, run);
+    return outcome_of(run);
 }
 
 RenderOutcome render_for(const RenderJob& job, double seconds) {
     Timer budget;
-    integrator::VplIntegrator run = make_integrator(job, integrator::Pacing::OpenEnded);
+    integrator::VplIntegrator& run = begin(job, integrator::Pacing::OpenEnded);
     warn_if_unlit(job, run);
     // Progress in tenths of the budget.
     const int64_t tenths = int64_t(std::ceil(seconds * 10.0));
@@ -109,7 +108,10 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     // A chunk's batches are shared out among the renderer's devices (render::split_into_runs),
     // each drawing the G-buffers of the positions its run touches: a chunk per device, rank 0's.
     std::vector<double> chunk_seconds(
-        1, ranks.root() ? kChunkSeconds * (job.renderer ? job.renderer->devices() : 1) : 0.0);
+        1, ranks.root()
+               ? kChunkSeconds *
+                     (job.integrator->renderer() ? job.integrator->renderer()->devices() : 1)
+               : 0.0);
     ranks.sum_all(chunk_seconds);
     auto elapsed = [&] {
         std::vector<double> t(1, ranks.root() ? budget.seconds() : 0.0);
@@ -125,15 +127,15 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
         shown = now;
     }
     progress.finish();
-    return outcome_of(job, run);
+    return outcome_of(run);
 }
 
 std::string summary_line(const RenderJob& job, const RenderOutcome& r, double total_seconds) {
     std::string pass_times = "CPU oracle";
-    if (job.renderer) {
+    if (const render::VplRenderer* renderer = job.integrator->renderer()) {
         char buf[160];
         // Over several devices the pass times are summed: each device's ran beside the others'.
-        const uint32_t devices = job.renderer->devices();
+        const uint32_t devices = renderer->devices();
         std::snprintf(
             buf, sizeof buf, "G-buffer %.1f ms, shadow %.1f ms, shading %.1f ms, %u batches%s",
             r.timings.g_buffer_ms, r.timings.shadow_ms, r.timings.shading_ms, r.timings.batches,

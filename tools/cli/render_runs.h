@@ -17,10 +17,11 @@ namespace mvpl::cli {
 struct RenderJob {
     const session::SceneSession* session = nullptr;
     integrator::Estimate estimate;
-    render::VplRenderer* renderer = nullptr;  // null: shade with the CPU oracle
+    integrator::VplIntegrator* integrator = nullptr;  // the scene's; begun by each run
     bool quiet = false;
     // The ranks that share the render (engine/cluster): each samples and shades its share, rank 0
-    // sums the images and alone gets the outcome's image. Null: this process alone.
+    // sums the images and alone gets the outcome's image. Null: this process alone. The
+    // integrator was made for the same ranks.
     cluster::Cluster* cluster = nullptr;
 };
 

@@ -14,8 +14,8 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/swapchain.h"
-#include "engine/integrator/cpu_estimators.h"
 #include "engine/integrator/estimate.h"
+#include "engine/integrator/vpl_integrator.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/sampler_factory.h"
 #include "tools/preview/camera_controller.h"
@@ -66,7 +66,7 @@ public:
           m_window("mvpl preview: " + std::filesystem::path(options.scene_path).filename().string(),
                    options.width, options.height),
           m_context(context_options()),
-          m_renderer(m_context, m_session.scene(), &m_session.accel()),  // specular chains
+          m_integrator(m_session.view(), &m_context, 1, nullptr),
           m_swapchain(m_context, m_window.create_surface(m_context.instance()),
                       uint32_t(options.width), uint32_t(options.height)),
           m_present(m_context, m_swapchain.srgb()),
@@ -97,7 +97,6 @@ private:
     void restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving);
     void render_work();
     void update_cpu_image(bool force);
-    Image resolved();
     void update_hud(bool force);
     void save(const std::string& path, bool png_from_display);
 
@@ -108,7 +107,8 @@ private:
     size_t m_next_event = 0;
     Window m_window;
     gpu::Context m_context;
-    render::VplRenderer m_renderer;
+    // The estimate `mvpl render` makes, begun anew at each restart over the VPLs of m_history.
+    integrator::VplIntegrator m_integrator;
     gpu::Swapchain m_swapchain;
     PresentPass m_present;
     HudFont m_font;
@@ -118,10 +118,11 @@ private:
     // moves the Monte Carlo VPLs give an immediate picture instead of a bootstrap per frame.
     std::unique_ptr<VplHistory> m_mc_history;
     std::unique_ptr<VplHistory> m_chain;
-    VplHistory* m_history = nullptr;  // the one the current sum draws from
-    // The compensation and caustics of the picture at rest (none while the camera moves), their
-    // image uploaded to the present pass every kHudInterval.
-    std::unique_ptr<integrator::CpuEstimators> m_cpu;
+    VplHistory* m_history = nullptr;    // the one the current sum draws from
+    HistoryReplay* m_replay = nullptr;  // its replay in the current estimate (the integrator's)
+    // The compensation and caustics run for the picture at rest (not while the camera moves),
+    // their image uploaded to the present pass every kHudInterval.
+    bool m_cpu_on = false;
     Timer m_cpu_timer;
 
     float m_exposure;
@@ -136,7 +137,6 @@ private:
     // axis (nearest-neighbour upscaled by the present pass), adapted to keep moving frames within
     // kMovingFrameSeconds; at rest the next frame restarts at full size.
     uint32_t m_motion_divisor;
-    size_t m_replayed = 0;       // segments of the history in the current sum
     double m_scale = 0.0;        // of the current sum
     double m_ms_per_unit = 0.0;  // measured shading time per sampler unit (EMA)
     uint32_t m_screenshots = 0;
@@ -242,8 +242,7 @@ void PreviewApp::apply_script(uint64_t frame) {
 }
 
 void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving) {
-    m_cpu.reset();  // its pixels were the old view's (or size's)
-    m_present.set_cpu_image(Image());
+    m_present.set_cpu_image(Image());  // its pixels were the old view's (or size's)
     m_window_width = width;
     m_window_height = height;
     m_render_width = std::max(width / divisor, 1u);
@@ -255,10 +254,13 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     if (chain && !moving && !m_chain) m_chain = make_history(m_sampler, ro);
     m_history = chain && !moving ? m_chain.get() : m_mc_history.get();
     m_motion_sum = moving && (divisor > 1 || chain);
-    m_renderer.begin(m_controller.camera(), ro);
-    if (!moving)
-        m_cpu = std::make_unique<integrator::CpuEstimators>(view(), estimate(ro, m_sampler));
-    m_replayed = 0;
+    integrator::Estimate e = estimate(ro, m_sampler);
+    e.compensate = e.compensate && !moving;
+    e.caustics = e.caustics && !moving;
+    auto replay = std::make_unique<HistoryReplay>(*m_history);
+    m_replay = replay.get();
+    m_integrator.begin(view(), e, integrator::Pacing::OpenEnded, std::move(replay));
+    m_cpu_on = !moving;
     m_scale = 0.0;
     m_moved = false;
     m_hud_dirty = true;
@@ -277,43 +279,24 @@ void PreviewApp::render_work() {
             units = std::min(units, kMaxUnitsPerCall);
         }
         // Whole segments: replayed ones first (after a move), then new ones from the stream.
-        const size_t from = m_history->segment_begin(m_replayed);
-        size_t to = from;
-        uint64_t drawn = 0;
-        while (drawn < units && m_history->ensure(m_replayed, units - drawn)) {
-            const VplSegment& segment = m_history->segment(m_replayed++);
-            to = segment.end;
-            m_scale = segment.scale;
-            drawn += segment.work;
-        }
-        if (to == from) break;  // converged: nothing left to draw
+        const uint64_t vpls = m_integrator.stats().vpls, work = m_replay->work_done();
         const Timer shading;
-        m_renderer.accumulate(
-            std::span<const light::Vpl>(m_history->vpls().data() + from, to - from));
+        m_integrator.advance(units);
+        const uint64_t drawn = m_replay->work_done() - work;
+        if (drawn == 0) break;  // converged: nothing left to draw
         const double ms = 1e3 * shading.seconds();
-        const double per_unit = ms / double(std::max<uint64_t>(drawn, 1));
+        const double per_unit = ms / double(drawn);
         m_ms_per_unit = m_ms_per_unit > 0.0 ? 0.7 * m_ms_per_unit + 0.3 * per_unit : per_unit;
-        m_stats.add_vpls(to - from);
-        if (m_cpu) m_cpu->pace(to, integrator::Pacing::OpenEnded);
+        m_scale = m_replay->scale();
+        m_stats.add_vpls(size_t(m_integrator.stats().vpls - vpls));
         if (fixed) break;
     }
 }
 
 void PreviewApp::update_cpu_image(bool force) {
-    if (!m_cpu || (!force && m_cpu_timer.seconds() < kHudInterval)) return;
+    if (!m_cpu_on || (!force && m_cpu_timer.seconds() < kHudInterval)) return;
     m_cpu_timer.reset();
-    m_present.set_cpu_image(m_cpu->snapshot(int(m_render_width), int(m_render_height)));
-}
-
-// scale · Σ + emission + the CPU estimators' image: what the window shows at rest.
-Image PreviewApp::resolved() {
-    Image image = m_renderer.resolve(m_scale);
-    if (m_cpu) {
-        const Image cpu = m_cpu->snapshot(image.width(), image.height());
-        for (size_t i = 0; i < image.pixels().size(); ++i)
-            image.pixels()[i] += cpu.pixels()[i];
-    }
-    return image;
+    m_present.set_cpu_image(m_integrator.cpu_image());
 }
 
 void PreviewApp::update_hud(bool force) {
@@ -324,22 +307,23 @@ void PreviewApp::update_hud(bool force) {
     const bool chain = m_history != m_mc_history.get();
     const std::string name =
         m_sampler == "mc" || chain ? m_sampler : m_sampler + " (mc while moving)";
-    std::vector<std::string> lines = m_stats.hud_lines(
-        name, chain, m_render_width, m_render_height, m_history->segment_begin(m_replayed),
-        m_history->work_done(), clamp(), m_exposure, m_history->statistics(),
-        m_history->exhausted() && m_replayed == m_history->segments());
+    std::vector<std::string> lines =
+        m_stats.hud_lines(name, chain, m_render_width, m_render_height, m_replay->vpls_total(),
+                          m_history->work_done(), clamp(), m_exposure, m_history->statistics(),
+                          m_replay->converged());
     m_present.set_hud(m_font.render(lines, 8, 8, m_render_width > 16 ? m_render_width - 16 : 0));
 }
 
 void PreviewApp::save(const std::string& path, bool png_from_display) {
     if (lower_extension(path) == ".exr") {
-        write_exr(resolved(), path);
+        // scale · Σ + emission + the CPU estimators' image: what the window shows at rest.
+        write_exr(m_integrator.image(), path);
     } else if (png_from_display) {
         uint32_t w = 0, h = 0;
         const std::vector<uint8_t> rgba = m_present.captured(w, h);
         write_rgba_png(path, rgba, w, h);
     } else {
-        write_png(resolved(), path, m_exposure);
+        write_png(m_integrator.image(), path, m_exposure);
     }
     if (!m_options.quiet) std::printf("preview: wrote %s\n", path.c_str());
 }
@@ -370,10 +354,9 @@ int PreviewApp::run(const Timer& start) {
         const double shaded = phase.seconds();
         update_hud(moving || refine);
         const bool last = m_options.frames > 0 && frame + 1 == m_options.frames;
-        if (last && !m_options.screenshot.empty() && m_cpu) {
+        if (last && !m_options.screenshot.empty() && m_cpu_on) {
             // The passes `mvpl render` runs for the VPLs shaded, all of them: its image.
-            m_cpu->pace(m_history->segment_begin(m_replayed), integrator::Pacing::Fixed);
-            m_present.set_cpu_image(m_cpu->finish(true, int(m_render_width), int(m_render_height)));
+            m_present.set_cpu_image(m_integrator.finish_cpu(integrator::Pacing::Fixed));
         } else {
             update_cpu_image(moving || refine);
         }
@@ -385,7 +368,8 @@ int PreviewApp::run(const Timer& start) {
         params.hud = m_options.hud;
         gpu::SwapchainFrame sc;
         if (m_swapchain.begin_frame(width, height, sc)) {
-            m_present.record(sc, m_renderer.accumulation(), m_renderer.emission(), params, capture);
+            const render::VplRenderer& renderer = *m_integrator.renderer();
+            m_present.record(sc, renderer.accumulation(), renderer.emission(), params, capture);
             m_swapchain.end_frame();
             const double seconds = frame_timer.seconds();
             // The first frame is the first image (reported on its own), not a camera move.
@@ -410,8 +394,7 @@ int PreviewApp::run(const Timer& start) {
             save(m_options.screenshot, false);  // no image to present to: resolve instead
         }
         // A converged picture and no input: sleep instead of spinning.
-        if (m_options.frames == 0 && m_history->exhausted() && m_replayed == m_history->segments())
-            m_window.wait(0.05);
+        if (m_options.frames == 0 && m_replay->converged()) m_window.wait(0.05);
     }
     for (const std::string& message : m_context.validation_messages())
         std::fprintf(stderr, "mvpl: validation: %s\n", message.c_str());

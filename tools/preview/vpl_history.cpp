@@ -28,4 +28,18 @@ bool VplHistory::ensure(size_t segment, uint64_t work) {
     return true;
 }
 
+void HistoryReplay::next(uint64_t work, std::vector<light::Vpl>& out) {
+    const size_t from = m_history.segment_begin(m_replayed);
+    uint64_t drawn = 0;
+    while (drawn < work && m_history.ensure(m_replayed, work - drawn)) {
+        const VplSegment& segment = m_history.segment(m_replayed++);
+        m_scale = segment.scale;
+        drawn += segment.work;
+    }
+    m_work += drawn;
+    const std::vector<light::Vpl>& vpls = m_history.vpls();  // after ensure(): it may grow
+    out.insert(out.end(), vpls.begin() + std::ptrdiff_t(from),
+               vpls.begin() + std::ptrdiff_t(m_history.segment_begin(m_replayed)));
+}
+
 }  // namespace mvpl::preview

@@ -44,4 +44,25 @@ private:
     std::vector<VplSegment> m_segments;
 };
 
+// A history as the VPL stream of one estimate (integrator::VplIntegrator::begin): its segments
+// from the first, whole, then new ones drawn as asked, so that any prefix is an estimate.
+class HistoryReplay : public sampler::VplStream {
+public:
+    explicit HistoryReplay(VplHistory& history) : m_history(history) {}
+
+    void next(uint64_t work, std::vector<light::Vpl>& out) override;
+    double scale() const override { return m_scale; }
+    uint64_t work_done() const override { return m_work; }
+    std::string statistics() const override { return m_history.statistics(); }
+    uint64_t vpls_total() const override { return m_history.segment_begin(m_replayed); }
+    // Every segment replayed and the sampler asked no more: the picture has converged.
+    bool converged() const { return m_history.exhausted() && m_replayed == m_history.segments(); }
+
+private:
+    VplHistory& m_history;
+    size_t m_replayed = 0;  // segments
+    uint64_t m_work = 0;
+    double m_scale = 0.0;
+};
+
 }  // namespace mvpl::preview

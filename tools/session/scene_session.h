@@ -7,6 +7,7 @@
 
 #include "engine/core/image.h"
 #include "engine/core/timer.h"
+#include "engine/integrator/scene_view.h"
 #include "engine/light/light_sampler.h"
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/environment_choice.h"
@@ -34,6 +35,10 @@ public:
     const light::LightSampler& lights() const { return m_lights; }
     // The scene's own camera (the one in the file, or one framing a bare mesh).
     const scene::Camera& camera() const { return m_scene.camera; }
+    // What an estimate needs of it, seen from `camera` (default: camera()).
+    integrator::SceneView view(const scene::Camera* camera = nullptr) const {
+        return {&m_scene, &m_accel, &m_lights, camera ? camera : &m_scene.camera};
+    }
     // Set-up times (`mvpl bench` reports them apart): loading, the BVH, the lights.
     double load_seconds() const { return m_load_seconds; }
     double bvh_seconds() const { return m_bvh_seconds; }
