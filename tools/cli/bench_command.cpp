@@ -19,10 +19,10 @@
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
 #include "engine/gpu/memory.h"
+#include "engine/integrator/vpl_integrator.h"
 #include "engine/light/chain_options.h"
-#include "engine/render/vpl_renderer.h"
-#include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/sampler/monte_carlo_stream.h"
+#include "engine/sampler/recorded_vpl_stream.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/bench_report.h"
 #include "tools/cli/commands.h"
@@ -62,56 +62,57 @@ render::RenderOptions render_options(const BenchConfig& c, float clamp, bool sha
     return ro;
 }
 
-// This rank's VPLs (all of them on one process), each one's index in the one-process order
-// (empty on one process), and the job's VPL count.
-struct Share {
-    light::VplSet vpls;
-    std::vector<uint64_t> index;
-    uint64_t total = 0;
-};
+// The VPLs of mc.paths light paths (this rank's share under mpirun, the ranks sharing the paths
+// as `mvpl render` does), sampled once a repeat and shaded with every configuration.
+sampler::VplRecording sample(const session::SceneSession& session, sampler::MonteCarloOptions mc,
+                             cluster::Cluster& ranks) {
+    if (ranks.size() > 1) mc.cluster = &ranks;
+    sampler::MonteCarloStream stream(session.scene(), session.accel(), session.lights(), mc);
+    return sampler::record(stream, mc.paths);
+}
 
-Share sample(const session::SceneSession& session, const sampler::MonteCarloOptions& mc,
-             cluster::Cluster& ranks) {
-    Share share;
-    if (ranks.size() == 1) {
-        share.vpls = sampler::MonteCarloSampler(session.scene(), session.accel(), session.lights())
-                         .generate(mc);
-    } else {
-        sampler::MonteCarloOptions o = mc;
-        o.cluster = &ranks;
-        sampler::MonteCarloStream stream(session.scene(), session.accel(), session.lights(), o);
-        stream.next(mc.paths, share.vpls.vpls);
-        share.vpls.scale = stream.scale();
-        share.index.assign(stream.last_index().begin(), stream.last_index().end());
-    }
-    std::vector<uint64_t> total(1, share.vpls.vpls.size());
-    if (ranks.size() > 1) ranks.sum_all(total);
-    share.total = total[0];
-    return share;
+// The job's GPU times and work, summed over the ranks, so that per VPL they are the job's cost.
+void sum_over_ranks(RenderSample& s, cluster::Cluster& ranks) {
+    std::vector<double> sums{s.g_buffer_ms,
+                             s.shadow_ms,
+                             s.shading_ms,
+                             double(s.batches),
+                             double(s.shadow_triangles),
+                             double(s.g_buffers),
+                             double(s.shadow_front_only_triangles)};
+    ranks.sum_all(sums);
+    s.g_buffer_ms = sums[0];
+    s.shadow_ms = sums[1];
+    s.shading_ms = sums[2];
+    s.batches = uint32_t(sums[3]);
+    s.shadow_triangles = uint64_t(sums[4]);
+    s.g_buffers = uint32_t(sums[5]);
+    s.shadow_front_only_triangles = uint64_t(sums[6]);
+}
+
+// The estimate a configuration renders: the recorded VPLs alone (no compensation, no caustics:
+// bench measures the VPL shading).
+integrator::Estimate estimate_of(const BenchConfig& config, float clamp, bool shadows) {
+    integrator::Estimate e;
+    e.render = render_options(config, clamp, shadows);
+    e.compensate = false;
+    e.caustics = false;
+    return e;
 }
 
 // One progressive render of all VPLs; over ranks, from a meeting of all to rank 0's image.
-RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& camera,
-                         const Share& share, const BenchConfig& config, float clamp, bool shadows,
+RenderSample render_once(integrator::VplIntegrator& integrator, const integrator::SceneView& view,
+                         const sampler::VplRecording& vpls, const integrator::Estimate& estimate,
                          cluster::Cluster& ranks) {
     cluster::together(ranks, [] {});
     Timer wall;
-    Image image;
-    cluster::together(ranks, [&] {
-        renderer.begin(camera, render_options(config, clamp, shadows));
-        renderer.accumulate(share.vpls.vpls, share.index);
-        // The read-back costs too.
-        image = ranks.size() == 1 ? renderer.resolve(share.vpls.scale) : renderer.contributions();
-    });
-    if (ranks.size() > 1) {
-        ranks.sum_to_root(image.channels());
-        cluster::together(ranks, [&] {
-            if (ranks.root()) image = renderer.resolve(share.vpls.scale, image, share.total);
-        });
-    }
+    integrator.begin(view, estimate, integrator::Pacing::Fixed,
+                     std::make_unique<sampler::RecordedVplStream>(vpls));
+    integrator.advance(vpls.work);
+    const Image image = integrator.image();  // the read-back costs too
     RenderSample s;
     s.wall_s = wall.seconds();
-    const render::RenderTimings& t = renderer.timings();
+    const render::RenderTimings& t = integrator.renderer()->timings();
     s.g_buffer_ms = t.g_buffer_ms;
     s.shadow_ms = t.shadow_ms;
     s.shading_ms = t.shading_ms;
@@ -123,24 +124,7 @@ RenderSample render_once(render::VplRenderer& renderer, const scene::Camera& cam
     s.g_buffers = t.g_buffers;
     s.chain_ms = t.chain_ms;
     s.chain_rays = t.chain_rays;
-    if (ranks.size() > 1) {
-        // GPU time and work summed over the ranks, so that per VPL they are the job's cost.
-        std::vector<double> sums{s.g_buffer_ms,
-                                 s.shadow_ms,
-                                 s.shading_ms,
-                                 double(s.batches),
-                                 double(s.shadow_triangles),
-                                 double(s.g_buffers),
-                                 double(s.shadow_front_only_triangles)};
-        ranks.sum_all(sums);
-        s.g_buffer_ms = sums[0];
-        s.shadow_ms = sums[1];
-        s.shading_ms = sums[2];
-        s.batches = uint32_t(sums[3]);
-        s.shadow_triangles = uint64_t(sums[4]);
-        s.g_buffers = uint32_t(sums[5]);
-        s.shadow_front_only_triangles = uint64_t(sums[6]);
-    }
+    if (ranks.size() > 1) sum_over_ranks(s, ranks);
     return s;
 }
 
@@ -167,214 +151,248 @@ void add_examples(ArgParser& parser) {
         "the glossy scene's throughput without its specular chains");
 }
 
-}  // namespace
-
-int run_bench(const Args& args) {
+// What `mvpl bench` was asked.
+struct BenchArgs {
     std::string scene_path;
     BenchConfig config;
     uint64_t paths = 256;
     int repeat = 3;
     sampler::MonteCarloOptions mc;
-    RendererArgs renderer_args;
+    RendererArgs renderer;
     std::string json_path;
     bool sweep = false, quiet = false, no_shadows = false;
-    ArgParser parser("bench",
-                     "Measures VPL throughput on SCENE: light-path generation, the shadow and\n"
-                     "shading passes (GPU timestamps), end to end, start-up and peak memory.\n"
-                     "Every number is the median of --repeat runs.");
-    parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .ply, .obj)");
-    parser.add_resolution("--res", &config.width, &config.height, "image size");
-    parser.add_uint64("--vpls", &paths, "light paths to trace, one VPL per bounce");
-    parser.add_int("--repeat", &repeat, "runs per measurement; medians are reported");
-    parser.add_flag("--sweep", &sweep,
+    CameraArgs camera;
+    EnvironmentArgs environment;
+    SceneFileArgs scene_file;
+};
+
+void add_options(ArgParser& parser, BenchArgs& a) {
+    parser.add_positional("SCENE", &a.scene_path, "scene (.gltf, .glb, .ply, .obj)");
+    parser.add_resolution("--res", &a.config.width, &a.config.height, "image size");
+    parser.add_uint64("--vpls", &a.paths, "light paths to trace, one VPL per bounce");
+    parser.add_int("--repeat", &a.repeat, "runs per measurement; medians are reported");
+    parser.add_flag("--sweep", &a.sweep,
                     "also render with batch 8..128 × shadow faces 128², 256², 512², and with "
                     "each lever of issue 14 switched (shadow culling, proxy, hemicubes, VPL "
                     "culling, interleave)");
-    parser.add_flag("--no-shadows", &no_shadows,
+    parser.add_flag("--no-shadows", &a.no_shadows,
                     "every VPL unshadowed: no shadow pass, no cube-map lookups in shading (to "
                     "measure what visibility costs)");
-    parser.add_string("--json", &json_path, "write the results as JSON to this file", "FILE");
-    parser.add_flag("--quiet", &quiet, "no progress bar and no table");
-    add_renderer_options(parser, renderer_args);
-    add_max_depth_option(parser, mc.tracer.max_depth);
-    add_seed_option(parser, mc.seed);
-    CameraArgs camera;
-    add_camera_options(parser, camera);
-    EnvironmentArgs environment;
-    add_environment_options(parser, environment);
-    SceneFileArgs scene_file;
-    add_scene_file_options(parser, scene_file);
+    parser.add_string("--json", &a.json_path, "write the results as JSON to this file", "FILE");
+    parser.add_flag("--quiet", &a.quiet, "no progress bar and no table");
+    add_renderer_options(parser, a.renderer);
+    add_max_depth_option(parser, a.mc.tracer.max_depth);
+    add_seed_option(parser, a.mc.seed);
+    add_camera_options(parser, a.camera);
+    add_environment_options(parser, a.environment);
+    add_scene_file_options(parser, a.scene_file);
     add_examples(parser);
-    cluster::Cluster& ranks = cluster::world();
-    bool parsed = false;
-    cluster::together(ranks, [&] { parsed = parser.parse(args); });
-    if (!parsed) return 0;
-    if (!ranks.root()) quiet = true;
-    config.shadow_resolution = renderer_args.shadow_res;
-    config.batch = renderer_args.batch;
-    config.shadow_culling = !renderer_args.no_shadow_culling;
-    config.shadow_proxy = !renderer_args.no_shadow_proxy;
-    config.shadow_lod = !renderer_args.no_shadow_lod;
-    config.backface_culling = !renderer_args.no_backface_culling;
-    config.jitter = !renderer_args.no_jitter;
-    config.batches_per_position = renderer_args.batches_per_position;
+}
+
+// The main configuration from the renderer's options.
+void configure(BenchArgs& a) {
+    BenchConfig& config = a.config;
+    const RendererArgs& r = a.renderer;
+    config.shadow_resolution = r.shadow_res;
+    config.batch = r.batch;
+    config.shadow_culling = !r.no_shadow_culling;
+    config.shadow_proxy = !r.no_shadow_proxy;
+    config.shadow_lod = !r.no_shadow_lod;
+    config.backface_culling = !r.no_backface_culling;
+    config.jitter = !r.no_jitter;
+    config.batches_per_position = r.batches_per_position;
     // The throughput of the levers: interleaving on unless asked otherwise, chains or not (the
     // sweep shows it off); `mvpl render` leaves it off where chains are traced (option_groups.h).
-    config.interleave =
-        renderer_args.interleave > 0 ? renderer_args.interleave : RendererArgs::kDefaultInterleave;
-    config.hemicube = !renderer_args.no_hemicube;
-    config.vpl_culling = !renderer_args.no_vpl_culling;
-    config.chain_roughness = renderer_args.no_chains ? -1.0f : renderer_args.chain_roughness;
-    config.max_depth = mc.tracer.max_depth;
-    config.vsl_radius = renderer_args.vsl();
-    const float clamp = renderer_args.clamp;
-    mc.paths = paths;
-    std::ofstream json_out;
-    cluster::together(ranks, [&] {
-        if (paths < 1 || paths > (uint64_t(1) << 24))
-            throw UsageError("bench: --vpls must be in 1..2^24");
-        if (repeat < 1 || repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
-        if (!json_path.empty() && ranks.root()) json_out = open_output(json_path);
-    });
+    config.interleave = r.interleave > 0 ? r.interleave : RendererArgs::kDefaultInterleave;
+    config.hemicube = !r.no_hemicube;
+    config.vpl_culling = !r.no_vpl_culling;
+    config.chain_roughness = r.no_chains ? -1.0f : r.chain_roughness;
+    config.max_depth = a.mc.tracer.max_depth;
+    config.vsl_radius = r.vsl();
+    a.mc.paths = a.paths;
+}
 
-    std::vector<BenchConfig> sweep_configs;
-    size_t devices_sweep = SIZE_MAX;  // the sweep's configuration with the other device count
-    if (sweep) {
-        for (const int r : kSweepShadowResolutions) {
-            for (const int b : kSweepBatches) {
-                BenchConfig c = config;
-                c.shadow_resolution = r;
-                c.batch = b;
-                sweep_configs.push_back(c);
-            }
+// --sweep: the batch sizes × shadow resolutions, then each lever switched at the main
+// configuration, then (at *devices_sweep) the main configuration with the other device count.
+std::vector<BenchConfig> sweep_configs(const BenchConfig& config, size_t* devices_sweep) {
+    std::vector<BenchConfig> configs;
+    for (const int r : kSweepShadowResolutions) {
+        for (const int b : kSweepBatches) {
+            BenchConfig c = config;
+            c.shadow_resolution = r;
+            c.batch = b;
+            configs.push_back(c);
         }
-        // Each lever on and off at the main configuration.
+    }
+    auto with = [&](auto change) {
         BenchConfig c = config;
-        c.shadow_culling = !config.shadow_culling;
-        sweep_configs.push_back(c);
-        c = config;
-        c.shadow_proxy = !config.shadow_proxy;
-        sweep_configs.push_back(c);
-        c = config;
-        c.hemicube = !config.hemicube;
-        sweep_configs.push_back(c);
-        c = config;
-        c.vpl_culling = !config.vpl_culling;
-        sweep_configs.push_back(c);
-        c = config;
-        c.interleave = config.interleave == 1 ? kSweepInterleave : 1;
-        sweep_configs.push_back(c);
-        c = config;
-        c.chain_roughness = config.chain_roughness >= 0.0f ? -1.0f : light::kDefaultChainRoughness;
-        sweep_configs.push_back(c);
-        c = config;
-        c.shadow_lod = !config.shadow_lod;
-        sweep_configs.push_back(c);
-        c = config;
-        c.backface_culling = !config.backface_culling;
-        sweep_configs.push_back(c);
-        // One device against two (or the other way round): the renderer's devices are known
-        // once the context is (RendererArgs::devices_for), and this configuration gets the other
-        // count, on a renderer of its own.
-        devices_sweep = sweep_configs.size();
-        sweep_configs.push_back(config);
-    }
+        change(c);
+        configs.push_back(c);
+    };
+    with([](BenchConfig& c) { c.shadow_culling = !c.shadow_culling; });
+    with([](BenchConfig& c) { c.shadow_proxy = !c.shadow_proxy; });
+    with([](BenchConfig& c) { c.hemicube = !c.hemicube; });
+    with([](BenchConfig& c) { c.vpl_culling = !c.vpl_culling; });
+    with([](BenchConfig& c) { c.interleave = c.interleave == 1 ? kSweepInterleave : 1; });
+    with([](BenchConfig& c) {
+        c.chain_roughness = c.chain_roughness >= 0.0f ? -1.0f : light::kDefaultChainRoughness;
+    });
+    with([](BenchConfig& c) { c.shadow_lod = !c.shadow_lod; });
+    with([](BenchConfig& c) { c.backface_culling = !c.backface_culling; });
+    // One device against two (or the other way round): the renderer's devices are known once
+    // the context is (RendererArgs::devices_for), and this configuration gets the other count,
+    // on an integrator of its own.
+    *devices_sweep = configs.size();
+    configs.push_back(config);
+    return configs;
+}
 
-    BenchReport report;
-    report.scene = scene_path;
-    report.repeat = repeat;
-    report.shadows = !no_shadows;
-    report.paths = paths;
-    std::vector<double> load_s, bvh_s, context_s, renderer_s, sampling_s;
-    std::vector<RenderSample> main_samples;
-    std::vector<std::vector<RenderSample>> sweep_samples(sweep_configs.size());
-    Progress progress("bench", int64_t(repeat) * int64_t(1 + sweep_configs.size()), quiet);
-    for (int k = 0; k < repeat; ++k) {
-        // Everything from scratch each repeat, so that start-up is measured K times too.
-        std::unique_ptr<session::SceneSession> session;
-        std::unique_ptr<gpu::Context> context;
-        std::unique_ptr<render::VplRenderer> renderer;
-        std::unique_ptr<render::VplRenderer> other_devices;  // the sweep's other device count
-        cluster::together(ranks, [&] {
-            session = std::make_unique<session::SceneSession>(
-                scene_path, camera.choice, environment.choice, scene_file.options);
-            if (renderer_args.batches_per_position == 0) {
-                const uint32_t b = renderer_args.batches_per_position_for(session->scene());
-                config.batches_per_position = int(b);
-                for (BenchConfig& c : sweep_configs)
-                    c.batches_per_position = int(b);
-            }
-            load_s.push_back(session->load_seconds());
-            bvh_s.push_back(session->bvh_seconds());
-            if (k == 0 && ranks.root()) session->warn_if_no_light("nothing to bench");
-            Timer t;
-            context = std::make_unique<gpu::Context>();
-            context_s.push_back(t.seconds());
-            t.reset();
-            // With the BVH: specular chains, where the scene has glossy surfaces.
-            const uint32_t devices = renderer_args.devices_for(context->device_info());
-            config.devices = int(devices);
-            for (size_t i = 0; i < sweep_configs.size(); ++i)
-                sweep_configs[i].devices = i == devices_sweep ? (devices == 1 ? 2 : 1) : devices;
-            renderer = std::make_unique<render::VplRenderer>(*context, session->scene(),
-                                                             &session->accel(), devices);
-            // The first begin() builds the passes: pipelines and shader compilation belong to
-            // start-up, not to the throughput of later renders.
-            renderer->begin(session->scene().camera, render_options(config, clamp, !no_shadows));
-            renderer_s.push_back(t.seconds());
-            if (devices_sweep < sweep_configs.size()) {
-                const BenchConfig& c = sweep_configs[devices_sweep];
-                other_devices = std::make_unique<render::VplRenderer>(
-                    *context, session->scene(), &session->accel(), uint32_t(c.devices));
-                other_devices->begin(session->scene().camera,
-                                     render_options(c, clamp, !no_shadows));
-            }
-        });
-        const scene::Scene& scene = session->scene();
+// One repeat's scene, device and integrators, built from scratch so that start-up is measured
+// every repeat too.
+struct BenchSetup {
+    std::unique_ptr<session::SceneSession> session;
+    std::unique_ptr<gpu::Context> context;
+    std::unique_ptr<integrator::VplIntegrator> integrator;
+    std::unique_ptr<integrator::VplIntegrator> other_devices;  // the sweep's other device count
+};
 
-        cluster::together(ranks, [] {});
-        Timer t;
-        const Share vpls = sample(*session, mc, ranks);
-        sampling_s.push_back(t.seconds());
-        report.vpls = vpls.total;
-        report.triangles = scene.triangle_count();
-        report.device = context->device_info().name;
+// The start-up times of each repeat.
+struct StartupTimes {
+    std::vector<double> load_s, bvh_s, context_s, renderer_s;
+};
 
-        main_samples.push_back(
-            render_once(*renderer, scene.camera, vpls, config, clamp, !no_shadows, ranks));
-        progress.advance();
-        for (size_t i = 0; i < sweep_configs.size(); ++i) {
-            render::VplRenderer& r = i == devices_sweep ? *other_devices : *renderer;
-            sweep_samples[i].push_back(
-                render_once(r, scene.camera, vpls, sweep_configs[i], clamp, !no_shadows, ranks));
-            progress.advance();
+BenchSetup set_up(BenchArgs& a, std::vector<BenchConfig>& sweep, size_t devices_sweep,
+                  StartupTimes& times, bool first, cluster::Cluster& ranks) {
+    BenchSetup b;
+    const float clamp = a.renderer.clamp;
+    cluster::together(ranks, [&] {
+        b.session = std::make_unique<session::SceneSession>(
+            a.scene_path, a.camera.choice, a.environment.choice, a.scene_file.options);
+        if (a.renderer.batches_per_position == 0) {
+            const int per = int(a.renderer.batches_per_position_for(b.session->scene()));
+            a.config.batches_per_position = per;
+            for (BenchConfig& c : sweep)
+                c.batches_per_position = per;
         }
-        report.peak_device_bytes =
-            std::max(report.peak_device_bytes, renderer->peak_device_bytes());
+        times.load_s.push_back(b.session->load_seconds());
+        times.bvh_s.push_back(b.session->bvh_seconds());
+        if (first && ranks.root()) b.session->warn_if_no_light("nothing to bench");
+        Timer t;
+        b.context = std::make_unique<gpu::Context>();
+        times.context_s.push_back(t.seconds());
+        const uint32_t devices = a.renderer.devices_for(b.context->device_info());
+        a.config.devices = int(devices);
+        for (size_t i = 0; i < sweep.size(); ++i)
+            sweep[i].devices = i == devices_sweep ? (devices == 1 ? 2 : 1) : int(devices);
+    });
+    const scene::Camera& camera = b.session->scene().camera;
+    Timer t;
+    // With the BVH: specular chains, where the scene has glossy surfaces. The first begin()
+    // builds the passes: pipelines and shader compilation belong to start-up, not to the
+    // throughput of later renders.
+    b.integrator = std::make_unique<integrator::VplIntegrator>(b.session->view(), b.context.get(),
+                                                               uint32_t(a.config.devices), &ranks);
+    cluster::together(ranks, [&] {
+        b.integrator->renderer()->begin(camera, render_options(a.config, clamp, !a.no_shadows));
+    });
+    times.renderer_s.push_back(t.seconds());
+    if (devices_sweep < sweep.size()) {
+        const BenchConfig& c = sweep[devices_sweep];
+        b.other_devices = std::make_unique<integrator::VplIntegrator>(
+            b.session->view(), b.context.get(), uint32_t(c.devices), &ranks);
+        cluster::together(ranks, [&] {
+            b.other_devices->renderer()->begin(camera, render_options(c, clamp, !a.no_shadows));
+        });
     }
-    progress.finish();
+    return b;
+}
 
-    report.scene_load_s = median(load_s);
-    report.bvh_build_s = median(bvh_s);
-    report.context_s = median(context_s);
-    report.renderer_s = median(renderer_s);
-    report.sampling_s = median(sampling_s);
-    report.main = summarise(config, main_samples, report.vpls, report.sampling_s);
-    for (size_t i = 0; i < sweep_configs.size(); ++i) {
-        report.sweep.push_back(
-            summarise(sweep_configs[i], sweep_samples[i], report.vpls, report.sampling_s));
-    }
-    report.peak_host_bytes = peak_host_bytes();
-
-    report.ranks = ranks.size();
+// Writes the JSON (opened before the runs) and prints the table, on rank 0.
+void report_results(const BenchArgs& a, const BenchReport& report, std::ofstream& json_out,
+                    cluster::Cluster& ranks) {
     cluster::together(ranks, [&] {
         if (json_out.is_open()) {
             json_out << bench_json(report);
             json_out.close();
-            if (!json_out) throw InputError(json_path, "cannot write the benchmark JSON");
+            if (!json_out) throw InputError(a.json_path, "cannot write the benchmark JSON");
         }
-        if (!quiet) std::fputs(bench_table(report).c_str(), stdout);
+        if (!a.quiet) std::fputs(bench_table(report).c_str(), stdout);
     });
+}
+
+}  // namespace
+
+int run_bench(const Args& args) {
+    BenchArgs a;
+    ArgParser parser("bench",
+                     "Measures VPL throughput on SCENE: light-path generation, the shadow and\n"
+                     "shading passes (GPU timestamps), end to end, start-up and peak memory.\n"
+                     "Every number is the median of --repeat runs.");
+    add_options(parser, a);
+    cluster::Cluster& ranks = cluster::world();
+    bool parsed = false;
+    cluster::together(ranks, [&] { parsed = parser.parse(args); });
+    if (!parsed) return 0;
+    if (!ranks.root()) a.quiet = true;
+    configure(a);
+    std::ofstream json_out;
+    cluster::together(ranks, [&] {
+        if (a.paths < 1 || a.paths > (uint64_t(1) << 24))
+            throw UsageError("bench: --vpls must be in 1..2^24");
+        if (a.repeat < 1 || a.repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
+        if (!a.json_path.empty() && ranks.root()) json_out = open_output(a.json_path);
+    });
+    size_t devices_sweep = SIZE_MAX;
+    std::vector<BenchConfig> sweep =
+        a.sweep ? sweep_configs(a.config, &devices_sweep) : std::vector<BenchConfig>{};
+
+    BenchReport report;
+    report.scene = a.scene_path;
+    report.repeat = a.repeat;
+    report.shadows = !a.no_shadows;
+    report.paths = a.paths;
+    StartupTimes startup;
+    std::vector<double> sampling_s;
+    std::vector<RenderSample> main_samples;
+    std::vector<std::vector<RenderSample>> sweep_samples(sweep.size());
+    Progress progress("bench", int64_t(a.repeat) * int64_t(1 + sweep.size()), a.quiet);
+    const float clamp = a.renderer.clamp;
+    for (int k = 0; k < a.repeat; ++k) {
+        BenchSetup b = set_up(a, sweep, devices_sweep, startup, k == 0, ranks);
+        cluster::together(ranks, [] {});
+        Timer t;
+        const sampler::VplRecording vpls = sample(*b.session, a.mc, ranks);
+        sampling_s.push_back(t.seconds());
+        report.vpls = vpls.vpls_total;
+        report.triangles = b.session->scene().triangle_count();
+        report.device = b.context->device_info().name;
+        const integrator::SceneView view = b.session->view();
+        main_samples.push_back(render_once(*b.integrator, view, vpls,
+                                           estimate_of(a.config, clamp, !a.no_shadows), ranks));
+        progress.advance();
+        for (size_t i = 0; i < sweep.size(); ++i) {
+            integrator::VplIntegrator& r = i == devices_sweep ? *b.other_devices : *b.integrator;
+            sweep_samples[i].push_back(
+                render_once(r, view, vpls, estimate_of(sweep[i], clamp, !a.no_shadows), ranks));
+            progress.advance();
+        }
+        report.peak_device_bytes =
+            std::max(report.peak_device_bytes, b.integrator->renderer()->peak_device_bytes());
+    }
+    progress.finish();
+
+    report.scene_load_s = median(startup.load_s);
+    report.bvh_build_s = median(startup.bvh_s);
+    report.context_s = median(startup.context_s);
+    report.renderer_s = median(startup.renderer_s);
+    report.sampling_s = median(sampling_s);
+    report.main = summarise(a.config, main_samples, report.vpls, report.sampling_s);
+    for (size_t i = 0; i < sweep.size(); ++i)
+        report.sweep.push_back(
+            summarise(sweep[i], sweep_samples[i], report.vpls, report.sampling_s));
+    report.peak_host_bytes = peak_host_bytes();
+    report.ranks = ranks.size();
+    report_results(a, report, json_out, ranks);
     return 0;
 }
 
