@@ -8,5 +8,8 @@
 namespace mvpl::light {
 
 inline constexpr int kDefaultMaxDepth = 6;
+// Russian roulette from this many segments on, in every estimator that traces paths (Mitsuba's
+// rrDepth default, as the references were rendered).
+inline constexpr int kDefaultRrDepth = 5;
 
 }  // namespace mvpl::light

@@ -49,7 +49,7 @@ struct MaterialGraph {
     // Blend keeps a hit with probability alpha (hashed transparency: alpha_kept).
     NodeInput alpha;
     scene::AlphaMode alpha_mode = scene::AlphaMode::Opaque;
-    float alpha_cutoff = 0.5f;
+    float alpha_cutoff = scene::kDefaultAlphaCutoff;
     bool masked() const { return alpha_mode == scene::AlphaMode::Mask && alpha.node >= 0; }
     bool blended() const { return alpha_mode == scene::AlphaMode::Blend && alpha.node >= 0; }
     // Hits on the surface are tested against its alpha (every ray, the G-buffer, shadow maps).

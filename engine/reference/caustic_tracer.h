@@ -47,6 +47,7 @@
 #include <memory>
 
 #include "engine/core/image.h"
+#include "engine/core/image_size.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/path_depth.h"
@@ -56,10 +57,10 @@
 namespace mvpl::reference {
 
 struct CausticOptions {
-    int width = 256;
-    int height = 256;
+    int width = int(kDefaultImageWidth);
+    int height = int(kDefaultImageHeight);
     int max_depth = light::kDefaultMaxDepth;  // of the whole path, camera included; < 0: unlimited
-    int rr_depth = 5;                         // as sampler::LightTracerOptions::rr_depth
+    int rr_depth = light::kDefaultRrDepth;    // as sampler::LightTracerOptions::rr_depth
     // The chains' class (light/path_partition.h): the same options the renderer's chains and the
     // light tracer's `specular` use. Disabled: only transmission and back sides.
     light::ChainOptions specular;

@@ -32,6 +32,7 @@
 #include <memory>
 
 #include "engine/core/image.h"
+#include "engine/core/image_size.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/path_depth.h"
@@ -43,14 +44,14 @@
 namespace mvpl::reference {
 
 struct CompensationOptions {
-    int width = 256;
-    int height = 256;
+    int width = int(kDefaultImageWidth);
+    int height = int(kDefaultImageHeight);
     float clamp = light::kDefaultClamp;  // d_min as a fraction of the scene's diagonal
     // The VPL image's virtual spherical lights (scene diagonals, light/virtual_sphere.h); 0
     // (--no-vsl): the whole BSDF is clamped and compensated.
     float vsl_radius = light::kDefaultVslRadius;
     int max_depth = light::kDefaultMaxDepth;  // of the whole path, camera included; < 0: unlimited
-    int rr_depth = 5;
+    int rr_depth = light::kDefaultRrDepth;
     // The renderer's specular chains (light/specular_chain.h): a pixel they continue is
     // compensated at the rough end of its chain, weighted by its throughput, where the VPLs light
     // it, and not at its glossy first vertex, whose reflection the chain carries all of.

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "engine/core/image.h"
+#include "engine/core/image_size.h"
 #include "engine/core/rng.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/path_depth.h"
@@ -14,14 +15,14 @@
 namespace mvpl::reference {
 
 struct PathTracerOptions {
-    int width = 256;
-    int height = 256;
+    int width = int(kDefaultImageWidth);
+    int height = int(kDefaultImageHeight);
     int spp = 64;
     // Mitsuba's max_depth: segments from the camera to the light (1 = emitters seen directly,
     // 2 = direct light only); negative = unlimited (Russian roulette ends the paths).
     int max_depth = light::kDefaultMaxDepth;
     // Russian roulette starts once a path has this many segments.
-    int rr_depth = 5;
+    int rr_depth = light::kDefaultRrDepth;
     uint64_t seed = 0;
     bool quiet = false;
 };

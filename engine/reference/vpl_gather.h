@@ -12,6 +12,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "engine/core/image_size.h"
 #include "engine/core/subpixel.h"
 #include "engine/light/path_depth.h"
 
@@ -25,8 +26,8 @@
 namespace mvpl::reference {
 
 struct GatherOptions {
-    int width = 256;
-    int height = 256;
+    int width = int(kDefaultImageWidth);
+    int height = int(kDefaultImageHeight);
     float clamp = light::kDefaultClamp;  // d_min as a fraction of the scene's diagonal
     // Radius of the virtual spherical lights, a fraction of the scene's diagonal, as
     // RenderOptions::vsl_radius (light/virtual_sphere.h); 0: point VPLs.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "engine/core/image.h"
+#include "engine/core/image_size.h"
 #include "engine/core/subpixel.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/virtual_sphere.h"
@@ -32,8 +33,8 @@ class Accel;
 namespace mvpl::render {
 
 struct RenderOptions {
-    uint32_t width = 256;
-    uint32_t height = 256;
+    uint32_t width = kDefaultImageWidth;
+    uint32_t height = kDefaultImageHeight;
     uint32_t shadow_resolution = 256;  // side of a shadow cube face in texels
     uint32_t batch = 32;               // VPLs per shadow/shading batch
     // d_min = clamp · scene diagonal, the distance below which the geometric term stops growing.

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "engine/core/color.h"
+#include "engine/core/image_size.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
@@ -27,8 +28,8 @@ namespace mvpl::sampler {
 struct ImportanceOptions {
     int points = 256;  // K camera rays (fewer points where rays miss the scene)
     // The image the points are spread over (its aspect decides the field of view).
-    int width = 256;
-    int height = 256;
+    int width = int(kDefaultImageWidth);
+    int height = int(kDefaultImageHeight);
     float clamp = light::kDefaultClamp;           // d_min / scene diagonal, as the renderer's
     float vsl_radius = light::kDefaultVslRadius;  // light/virtual_sphere.h, as the renderer's
     uint64_t seed = 0;                            // jitter inside the strata

@@ -4,6 +4,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/image_size.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
 #include "engine/sampler/metropolis_stream.h"
@@ -25,8 +26,8 @@ struct SamplerSettings {
     bool qmc = true;
     VplsPerPath per_path = VplsPerPath::All;
     // Metropolis (the image size and clamp also shape the importance points)
-    int width = 256;
-    int height = 256;
+    int width = int(kDefaultImageWidth);
+    int height = int(kDefaultImageHeight);
     float clamp = ImportanceOptions{}.clamp;
     float vsl_radius = ImportanceOptions{}.vsl_radius;
     // Defaults are MetropolisOptions' own (measured there), not copies.

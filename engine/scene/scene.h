@@ -24,6 +24,9 @@ enum class AlphaMode { Opaque, Mask, Blend };
 // radiance the surface shows; material/node_graph.h says what light transport does with it).
 enum class ShadingModel { MetalRough, SpecGloss, Unlit };
 
+// glTF 2.0 material.alphaCutoff's default.
+inline constexpr float kDefaultAlphaCutoff = 0.5f;
+
 struct Material {
     std::string name;
     // glTF pbrMetallicRoughness; the texture channels are multiplied into the factors.
@@ -62,7 +65,7 @@ struct Material {
     float thickness = 0.0f;
     bool double_sided = false;
     AlphaMode alpha_mode = AlphaMode::Opaque;
-    float alpha_cutoff = 0.5f;  // Mask only
+    float alpha_cutoff = kDefaultAlphaCutoff;  // Mask only
     ShadingModel shading = ShadingModel::MetalRough;
     // KHR_materials_pbrSpecularGlossiness: F0 colour (specularFactor times the texture's sRGB RGB)
     // and glossiness (glossinessFactor times the texture's linear A).

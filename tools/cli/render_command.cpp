@@ -9,6 +9,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/core/image_size.h"
 #include "engine/core/interrupt.h"
 #include "engine/core/subpixel.h"
 #include "engine/core/timer.h"
@@ -35,7 +36,7 @@ struct RenderArgs {
     std::string sampler_name = "mc";
     std::string per_path;  // empty: each sampler's default
     uint64_t paths = 1024;
-    int width = 256, height = 256;
+    int width = int(kDefaultImageWidth), height = int(kDefaultImageHeight);
     RendererArgs renderer;
     std::vector<std::string> outputs;
     float exposure = 0.0f;
