@@ -132,8 +132,8 @@ public:
 
 private:
     struct Chain;
-    struct BootstrapPaths;
-    struct Bootstrap;
+    struct BootstrapPaths;  // metropolis_bootstrap.cpp
+    struct Bootstrap;       // metropolis_bootstrap.h
     // I of `n` independent paths (this rank traces its share), the importance's point radiance set
     // from them.
     Bootstrap run_bootstrap(const scene::Scene& scene, const light::LightSampler& lights,
