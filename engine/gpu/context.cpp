@@ -34,26 +34,17 @@ void full_barrier(VkCommandBuffer cmd, VkPipelineStageFlags2 dst_stage, VkAccess
     vkCmdPipelineBarrier2(cmd, &dependency);
 }
 
-}  // namespace
+// Who asked for the validation layer ("" where nobody did), for its log.
+std::string validation_source(const ContextOptions& options) {
+    if (options.validation) return "the caller (ContextOptions::validation)";
+    if (validation_requested_by_environment()) return "MVPL_VALIDATION=1";
+    return "";
+}
 
-Context::Context(ContextOptions options)
-    : m_log(options.validation_log ? options.validation_log : std::make_shared<ValidationLog>()) {
-    m_options = options;
-    m_options.validation_log = m_log;
-    std::string validation_source;
-    if (options.validation)
-        validation_source = "the caller (ContextOptions::validation)";
-    else if (validation_requested_by_environment())
-        validation_source = "MVPL_VALIDATION=1";
-    m_instance =
-        std::make_unique<Instance>(validation_source, m_log.get(), options.instance_extensions);
-
-    const std::vector<VkPhysicalDevice> physical = m_instance->physical_devices();
-    std::vector<DeviceInfo> devices;
-    for (size_t i = 0; i < physical.size(); ++i)
-        devices.push_back(describe_device(physical[i], int(i)));
+// The index of the device to use: `requested`, or the default one when negative.
+int pick_device(const std::vector<DeviceInfo>& devices, int requested) {
     if (devices.empty()) throw GpuError("the Vulkan loader lists no device");
-    int index = options.device_index;
+    int index = requested;
     if (index < 0) {
         index = default_device_index(devices);
         if (index < 0) {
@@ -68,6 +59,38 @@ Context::Context(ContextOptions options)
                        devices[size_t(index)].name +
                        ") is not usable: " + devices[size_t(index)].unusable_reason());
     }
+    return index;
+}
+
+// The optional core features mvpl turns on where the device has them.
+VkPhysicalDeviceFeatures optional_core_features(const VkPhysicalDeviceFeatures& has) {
+    VkPhysicalDeviceFeatures core{};
+    core.imageCubeArray = has.imageCubeArray;  // the shadow cube-map array
+    core.independentBlend = has.independentBlend;
+    core.depthClamp = has.depthClamp;
+    core.samplerAnisotropy = has.samplerAnisotropy;
+    core.fragmentStoresAndAtomics = has.fragmentStoresAndAtomics;
+    core.shaderStorageImageReadWithoutFormat = has.shaderStorageImageReadWithoutFormat;
+    core.shaderStorageImageWriteWithoutFormat = has.shaderStorageImageWriteWithoutFormat;
+    core.multiDrawIndirect = has.multiDrawIndirect;
+    core.drawIndirectFirstInstance = has.drawIndirectFirstInstance;
+    return core;
+}
+
+}  // namespace
+
+Context::Context(ContextOptions options)
+    : m_log(options.validation_log ? options.validation_log : std::make_shared<ValidationLog>()) {
+    m_options = options;
+    m_options.validation_log = m_log;
+    m_instance = std::make_unique<Instance>(validation_source(options), m_log.get(),
+                                            options.instance_extensions);
+
+    const std::vector<VkPhysicalDevice> physical = m_instance->physical_devices();
+    std::vector<DeviceInfo> devices;
+    for (size_t i = 0; i < physical.size(); ++i)
+        devices.push_back(describe_device(physical[i], int(i)));
+    const int index = pick_device(devices, options.device_index);
     m_options.device_index = index;
     m_device_info = devices[size_t(index)];
     m_physical_device = physical[size_t(index)];
@@ -79,7 +102,19 @@ Context::Context(ContextOptions options)
         }
         m_presentable = true;
     }
+    create_device();
+    try {
+        vkGetDeviceQueue(m_device, m_queue_family, 0, &m_queue);
+        m_allocator = std::make_unique<MemoryAllocator>(m_physical_device, m_device);
+        create_submission_objects();
+    } catch (...) {
+        destroy();
+        throw;
+    }
+    set_debug_name(VK_OBJECT_TYPE_COMMAND_BUFFER, uint64_t(m_command_buffer), "submit_and_wait");
+}
 
+void Context::create_device() {
     // What the device offers, then the subset mvpl turns on: required ones are checked, optional
     // ones are enabled when present so that the passes can rely on a fixed baseline on desktops.
     VkPhysicalDeviceVulkan13Features has13{};
@@ -110,16 +145,7 @@ Context::Context(ContextOptions options)
     VkPhysicalDeviceFeatures2 use{};
     use.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
     use.pNext = &use12;
-    VkPhysicalDeviceFeatures& core = use.features;
-    core.imageCubeArray = has.features.imageCubeArray;  // the shadow cube-map array
-    core.independentBlend = has.features.independentBlend;
-    core.depthClamp = has.features.depthClamp;
-    core.samplerAnisotropy = has.features.samplerAnisotropy;
-    core.fragmentStoresAndAtomics = has.features.fragmentStoresAndAtomics;
-    core.shaderStorageImageReadWithoutFormat = has.features.shaderStorageImageReadWithoutFormat;
-    core.shaderStorageImageWriteWithoutFormat = has.features.shaderStorageImageWriteWithoutFormat;
-    core.multiDrawIndirect = has.features.multiDrawIndirect;
-    core.drawIndirectFirstInstance = has.features.drawIndirectFirstInstance;
+    use.features = optional_core_features(has.features);
 
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo queue_info{};
@@ -139,46 +165,39 @@ Context::Context(ContextOptions options)
     }
     vk_check(vkCreateDevice(m_physical_device, &device_info, nullptr, &m_device),
              "vkCreateDevice(" + m_device_info.name + ")");
+}
 
-    try {
-        vkGetDeviceQueue(m_device, m_queue_family, 0, &m_queue);
-        m_allocator = std::make_unique<MemoryAllocator>(m_physical_device, m_device);
+void Context::create_submission_objects() {
+    VkCommandPoolCreateInfo pool_info{};
+    pool_info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+    pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
+    pool_info.queueFamilyIndex = m_queue_family;
+    vk_check(vkCreateCommandPool(m_device, &pool_info, nullptr, &m_command_pool),
+             "vkCreateCommandPool");
+    VkCommandBufferAllocateInfo cmd_info{};
+    cmd_info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+    cmd_info.commandPool = m_command_pool;
+    cmd_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    cmd_info.commandBufferCount = 1;
+    vk_check(vkAllocateCommandBuffers(m_device, &cmd_info, &m_command_buffer),
+             "vkAllocateCommandBuffers");
+    VkFenceCreateInfo fence_info{};
+    fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+    vk_check(vkCreateFence(m_device, &fence_info, nullptr, &m_fence), "vkCreateFence");
 
-        VkCommandPoolCreateInfo pool_info{};
-        pool_info.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-        pool_info.flags = VK_COMMAND_POOL_CREATE_RESET_COMMAND_BUFFER_BIT;
-        pool_info.queueFamilyIndex = m_queue_family;
-        vk_check(vkCreateCommandPool(m_device, &pool_info, nullptr, &m_command_pool),
-                 "vkCreateCommandPool");
-        VkCommandBufferAllocateInfo cmd_info{};
-        cmd_info.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
-        cmd_info.commandPool = m_command_pool;
-        cmd_info.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
-        cmd_info.commandBufferCount = 1;
-        vk_check(vkAllocateCommandBuffers(m_device, &cmd_info, &m_command_buffer),
-                 "vkAllocateCommandBuffers");
-        VkFenceCreateInfo fence_info{};
-        fence_info.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-        vk_check(vkCreateFence(m_device, &fence_info, nullptr, &m_fence), "vkCreateFence");
-
-        const std::array<VkDescriptorPoolSize, 4> sizes{{
-            {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kTransientDescriptorsPerType},
-            {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kTransientDescriptorsPerType},
-            {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kTransientDescriptorsPerType},
-            {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kTransientDescriptorsPerType},
-        }};
-        VkDescriptorPoolCreateInfo descriptor_info{};
-        descriptor_info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
-        descriptor_info.maxSets = kTransientSets;
-        descriptor_info.poolSizeCount = uint32_t(sizes.size());
-        descriptor_info.pPoolSizes = sizes.data();
-        vk_check(vkCreateDescriptorPool(m_device, &descriptor_info, nullptr, &m_transient_pool),
-                 "vkCreateDescriptorPool");
-    } catch (...) {
-        destroy();
-        throw;
-    }
-    set_debug_name(VK_OBJECT_TYPE_COMMAND_BUFFER, uint64_t(m_command_buffer), "submit_and_wait");
+    const std::array<VkDescriptorPoolSize, 4> sizes{{
+        {VK_DESCRIPTOR_TYPE_STORAGE_BUFFER, kTransientDescriptorsPerType},
+        {VK_DESCRIPTOR_TYPE_UNIFORM_BUFFER, kTransientDescriptorsPerType},
+        {VK_DESCRIPTOR_TYPE_STORAGE_IMAGE, kTransientDescriptorsPerType},
+        {VK_DESCRIPTOR_TYPE_COMBINED_IMAGE_SAMPLER, kTransientDescriptorsPerType},
+    }};
+    VkDescriptorPoolCreateInfo descriptor_info{};
+    descriptor_info.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_POOL_CREATE_INFO;
+    descriptor_info.maxSets = kTransientSets;
+    descriptor_info.poolSizeCount = uint32_t(sizes.size());
+    descriptor_info.pPoolSizes = sizes.data();
+    vk_check(vkCreateDescriptorPool(m_device, &descriptor_info, nullptr, &m_transient_pool),
+             "vkCreateDescriptorPool");
 }
 
 Context::~Context() {

@@ -92,6 +92,11 @@ public:
     VkDescriptorSet allocate_transient_set(VkDescriptorSetLayout layout);
 
 private:
+    // The logical device on m_physical_device with the features mvpl uses (and the swapchain
+    // extension when presentable).
+    void create_device();
+    // The command pool and buffer, fence and transient descriptor pool of submit_and_wait.
+    void create_submission_objects();
     void destroy() noexcept;
 
     std::shared_ptr<ValidationLog> m_log;

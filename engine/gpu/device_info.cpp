@@ -41,47 +41,10 @@ DeviceType to_device_type(VkPhysicalDeviceType type) {
     }
 }
 
-}  // namespace
-
-bool DeviceInfo::usable() const {
-    return unusable_reason().empty();
-}
-
-std::string DeviceInfo::unusable_reason() const {
-    if (api_version < VK_API_VERSION_1_3) {
-        return "Vulkan " + format_api_version(api_version) + " (mvpl needs 1.3)";
-    }
-    if (queue_family < 0) return "no queue family with both graphics and compute";
-    return "";
-}
-
-DeviceInfo describe_device(VkPhysicalDevice device, int index) {
-    VkPhysicalDeviceProperties2 props2{};
-    props2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
-    VkPhysicalDeviceDriverProperties driver{};
-    driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
-    vkGetPhysicalDeviceProperties(device, &props2.properties);
-    // Driver properties are core from 1.2; older devices only get the basic block.
-    if (props2.properties.apiVersion >= VK_API_VERSION_1_2) {
-        props2.pNext = &driver;
-        vkGetPhysicalDeviceProperties2(device, &props2);
-    }
-    const VkPhysicalDeviceProperties& p = props2.properties;
+// The limits mvpl reads, from the device's properties `p`.
+DeviceLimits device_limits(VkPhysicalDevice device, const VkPhysicalDeviceProperties& p) {
     const VkPhysicalDeviceLimits& l = p.limits;
-
-    DeviceInfo info;
-    info.index = index;
-    info.name = p.deviceName;
-    info.type = to_device_type(p.deviceType);
-    info.vendor_id = p.vendorID;
-    info.device_id = p.deviceID;
-    info.api_version = p.apiVersion;
-    info.driver_version = p.driverVersion;
-    info.driver_version_string = format_driver_version(p.vendorID, p.driverVersion);
-    info.driver_name = driver.driverName;
-    info.driver_info = driver.driverInfo;
-
-    DeviceLimits& m = info.limits;
+    DeviceLimits m;
     m.max_image_dimension_2d = l.maxImageDimension2D;
     m.max_image_dimension_cube = l.maxImageDimensionCube;
     m.max_image_array_layers = l.maxImageArrayLayers;
@@ -108,14 +71,11 @@ DeviceInfo describe_device(VkPhysicalDevice device, int index) {
         vkGetPhysicalDeviceProperties2(device, &with_m3);
         m.max_memory_allocation_size = maintenance3.maxMemoryAllocationSize;
     }
+    return m;
+}
 
-    VkPhysicalDeviceMemoryProperties memory{};
-    vkGetPhysicalDeviceMemoryProperties(device, &memory);
-    for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) {
-        info.heaps.push_back({memory.memoryHeaps[i].size, (memory.memoryHeaps[i].flags &
-                                                           VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) != 0});
-    }
-
+// info.queue_family and its timestamp bits: a graphics+compute family (-1: none).
+void pick_queue_family(VkPhysicalDevice device, DeviceInfo& info) {
     uint32_t family_count = 0;
     vkGetPhysicalDeviceQueueFamilyProperties(device, &family_count, nullptr);
     std::vector<VkQueueFamilyProperties> families(family_count);
@@ -130,6 +90,57 @@ DeviceInfo describe_device(VkPhysicalDevice device, int index) {
             info.timestamp_valid_bits = families[i].timestampValidBits;
         }
     }
+}
+
+}  // namespace
+
+bool DeviceInfo::usable() const {
+    return unusable_reason().empty();
+}
+
+std::string DeviceInfo::unusable_reason() const {
+    if (api_version < VK_API_VERSION_1_3) {
+        return "Vulkan " + format_api_version(api_version) + " (mvpl needs 1.3)";
+    }
+    if (queue_family < 0) return "no queue family with both graphics and compute";
+    return "";
+}
+
+DeviceInfo describe_device(VkPhysicalDevice device, int index) {
+    VkPhysicalDeviceProperties2 props2{};
+    props2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
+    VkPhysicalDeviceDriverProperties driver{};
+    driver.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_DRIVER_PROPERTIES;
+    vkGetPhysicalDeviceProperties(device, &props2.properties);
+    // Driver properties are core from 1.2; older devices only get the basic block.
+    if (props2.properties.apiVersion >= VK_API_VERSION_1_2) {
+        props2.pNext = &driver;
+        vkGetPhysicalDeviceProperties2(device, &props2);
+    }
+    const VkPhysicalDeviceProperties& p = props2.properties;
+
+    DeviceInfo info;
+    info.index = index;
+    info.name = p.deviceName;
+    info.type = to_device_type(p.deviceType);
+    info.vendor_id = p.vendorID;
+    info.device_id = p.deviceID;
+    info.api_version = p.apiVersion;
+    info.driver_version = p.driverVersion;
+    info.driver_version_string = format_driver_version(p.vendorID, p.driverVersion);
+    info.driver_name = driver.driverName;
+    info.driver_info = driver.driverInfo;
+
+    info.limits = device_limits(device, p);
+
+    VkPhysicalDeviceMemoryProperties memory{};
+    vkGetPhysicalDeviceMemoryProperties(device, &memory);
+    for (uint32_t i = 0; i < memory.memoryHeapCount; ++i) {
+        info.heaps.push_back({memory.memoryHeaps[i].size, (memory.memoryHeaps[i].flags &
+                                                           VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) != 0});
+    }
+
+    pick_queue_family(device, info);
 
     VkPhysicalDeviceFeatures features{};
     vkGetPhysicalDeviceFeatures(device, &features);

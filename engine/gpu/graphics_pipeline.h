@@ -71,6 +71,10 @@ public:
     VkDescriptorSetLayout set_layout() const { return m_set_layout; }
 
 private:
+    // Set 0's layout: the bindings, each with the immutable nearest sampler.
+    void create_set_layout(VkDevice device, const std::string& what);
+    // Set 0 (if any) and the push-constant range.
+    void create_pipeline_layout(VkDevice device);
     void release() noexcept;
 
     Context* m_context;

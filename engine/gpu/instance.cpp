@@ -26,6 +26,67 @@ std::vector<VkExtensionProperties> instance_extensions(const char* layer) {
     return list;
 }
 
+// The layers, extensions and flags of the instance.
+struct InstanceRequest {
+    std::vector<const char*> extensions;
+    std::vector<const char*> layers;
+    VkInstanceCreateFlags flags = 0;
+    bool validation_features = false;  // VK_EXT_validation_features enabled
+};
+
+// The layer and extensions that validation needs (the validation layer present).
+void request_validation(const std::vector<VkExtensionProperties>& available,
+                        InstanceRequest& request) {
+    request.layers.push_back(kValidationLayerName);
+    // The layer implements debug_utils itself when the loader's list lacks it.
+    if (!has_extension(available, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) &&
+        !has_extension(instance_extensions(kValidationLayerName),
+                       VK_EXT_DEBUG_UTILS_EXTENSION_NAME)) {
+        throw GpuError(
+            "Vulkan validation needs VK_EXT_debug_utils, which neither the loader "
+            "nor the validation layer provides");
+    }
+    request.extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+    // The layer provides it; it makes the VkValidationFeaturesEXT below legal to chain.
+    if (has_extension(instance_extensions(kValidationLayerName),
+                      VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
+        request.extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
+        request.validation_features = true;
+    }
+}
+
+// What the instance enables; extra_extensions must outlive it (it points to their names).
+InstanceRequest instance_request(bool validation,
+                                 const std::vector<std::string>& extra_extensions) {
+    InstanceRequest request;
+    const std::vector<VkExtensionProperties> available = instance_extensions(nullptr);
+    // MoltenVK and other non-conformant drivers are listed only when we say we can cope.
+    if (has_extension(available, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
+        request.extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
+        request.flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+    }
+    for (const std::string& name : extra_extensions) {
+        if (!has_extension(available, name.c_str())) {
+            throw GpuError("the Vulkan loader lacks the instance extension " + name +
+                           ", which presenting to a window needs");
+        }
+        request.extensions.push_back(name.c_str());
+    }
+    if (validation) request_validation(available, request);
+    return request;
+}
+
+VkApplicationInfo application_info() {
+    VkApplicationInfo app{};
+    app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+    app.pApplicationName = "mvpl";
+    app.applicationVersion = VK_MAKE_API_VERSION(0, 0, 1, 0);
+    app.pEngineName = "mvpl";
+    app.engineVersion = VK_MAKE_API_VERSION(0, 0, 1, 0);
+    app.apiVersion = VK_API_VERSION_1_3;
+    return app;
+}
+
 }  // namespace
 
 Instance::Instance(const std::string& validation_source, ValidationLog* log,
@@ -37,52 +98,10 @@ Instance::Instance(const std::string& validation_source, ValidationLog* log,
                        " is not installed (Debian/Ubuntu: apt install vulkan-validationlayers; "
                        "or set VK_LAYER_PATH to its directory)");
     }
-
-    std::vector<const char*> extensions;
-    std::vector<const char*> layers;
-    const std::vector<VkExtensionProperties> available = instance_extensions(nullptr);
-    VkInstanceCreateFlags flags = 0;
-    // MoltenVK and other non-conformant drivers are listed only when we say we can cope.
-    if (has_extension(available, VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
-        extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
-        flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
-    }
-    for (const std::string& name : extra_extensions) {
-        if (!has_extension(available, name.c_str())) {
-            throw GpuError("the Vulkan loader lacks the instance extension " + name +
-                           ", which presenting to a window needs");
-        }
-        extensions.push_back(name.c_str());
-    }
+    const InstanceRequest request = instance_request(validation, extra_extensions);
     VkDebugUtilsMessengerCreateInfoEXT messenger_info{};
-    bool validation_features = false;
-    if (validation) {
-        layers.push_back(kValidationLayerName);
-        // The layer implements debug_utils itself when the loader's list lacks it.
-        if (!has_extension(available, VK_EXT_DEBUG_UTILS_EXTENSION_NAME) &&
-            !has_extension(instance_extensions(kValidationLayerName),
-                           VK_EXT_DEBUG_UTILS_EXTENSION_NAME)) {
-            throw GpuError(
-                "Vulkan validation needs VK_EXT_debug_utils, which neither the loader "
-                "nor the validation layer provides");
-        }
-        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
-        messenger_info = debug_messenger_info(log);
-        // The layer provides it; it makes the VkValidationFeaturesEXT below legal to chain.
-        if (has_extension(instance_extensions(kValidationLayerName),
-                          VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME)) {
-            extensions.push_back(VK_EXT_VALIDATION_FEATURES_EXTENSION_NAME);
-            validation_features = true;
-        }
-    }
-
-    VkApplicationInfo app{};
-    app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
-    app.pApplicationName = "mvpl";
-    app.applicationVersion = VK_MAKE_API_VERSION(0, 0, 1, 0);
-    app.pEngineName = "mvpl";
-    app.engineVersion = VK_MAKE_API_VERSION(0, 0, 1, 0);
-    app.apiVersion = VK_API_VERSION_1_3;
+    if (validation) messenger_info = debug_messenger_info(log);
+    const VkApplicationInfo app = application_info();
 
     // Synchronisation validation on top of the default checks: the passes' barriers are the
     // part that lavapipe (which executes in order) can never show to be wrong.
@@ -97,15 +116,15 @@ Instance::Instance(const std::string& validation_source, ValidationLog* log,
     VkInstanceCreateInfo info{};
     info.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
     // Chained messenger: reports problems in vkCreateInstance/vkDestroyInstance themselves.
-    info.pNext = validation_features ? static_cast<const void*>(&features)
-                 : validation        ? static_cast<const void*>(&messenger_info)
-                                     : nullptr;
-    info.flags = flags;
+    info.pNext = request.validation_features ? static_cast<const void*>(&features)
+                 : validation                ? static_cast<const void*>(&messenger_info)
+                                             : nullptr;
+    info.flags = request.flags;
     info.pApplicationInfo = &app;
-    info.enabledLayerCount = uint32_t(layers.size());
-    info.ppEnabledLayerNames = layers.data();
-    info.enabledExtensionCount = uint32_t(extensions.size());
-    info.ppEnabledExtensionNames = extensions.data();
+    info.enabledLayerCount = uint32_t(request.layers.size());
+    info.ppEnabledLayerNames = request.layers.data();
+    info.enabledExtensionCount = uint32_t(request.extensions.size());
+    info.ppEnabledExtensionNames = request.extensions.data();
     const VkResult result = vkCreateInstance(&info, nullptr, &m_instance);
     if (result == VK_ERROR_INCOMPATIBLE_DRIVER) {
         throw GpuError(

@@ -29,12 +29,58 @@ TrianglePoints triangle_points(const scene::Mesh& mesh, int triangle) {
     return {mesh.positions[idx[0]], mesh.positions[idx[1]], mesh.positions[idx[2]]};
 }
 
+// The emitter of scene light `l`, its power the light's flux (a directional light's through the
+// disk of the scene's bounding sphere, radius `scene_radius`).
+Emitter punctual_emitter(const scene::Light& light, int l, float scene_radius) {
+    Emitter e;
+    e.light = l;
+    const double y = luminance(light.intensity);
+    constexpr double pi = std::numbers::pi;
+    switch (light.type) {
+        case scene::LightType::Point:
+            e.type = EmitterType::Point;
+            e.power = float(4.0 * pi * y);
+            break;
+        case scene::LightType::Spot:
+            e.type = EmitterType::Spot;
+            // pbrt-v3's estimate of the flux inside the smooth cone.
+            e.power = float(2.0 * pi * y *
+                            (1.0 - 0.5 * (std::cos(double(light.inner_cone)) +
+                                          std::cos(double(light.outer_cone)))));
+            break;
+        case scene::LightType::Directional:
+            e.type = EmitterType::Directional;
+            e.power = float(pi * double(scene_radius) * double(scene_radius) * y);
+            break;
+    }
+    return e;
+}
+
 }  // namespace
 
 LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materials(scene) {
     const float diagonal = scene.bounds().diagonal();
     m_scene_radius = diagonal > 0.0f ? 0.5f * diagonal : 1.0f;
     if (!scene.bounds().empty()) m_scene_center = scene.bounds().center();
+    add_triangle_emitters();
+    for (size_t l = 0; l < scene.lights.size(); ++l)
+        m_emitters.push_back(punctual_emitter(scene.lights[l], int(l), m_scene_radius));
+    if (scene.environment.active()) {
+        // The flux through the bounding sphere's disk, π r² ∫ L dω (4π² r² L when uniform), as
+        // a directional light's π r² E.
+        m_environment_sampler = EnvironmentSampler(scene.environment);
+        Emitter e;
+        e.type = EmitterType::Environment;
+        const double r = double(m_scene_radius);
+        e.power = float(std::numbers::pi * r * r * m_environment_sampler.integrated_luminance());
+        m_environment = int(m_emitters.size());
+        m_emitters.push_back(e);
+    }
+    build_cdf();
+}
+
+void LightSampler::add_triangle_emitters() {
+    const scene::Scene& scene = m_scene;
     m_first_emitter.assign(scene.meshes.size(), -1);
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
         const scene::Mesh& mesh = scene.meshes[m];
@@ -79,42 +125,9 @@ LightSampler::LightSampler(const scene::Scene& scene) : m_scene(scene), m_materi
             m_emitters.push_back(e);
         }
     }
-    for (size_t l = 0; l < scene.lights.size(); ++l) {
-        const scene::Light& light = scene.lights[l];
-        Emitter e;
-        e.light = int(l);
-        const double y = luminance(light.intensity);
-        constexpr double pi = std::numbers::pi;
-        switch (light.type) {
-            case scene::LightType::Point:
-                e.type = EmitterType::Point;
-                e.power = float(4.0 * pi * y);
-                break;
-            case scene::LightType::Spot:
-                e.type = EmitterType::Spot;
-                // pbrt-v3's estimate of the flux inside the smooth cone.
-                e.power = float(2.0 * pi * y *
-                                (1.0 - 0.5 * (std::cos(double(light.inner_cone)) +
-                                              std::cos(double(light.outer_cone)))));
-                break;
-            case scene::LightType::Directional:
-                e.type = EmitterType::Directional;
-                e.power = float(pi * double(m_scene_radius) * double(m_scene_radius) * y);
-                break;
-        }
-        m_emitters.push_back(e);
-    }
-    if (scene.environment.active()) {
-        // The flux through the bounding sphere's disk, π r² ∫ L dω (4π² r² L when uniform), as
-        // a directional light's π r² E.
-        m_environment_sampler = EnvironmentSampler(scene.environment);
-        Emitter e;
-        e.type = EmitterType::Environment;
-        const double r = double(m_scene_radius);
-        e.power = float(std::numbers::pi * r * r * m_environment_sampler.integrated_luminance());
-        m_environment = int(m_emitters.size());
-        m_emitters.push_back(e);
-    }
+}
+
+void LightSampler::build_cdf() {
     // Emitters with no power cannot be sampled; they stay in the list so that indices are stable.
     // A power beyond float is not dropped (that would render black without a word): the loaders
     // refuse such scenes (scene::check_emitted_power), so one here is a bug.
@@ -267,45 +280,8 @@ std::optional<EmissionSample> LightSampler::sample_le_from(int emitter, float pi
     s.pick = pick;
     if (!(s.pick > 0.0f)) return std::nullopt;
 
-    if (e.type == EmitterType::Triangle) {
-        const scene::Mesh& mesh = m_scene.meshes[e.mesh];
-        const TrianglePoints tri = triangle_points(mesh, e.triangle);
-        const Vec2 b = sample_uniform_triangle(u_pos);
-        s.p = (1.0f - b.x - b.y) * tri.p0 + b.x * tri.p1 + b.y * tri.p2;
-        const Vec3 cross = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
-        const float cross_len = glm::length(cross);
-        if (!(cross_len > 0.0f) || !(e.area > 0.0f)) return std::nullopt;
-        s.n = cross / cross_len;
-        const Vec3 local = sample_cosine_hemisphere(u_dir);
-        if (!(local.z > 0.0f)) return std::nullopt;
-        s.direction = Frame(s.n).to_world(local);
-        s.pdf_pos = 1.0f / e.area;
-        s.pdf_dir = cosine_hemisphere_pdf(local.z);
-        const Rgb radiance =
-            m_materials.emission(mesh.material, trace::surface_attributes(mesh, e.triangle, b));
-        s.le = radiance * (e.area / s.pick);
-        // Le · cos θ / (pick · pdf_pos · cos θ/π): the cosine cancels exactly.
-        s.throughput = radiance * (kPi * e.area / s.pick);
-        return is_black(s.le) ? std::nullopt : std::optional<EmissionSample>(s);
-    }
-
-    if (e.type == EmitterType::Environment) {
-        // A direction towards the environment chosen by its sampler; the light travels the other
-        // way, entering through a disk of the bounding sphere's radius as a directional light's.
-        const EnvironmentDirection towards = m_environment_sampler.sample(u_dir);
-        if (!(towards.pdf > 0.0f)) return std::nullopt;
-        s.direction = -towards.w;
-        const Frame frame(s.direction);
-        const Vec2 d = m_scene_radius * sample_concentric_disk(u_pos);
-        s.p = m_scene_center - m_scene_radius * s.direction + frame.s * d.x + frame.t * d.y;
-        s.n = s.direction;
-        s.pdf_pos = 1.0f / (kPi * m_scene_radius * m_scene_radius);
-        s.pdf_dir = towards.pdf;
-        s.le = m_scene.environment.lookup(towards.w) / (s.pick * s.pdf_dir);
-        s.throughput = s.le / s.pdf_pos;
-        return is_black(s.le) ? std::nullopt : std::optional<EmissionSample>(s);
-    }
-
+    if (e.type == EmitterType::Triangle) return triangle_le(e, s, u_pos, u_dir);
+    if (e.type == EmitterType::Environment) return environment_le(s, u_pos, u_dir);
     const scene::Light& light = m_scene.lights[e.light];
     s.pdf_pos = 1.0f;
     s.le = light.intensity / s.pick;
@@ -337,6 +313,48 @@ std::optional<EmissionSample> LightSampler::sample_le_from(int emitter, float pi
     const float falloff = spot_attenuation(light, glm::dot(light.direction, s.direction));
     s.throughput = light.intensity * (falloff / (s.pick * s.pdf_dir));
     return s;
+}
+
+std::optional<EmissionSample> LightSampler::triangle_le(const Emitter& e, EmissionSample s,
+                                                        const Vec2& u_pos,
+                                                        const Vec2& u_dir) const {
+    const scene::Mesh& mesh = m_scene.meshes[e.mesh];
+    const TrianglePoints tri = triangle_points(mesh, e.triangle);
+    const Vec2 b = sample_uniform_triangle(u_pos);
+    s.p = (1.0f - b.x - b.y) * tri.p0 + b.x * tri.p1 + b.y * tri.p2;
+    const Vec3 cross = glm::cross(tri.p1 - tri.p0, tri.p2 - tri.p0);
+    const float cross_len = glm::length(cross);
+    if (!(cross_len > 0.0f) || !(e.area > 0.0f)) return std::nullopt;
+    s.n = cross / cross_len;
+    const Vec3 local = sample_cosine_hemisphere(u_dir);
+    if (!(local.z > 0.0f)) return std::nullopt;
+    s.direction = Frame(s.n).to_world(local);
+    s.pdf_pos = 1.0f / e.area;
+    s.pdf_dir = cosine_hemisphere_pdf(local.z);
+    const Rgb radiance =
+        m_materials.emission(mesh.material, trace::surface_attributes(mesh, e.triangle, b));
+    s.le = radiance * (e.area / s.pick);
+    // Le · cos θ / (pick · pdf_pos · cos θ/π): the cosine cancels exactly.
+    s.throughput = radiance * (kPi * e.area / s.pick);
+    return is_black(s.le) ? std::nullopt : std::optional<EmissionSample>(s);
+}
+
+std::optional<EmissionSample> LightSampler::environment_le(EmissionSample s, const Vec2& u_pos,
+                                                           const Vec2& u_dir) const {
+    // A direction towards the environment chosen by its sampler; the light travels the other
+    // way, entering through a disk of the bounding sphere's radius as a directional light's.
+    const EnvironmentDirection towards = m_environment_sampler.sample(u_dir);
+    if (!(towards.pdf > 0.0f)) return std::nullopt;
+    s.direction = -towards.w;
+    const Frame frame(s.direction);
+    const Vec2 d = m_scene_radius * sample_concentric_disk(u_pos);
+    s.p = m_scene_center - m_scene_radius * s.direction + frame.s * d.x + frame.t * d.y;
+    s.n = s.direction;
+    s.pdf_pos = 1.0f / (kPi * m_scene_radius * m_scene_radius);
+    s.pdf_dir = towards.pdf;
+    s.le = m_scene.environment.lookup(towards.w) / (s.pick * s.pdf_dir);
+    s.throughput = s.le / s.pdf_pos;
+    return is_black(s.le) ? std::nullopt : std::optional<EmissionSample>(s);
 }
 
 }  // namespace mvpl::light

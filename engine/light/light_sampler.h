@@ -96,6 +96,16 @@ public:
     int emitter_of(int mesh, int triangle) const;
 
 private:
+    // The emissive meshes' triangles, each weighted by its flux, and m_first_emitter.
+    void add_triangle_emitters();
+    // m_cdf and m_total_power over m_emitters (none left where no emitter has power).
+    void build_cdf();
+    // sample_le_from for a triangle or the environment, `s` holding the pick.
+    std::optional<EmissionSample> triangle_le(const Emitter& e, EmissionSample s, const Vec2& u_pos,
+                                              const Vec2& u_dir) const;
+    std::optional<EmissionSample> environment_le(EmissionSample s, const Vec2& u_pos,
+                                                 const Vec2& u_dir) const;
+
     const scene::Scene& m_scene;
     material::SceneMaterials m_materials;  // emission graphs (textured emitters)
     std::vector<Emitter> m_emitters;

@@ -234,84 +234,97 @@ std::string MaterialWriter::node(int index) {
     return n.kind->glsl_call(context);
 }
 
-}  // namespace
+bool is_used(const std::vector<bool>& used, size_t i) {
+    return used.empty() || (i < used.size() && used[i]);
+}
 
-MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
-                                    const std::vector<scene::Texture>& textures,
-                                    uint32_t first_binding, bool bind_textures,
-                                    const std::vector<bool>& used) {
-    GlslModule module;
-    module.require("Closure");
-    module.require("SurfacePoint");
-    std::map<int, int> bindings;
-    MaterialWriter writer(module, textures, bindings, bind_textures);
+// The statements of graph g's material function: its closure c, emission e and normal n.
+std::string material_body(MaterialWriter& writer, GlslModule& module, const MaterialGraph& g,
+                          bool bind_textures) {
+    std::string body;
+    if (g.closure >= 0 && g.nodes[size_t(g.closure)].kind->closure) {
+        body += "    c = " + writer.node(g.closure) + ";\n";
+    } else {
+        module.require("lambertian");
+        body += "    c = lambertian(vec3(0.0));\n";
+    }
+    body += "    e = " + (g.emission >= 0 ? writer.node(g.emission) + ".rgb" : "vec3(0.0)") + ";\n";
+    if (g.normal < 0 || !g.nodes[size_t(g.normal)].kind->normal) {
+        body += "    n = s.n;\n";
+    } else if (!bind_textures && reads_texture(g, g.normal)) {
+        // The interpolated normal stays: the pass that binds the textures maps it.
+        body += "    n = s.n;  // normal from an unbound texture\n";
+    } else {
+        body += "    n = " + writer.node(g.normal) + ";\n";
+    }
+    return body;
+}
+
+// The distinct material functions and which material calls which.
+struct MaterialFunctions {
+    std::vector<std::string> bodies;  // with the placeholder, one per distinct function
+    std::vector<size_t> first_of;     // the first material of each distinct function
+    std::vector<int> function_of;     // per material, -1 where unused
+    std::string code;                 // the functions, each named after its first material
+
+    std::string name(int f) const { return "material_" + std::to_string(first_of[size_t(f)]); }
+};
+
+MaterialFunctions write_materials(MaterialWriter& writer, GlslModule& module,
+                                  const std::vector<MaterialGraph>& graphs, bool bind_textures,
+                                  const std::vector<bool>& used) {
     // Written with a placeholder name so that materials whose code is the same share one
     // function (real models repeat materials), which is then named after its first material.
     const std::string placeholder = "material_@";
-    std::vector<std::string> bodies;  // with the placeholder, one per distinct function
-    std::vector<size_t> first_of;     // the first material of each distinct function
-    std::vector<int> function_of(graphs.size(), -1);
-    std::string materials;
+    MaterialFunctions out;
+    out.function_of.assign(graphs.size(), -1);
     for (size_t i = 0; i < graphs.size(); ++i) {
-        if (!used.empty() && (i >= used.size() || !used[i])) continue;
+        if (!is_used(used, i)) continue;
         const MaterialGraph& g = graphs[i];
         writer.begin(g, placeholder);
-        std::string body;
-        if (g.closure >= 0 && g.nodes[size_t(g.closure)].kind->closure) {
-            body += "    c = " + writer.node(g.closure) + ";\n";
-        } else {
-            module.require("lambertian");
-            body += "    c = lambertian(vec3(0.0));\n";
-        }
-        body +=
-            "    e = " + (g.emission >= 0 ? writer.node(g.emission) + ".rgb" : "vec3(0.0)") + ";\n";
-        if (g.normal < 0 || !g.nodes[size_t(g.normal)].kind->normal) {
-            body += "    n = s.n;\n";
-        } else if (!bind_textures && reads_texture(g, g.normal)) {
-            // The interpolated normal stays: the pass that binds the textures maps it.
-            body += "    n = s.n;  // normal from an unbound texture\n";
-        } else {
-            body += "    n = " + writer.node(g.normal) + ";\n";
-        }
+        const std::string body = material_body(writer, module, g, bind_textures);
         const std::string code = writer.helpers() + "void " + placeholder +
                                  "(SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n" +
                                  body + "}\n";
-        const auto same = std::find(bodies.begin(), bodies.end(), code);
-        if (same != bodies.end()) {
-            function_of[i] = int(same - bodies.begin());
+        const auto same = std::find(out.bodies.begin(), out.bodies.end(), code);
+        if (same != out.bodies.end()) {
+            out.function_of[i] = int(same - out.bodies.begin());
             continue;
         }
-        function_of[i] = int(bodies.size());
-        bodies.push_back(code);
-        first_of.push_back(i);
+        out.function_of[i] = int(out.bodies.size());
+        out.bodies.push_back(code);
+        out.first_of.push_back(i);
         const std::string name = "material_" + std::to_string(i);
         std::string named = code;
         for (size_t at = named.find(placeholder); at != std::string::npos;
              at = named.find(placeholder, at + name.size()))
             named.replace(at, placeholder.size(), name);
-        materials += "// " + name + "\n" + named;
+        out.code += "// " + name + "\n" + named;
     }
-    const auto function_name = [&](int f) {
-        return "material_" + std::to_string(first_of[size_t(f)]);
-    };
+    return out;
+}
+
+// resolve_material(m, ...): calls material m's function.
+std::string dispatch_code(const MaterialFunctions& functions, size_t material_count) {
     // Materials that share the default's function, and unused ones, take the default branch.
-    const int fallback = bodies.empty() ? -1 : 0;
+    const int fallback = functions.bodies.empty() ? -1 : 0;
     // Two levels of switch, kDispatchGroup cases each at most: lavapipe (Mesa 22.3) mis-shades
     // a switch of about 80 cases or more (tests/render/test_many_materials.cpp: with 100
     // materials in one switch, the first 21 resolved black; as one if-chain, the last 20).
     const std::string fallback_call =
         fallback < 0 ? std::string("c = lambertian(vec3(0.0)); e = vec3(0.0); n = s.n;")
-                     : function_name(fallback) + "(s, c, e, n);";
+                     : functions.name(fallback) + "(s, c, e, n);";
     std::string groups;
     std::string top =
         "void resolve_material(uint m, SurfacePoint s, out Closure c, out vec3 e, out vec3 n) {\n"
         "    switch (m / " +
         std::to_string(kDispatchGroup) + "u) {\n";
-    for (size_t g0 = 0; g0 < graphs.size(); g0 += kDispatchGroup) {
+    for (size_t g0 = 0; g0 < material_count; g0 += kDispatchGroup) {
         std::string cases;
-        for (size_t i = g0; i < std::min(graphs.size(), g0 + kDispatchGroup); ++i) {
-            if (function_of[i] < 0 || function_of[i] == fallback) continue;
-            cases += "        case " + std::to_string(i) + "u: " + function_name(function_of[i]) +
+        for (size_t i = g0; i < std::min(material_count, g0 + kDispatchGroup); ++i) {
+            const int f = functions.function_of[i];
+            if (f < 0 || f == fallback) continue;
+            cases += "        case " + std::to_string(i) + "u: " + functions.name(f) +
                      "(s, c, e, n); return;\n";
         }
         if (cases.empty()) continue;
@@ -323,28 +336,53 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
         top += "        case " + std::to_string(g0 / kDispatchGroup) + "u: " + name +
                "(m, s, c, e, n); return;\n";
     }
-    const std::string dispatch =
-        groups + top + "        default: " + fallback_call + " return;\n    }\n}\n";
-    if (bodies.empty()) module.require("lambertian");
+    return groups + top + "        default: " + fallback_call + " return;\n    }\n}\n";
+}
 
-    std::string alpha_helpers;
-    std::string alpha_cases;
+// The alpha-tested materials' helpers and their cases of alpha_cut.
+struct AlphaCode {
+    std::string helpers;
+    std::string cases;
+};
+
+AlphaCode alpha_code(MaterialWriter& writer, GlslModule& module,
+                     const std::vector<MaterialGraph>& graphs, const std::vector<bool>& used) {
+    AlphaCode out;
     for (size_t i = 0; i < graphs.size(); ++i) {
-        if (!used.empty() && (i >= used.size() || !used[i])) continue;
+        if (!is_used(used, i)) continue;
         const MaterialGraph& g = graphs[i];
         if (!g.alpha_tested()) continue;
         writer.begin(g, "alpha_" + std::to_string(i));
         const std::string alpha = writer.scalar(g.alpha);
-        alpha_helpers += writer.helpers();
+        out.helpers += writer.helpers();
         if (g.masked()) {
-            alpha_cases += "        case " + std::to_string(i) + "u: return " + alpha + " < " +
-                           glsl_number(g.alpha_cutoff) + ";\n";
+            out.cases += "        case " + std::to_string(i) + "u: return " + alpha + " < " +
+                         glsl_number(g.alpha_cutoff) + ";\n";
         } else {
             module.require("alpha_hash");
-            alpha_cases += "        case " + std::to_string(i) +
-                           "u: return alpha_hash(p, seed) >= " + alpha + ";\n";
+            out.cases += "        case " + std::to_string(i) +
+                         "u: return alpha_hash(p, seed) >= " + alpha + ";\n";
         }
     }
+    return out;
+}
+
+}  // namespace
+
+MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
+                                    const std::vector<scene::Texture>& textures,
+                                    uint32_t first_binding, bool bind_textures,
+                                    const std::vector<bool>& used) {
+    GlslModule module;
+    module.require("Closure");
+    module.require("SurfacePoint");
+    std::map<int, int> bindings;
+    MaterialWriter writer(module, textures, bindings, bind_textures);
+    const MaterialFunctions functions =
+        write_materials(writer, module, graphs, bind_textures, used);
+    const std::string dispatch = dispatch_code(functions, graphs.size());
+    if (functions.bodies.empty()) module.require("lambertian");
+    const AlphaCode alpha = alpha_code(writer, module, graphs, used);
 
     MaterialCode out;
     out.textures.resize(bindings.size());
@@ -355,15 +393,15 @@ MaterialCode generate_material_code(const std::vector<MaterialGraph>& graphs,
             ") uniform sampler2D texture_" + std::to_string(slot) + ";\n";
     }
     out.node_functions = module.functions();
-    out.functions = module.code() + materials + dispatch;
-    if (!alpha_cases.empty()) {
+    out.functions = module.code() + functions.code + dispatch;
+    if (!alpha.cases.empty()) {
         out.alpha_tested = true;
-        out.functions += alpha_helpers +
+        out.functions += alpha.helpers +
                          "// glTF alphaMode MASK or BLEND: whether material m cuts its surface at "
                          "s (at p).\n"
                          "bool alpha_cut(uint m, SurfacePoint s, vec3 p, uint seed) {\n"
                          "    switch (m) {\n" +
-                         alpha_cases + "        default: return false;\n    }\n}\n";
+                         alpha.cases + "        default: return false;\n    }\n}\n";
     }
     return out;
 }

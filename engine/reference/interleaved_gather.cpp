@@ -138,6 +138,72 @@ DVec3 filtered(const std::vector<Texel>& texels, int width, int height, int k, i
     return t.state == shared::kChainReceiver ? mean * DVec3(t.throughput) : mean;
 }
 
+// What every pixel's shading reads, fixed over the run.
+struct GatherInputs {
+    const scene::Scene& scene;
+    const trace::Accel& accel;
+    const std::vector<light::PreparedVpl>& vpls;
+    const GatherOptions& options;
+    float d_min2;
+    float vsl_r2;
+    const light::LightSampler* lights;
+};
+
+// The VPLs [begin, end) of one sub-pixel position (`offset` in the pixel).
+struct PositionRun {
+    uint64_t position;
+    Vec2 offset;
+    size_t begin;
+    size_t end;
+};
+
+// Texel (x, y) for the run: its first hit and its interleaved share of the run's VPLs.
+void shade_texel(const GatherInputs& in, const PositionRun& run, int x, int64_t y, Texel& t) {
+    const int width = in.options.width;
+    const int k = in.options.interleave;
+    const uint64_t classes = uint64_t(k) * uint64_t(k);
+    const uint64_t first = in.options.first_vpl;
+    t = Texel{};
+    const scene::CameraRay cr =
+        scene::generate_camera_ray(in.scene.camera, width, in.options.height,
+                                   Vec2(float(x) + run.offset.x, float(y) + run.offset.y));
+    const trace::Ray ray{cr.origin, cr.direction};
+    const std::optional<trace::Hit> hit = in.accel.intersect_camera(ray);
+    if (!hit) return;
+    const trace::SurfaceInteraction si = trace::make_interaction(in.scene, *hit, ray);
+    t.covered = true;
+    t.p = si.p;
+    t.ng = si.ng;
+    t.material = si.material;
+    t.base = trace::make_shading_point(in.accel.materials(), si).bsdf.params().base_color;
+    t.albedo = glm::max(t.base, Vec3(shared::kInterleaveMinAlbedo));
+    // As gather_vpls's shade_pixel: the chain's receiver and path-length limit.
+    std::optional<light::Receiver> receiver;
+    uint32_t max_vpl_length = UINT32_MAX;
+    if (in.lights) {
+        Rng rng = light::chain_rng(in.options.chain_seed,
+                                   uint64_t(y) * uint64_t(width) + uint64_t(x), run.position);
+        const light::ChainedReceiver chained = light::make_chained_receiver(
+            in.scene, in.accel, ray, rng, in.options.chains, nullptr, in.lights);
+        receiver = chained.receiver;
+        max_vpl_length = chained.max_vpl_length;
+        if (chained.continued) set_chain_end(t, chained);
+    } else {
+        receiver = light::make_receiver(in.scene, in.accel, ray);
+    }
+    if (!receiver) return;
+    const uint64_t c = uint64_t(x % k) + uint64_t(k) * uint64_t(y % k);
+    const size_t i = run.begin;
+    // The first VPL of the position whose index since begin() is c mod K².
+    size_t v = i + size_t((c + classes - (first + i) % classes) % classes);
+    for (; v < run.end; v += classes) {
+        if (in.vpls[v].vpl->path_length > max_vpl_length) continue;
+        t.shaded +=
+            DVec3(light::vpl_contribution(in.accel, *receiver, in.vpls[v], in.d_min2, in.vsl_r2));
+    }
+    t.shaded *= double(classes);
+}
+
 }  // namespace
 
 Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
@@ -146,11 +212,10 @@ Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
     const int width = options.width;
     const int height = options.height;
     const int k = options.interleave;
-    const uint64_t classes = uint64_t(k) * uint64_t(k);
     const SubpixelSchedule& schedule = options.subpixel;
     const uint64_t first = options.first_vpl;
     const float vsl_radius = options.vsl_radius * scene.bounds().diagonal();
-    const float vsl_r2 = vsl_radius * vsl_radius;
+    const GatherInputs in{scene, accel, vpls, options, d_min2, vsl_radius * vsl_radius, lights};
     std::vector<DVec3> sum(size_t(width) * size_t(height), DVec3(0.0));
     std::vector<Texel> texels(sum.size());
     for (size_t i = 0; i < vpls.size();) {
@@ -158,52 +223,11 @@ Image interleaved_vpl_sum(const scene::Scene& scene, const trace::Accel& accel,
         size_t end = i;
         while (end < vpls.size() && schedule.position_of(first + end) == position)
             ++end;
-        const Vec2 offset = schedule.position(position);
+        const PositionRun run{position, schedule.position(position), i, end};
         parallel_for(height, 1, [&](int64_t y0, int64_t y1) {
             for (int64_t y = y0; y < y1; ++y) {
-                for (int x = 0; x < width; ++x) {
-                    Texel& t = texels[size_t(y) * size_t(width) + size_t(x)];
-                    t = Texel{};
-                    const scene::CameraRay cr =
-                        scene::generate_camera_ray(scene.camera, width, height,
-                                                   Vec2(float(x) + offset.x, float(y) + offset.y));
-                    const trace::Ray ray{cr.origin, cr.direction};
-                    const std::optional<trace::Hit> hit = accel.intersect_camera(ray);
-                    if (!hit) continue;
-                    const trace::SurfaceInteraction si = trace::make_interaction(scene, *hit, ray);
-                    t.covered = true;
-                    t.p = si.p;
-                    t.ng = si.ng;
-                    t.material = si.material;
-                    t.base =
-                        trace::make_shading_point(accel.materials(), si).bsdf.params().base_color;
-                    t.albedo = glm::max(t.base, Vec3(shared::kInterleaveMinAlbedo));
-                    // As gather_vpls's shade_pixel: the chain's receiver and path-length limit.
-                    std::optional<light::Receiver> receiver;
-                    uint32_t max_vpl_length = UINT32_MAX;
-                    if (lights) {
-                        Rng rng =
-                            light::chain_rng(options.chain_seed,
-                                             uint64_t(y) * uint64_t(width) + uint64_t(x), position);
-                        const light::ChainedReceiver chained = light::make_chained_receiver(
-                            scene, accel, ray, rng, options.chains, nullptr, lights);
-                        receiver = chained.receiver;
-                        max_vpl_length = chained.max_vpl_length;
-                        if (chained.continued) set_chain_end(t, chained);
-                    } else {
-                        receiver = light::make_receiver(scene, accel, ray);
-                    }
-                    if (!receiver) continue;
-                    const uint64_t c = uint64_t(x % k) + uint64_t(k) * uint64_t(y % k);
-                    // The first VPL of the position whose index since begin() is c mod K².
-                    size_t v = i + size_t((c + classes - (first + i) % classes) % classes);
-                    for (; v < end; v += classes) {
-                        if (vpls[v].vpl->path_length > max_vpl_length) continue;
-                        t.shaded += DVec3(
-                            light::vpl_contribution(accel, *receiver, vpls[v], d_min2, vsl_r2));
-                    }
-                    t.shaded *= double(classes);
-                }
+                for (int x = 0; x < width; ++x)
+                    shade_texel(in, run, x, y, texels[size_t(y) * size_t(width) + size_t(x)]);
             }
         });
         parallel_for(height, 1, [&](int64_t y0, int64_t y1) {

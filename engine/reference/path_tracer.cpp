@@ -24,6 +24,42 @@ Vec2 next_2d(Rng& rng) {
     return Vec2(a, rng.next_float());
 }
 
+// The environment seen along `ray` (the path's segment `depth`), weighted against the light sample
+// that could have chosen the same direction, added to L.
+void add_environment(const light::LightSampler& lights, const trace::Ray& ray, int depth,
+                     float prev_bsdf_pdf, const Rgb& throughput, Rgb& L) {
+    const Vec3 w = glm::normalize(ray.direction);
+    const Rgb le = lights.environment_radiance(w);
+    if (!is_black(le)) {
+        const float weight =
+            depth > 1 ? power_heuristic(prev_bsdf_pdf, lights.pdf_environment(w)) : 1.0f;
+        L += throughput * le * weight;
+    }
+}
+
+// One light sample at sp (of its diffuse lobe alone when diffuse_only), weighted against the BSDF
+// sample that could have found the same light, added to L.
+void add_light_sample(const light::LightSampler& lights, const trace::Accel& accel,
+                      const trace::ShadingPoint& sp, const Vec3& wo, bool diffuse_only,
+                      const Rgb& throughput, Rng& rng, Rgb& L) {
+    if (const auto ls = lights.sample_li(sp.p, rng.next_float(), next_2d(rng))) {
+        const Vec3 wi = sp.frame.to_local(ls->wi);
+        const Rgb f = diffuse_only ? sp.bsdf.eval_diffuse(wo, wi) : sp.bsdf.eval(wo, wi);
+        if (!is_black(f) && trace::same_side(ls->wi, sp.ng, wi.z)) {
+            const trace::Ray shadow =
+                std::isinf(ls->distance)
+                    ? trace::spawn_ray(sp.p, sp.ng, ls->wi, accel.coordinate_scale())
+                    : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n, accel.coordinate_scale());
+            if (!accel.occluded(shadow)) {
+                const float bsdf_pdf =
+                    diffuse_only ? sp.bsdf.pdf_diffuse(wo, wi) : sp.bsdf.pdf(wo, wi);
+                const float weight = ls->is_delta ? 1.0f : power_heuristic(ls->pdf, bsdf_pdf);
+                L += throughput * f * std::abs(wi.z) * ls->li * (weight / ls->pdf);
+            }
+        }
+    }
+}
+
 }  // namespace
 
 Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, int rr_depth,
@@ -40,15 +76,7 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
         const std::optional<trace::Hit> hit =
             depth == 1 && from_camera ? m_accel.intersect_camera(ray) : m_accel.intersect(ray);
         if (!hit) {
-            // The environment, weighted against the light sample that could have chosen the
-            // same direction.
-            const Vec3 w = glm::normalize(ray.direction);
-            const Rgb le = m_lights.environment_radiance(w);
-            if (!is_black(le)) {
-                const float weight =
-                    depth > 1 ? power_heuristic(prev_bsdf_pdf, m_lights.pdf_environment(w)) : 1.0f;
-                L += throughput * le * weight;
-            }
+            add_environment(m_lights, ray, depth, prev_bsdf_pdf, throughput, L);
             break;
         }
         const trace::SurfaceInteraction si = trace::make_interaction(m_scene, *hit, ray);
@@ -80,23 +108,7 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
         const bool diffuse_only = depth == 1 && first == FirstVertex::DiffuseLobe;
 
         // Next-event estimation: one light sample, the path gets one more segment.
-        if (const auto ls = m_lights.sample_li(sp.p, rng.next_float(), next_2d(rng))) {
-            const Vec3 wi = sp.frame.to_local(ls->wi);
-            const Rgb f = diffuse_only ? sp.bsdf.eval_diffuse(wo, wi) : sp.bsdf.eval(wo, wi);
-            if (!is_black(f) && trace::same_side(ls->wi, sp.ng, wi.z)) {
-                const trace::Ray shadow =
-                    std::isinf(ls->distance)
-                        ? trace::spawn_ray(sp.p, sp.ng, ls->wi, m_accel.coordinate_scale())
-                        : trace::spawn_ray_to(sp.p, sp.ng, ls->p, ls->n,
-                                              m_accel.coordinate_scale());
-                if (!m_accel.occluded(shadow)) {
-                    const float bsdf_pdf =
-                        diffuse_only ? sp.bsdf.pdf_diffuse(wo, wi) : sp.bsdf.pdf(wo, wi);
-                    const float weight = ls->is_delta ? 1.0f : power_heuristic(ls->pdf, bsdf_pdf);
-                    L += throughput * f * std::abs(wi.z) * ls->li * (weight / ls->pdf);
-                }
-            }
-        }
+        add_light_sample(m_lights, m_accel, sp, wo, diffuse_only, throughput, rng, L);
 
         // The same call shape for both (sample_diffuse ignores u_lobe): the numbers are drawn in
         // the same order, so that the two agree bit for bit on Lambertian vertices.

@@ -8,6 +8,7 @@
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
 #include "engine/core/timer.h"
+#include "engine/sampler/metropolis_bootstrap.h"
 #include "engine/sampler/primary_sample_vector.h"
 #include "engine/sampler/start_resampling.h"
 
@@ -15,10 +16,8 @@ namespace mvpl::sampler {
 
 namespace {
 
-// Independent PCG32 seeds for the four uses of randomness, from the user's seed.
-uint64_t bootstrap_seed(uint64_t seed) {
-    return mix_bits(seed ^ 0x626f6f74ULL);
-}
+// Independent PCG32 seeds for the chains' uses of randomness, from the user's seed (the
+// bootstrap's: metropolis_bootstrap.h).
 uint64_t chain_value_seed(uint64_t seed) {
     return mix_bits(seed ^ 0x76616c75ULL);
 }
@@ -66,115 +65,19 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     m_options.large_step = std::clamp(m_options.large_step, 0.0f, 1.0f);
     m_options.defensive = std::max(m_options.defensive, 0.0);
     const uint64_t n = std::max<uint64_t>(m_options.bootstrap, 1);
-
-    // Bootstrap: I of n independent paths; path i is what a PrimarySampleVector on stream i
-    // reads at iteration 0, so a chain can restart from it exactly.
-    // The luminance each path adds to each point is kept, so that the relative target's point
-    // weights (from the bootstrap's radiance per point) apply without tracing twice. Sparse: a
-    // path's one VPL lights few of the points (most lie in the other room, behind the opening,
-    // in the two-room scene), and dense storage grew as paths × points (1 GiB at 2^20 × 256).
-    // Over ranks, this rank's share [first, first + m) of the paths (all of them on one process).
     cluster::Cluster& ranks = m_options.cluster ? *m_options.cluster : cluster::single_process();
-    const cluster::Share share = cluster::share_of(n, ranks.rank(), ranks.size());
-    const uint64_t first = share.first, m = share.last - share.first;
-    const size_t k = m_importance.point_count();
-    struct PointLuminance {
-        uint32_t point;
-        float value;
-    };
-    constexpr uint64_t kBlock = 16;  // paths a block; a block's entries in path order
-    const uint64_t blocks = (m + kBlock - 1) / kBlock;
-    std::vector<std::vector<PointLuminance>> block_entries;
-    std::vector<uint32_t> entries_of(m, 0);  // per path
-    std::vector<double> radiance(k, 0.0);
-    // I, [has a VPL] and the start order's key (start_resampling.h) of this rank's paths.
-    std::vector<double> mine(3 * m, 0.0);
-    const scene::Bounds bounds = scene.bounds();
-    // Path i's luminance per point, dense (k values), from its block's entries from `at` on.
-    auto unpack = [&](uint64_t i, size_t& at, const std::vector<PointLuminance>& entries,
-                      std::vector<float>& dense) {
-        std::fill(dense.begin(), dense.end(), 0.0f);
-        for (uint32_t e = 0; e < entries_of[i]; ++e, ++at)
-            dense[entries[at].point] = entries[at].value;
-    };
-    cluster::together(ranks, [&] {
-        block_entries.assign(blocks, {});
-        if (!lights.empty() && k > 0) {
-            parallel_for(int64_t(blocks), 1, [&](int64_t b0, int64_t b1) {
-                std::vector<light::Vpl> path;
-                std::vector<float> dense(k);
-                for (int64_t b = b0; b < b1; ++b) {
-                    const uint64_t i0 = uint64_t(b) * kBlock, i1 = std::min(m, i0 + kBlock);
-                    for (uint64_t i = i0; i < i1; ++i) {
-                        PrimarySampleVector u(bootstrap_seed(m_options.seed), first + i,
-                                              m_options.sigma);
-                        trace_state(u, path);
-                        mine[size_t(m + i)] = path.empty() ? 0.0 : 1.0;
-                        // The state's (first) VPL's place: exact in a double (30 bits).
-                        if (!path.empty())
-                            mine[size_t(2 * m + i)] = double(morton_key(path[0].position, bounds));
-                        std::fill(dense.begin(), dense.end(), 0.0f);
-                        m_importance.evaluate_points(path, dense);
-                        for (size_t p = 0; p < k; ++p) {
-                            if (dense[p] == 0.0f) continue;
-                            block_entries[size_t(b)].push_back({uint32_t(p), dense[p]});
-                            ++entries_of[i];
-                        }
-                    }
-                }
-            });
-        }
-        // In path order, as the dense sum was (zeros left out do not change a sum).
-        for (uint64_t b = 0; b < blocks; ++b) {
-            size_t at = 0;
-            for (uint64_t i = b * kBlock; i < std::min(m, (b + 1) * kBlock); ++i) {
-                for (uint32_t e = 0; e < entries_of[i]; ++e, ++at) {
-                    const PointLuminance& entry = block_entries[b][at];
-                    radiance[entry.point] += double(entry.value) / double(n);
-                }
-            }
-        }
-    });
-    ranks.sum_all(radiance);
-    // On every rank alike (deterministic, a few thousand shadow rays): the point weights then
-    // see the whole light, as with the emitter VPLs in the chains' states.
-    const bool direct_visible = add_direct_radiance(radiance);
-    cluster::together(ranks, [&] {
-        m_importance.set_point_radiance(radiance);
-        std::vector<float> dense(k);
-        for (uint64_t b = 0; b < blocks; ++b) {
-            size_t at = 0;
-            for (uint64_t i = b * kBlock; i < std::min(m, (b + 1) * kBlock); ++i) {
-                unpack(i, at, block_entries[b], dense);
-                mine[i] = m_importance.evaluate(std::span<const float>(dense));
-            }
-        }
-        block_entries = {};
-    });
-    // Every rank's I, [has a VPL] and key: the whole bootstrap on every rank.
-    std::vector<double> importance, has_vpl, keys;
-    {
-        const std::vector<double> all =
-            ranks.gather_all(std::span<const double>(mine.data(), size_t(m)));
-        importance.assign(all.begin(), all.end());
-        const std::vector<double> flags =
-            ranks.gather_all(std::span<const double>(mine.data() + m, size_t(m)));
-        has_vpl.assign(flags.begin(), flags.end());
-        const std::vector<double> places =
-            ranks.gather_all(std::span<const double>(mine.data() + 2 * m, size_t(m)));
-        keys.assign(places.begin(), places.end());
-    }
+    const Bootstrap bootstrap = run_bootstrap(scene, lights, ranks, n);
     double sum = 0.0;
     uint64_t lit = 0;
     for (uint64_t i = 0; i < n; ++i) {
-        sum += importance[i];
-        lit += importance[i] > 0.0 ? 1 : 0;
+        sum += bootstrap.importance[i];
+        lit += bootstrap.importance[i] > 0.0 ? 1 : 0;
     }
     m_stats.mean_importance = sum / double(n);
     m_stats.bootstrap_lit = lit;
     if (!(m_stats.mean_importance > 0.0) || !std::isfinite(m_stats.mean_importance)) {
         // No chain can start; the direct light's sequence may still light the image.
-        m_no_visible_light = !direct_visible;
+        m_no_visible_light = !bootstrap.direct_visible;
         m_stats.mean_importance = 0.0;
         m_stats.bootstrap_seconds = timer.seconds();
         return;
@@ -182,14 +85,20 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
     // b = E[I'] and the start distribution ∝ I' (prefix sums for the chains' picks).
     std::vector<double> cdf(n + 1, 0.0);
     for (uint64_t i = 0; i < n; ++i) {
-        const double t = defensive_target(importance[i], m_stats.mean_importance,
-                                          m_options.defensive, has_vpl[i] != 0.0);
+        const double t = defensive_target(bootstrap.importance[i], m_stats.mean_importance,
+                                          m_options.defensive, bootstrap.has_vpl[i] != 0.0);
         cdf[i + 1] = cdf[i] + t;
     }
     m_stats.target_sum = cdf[n];
     m_stats.target_count = n;
     m_stats.b = cdf[n] / double(n);
+    start_chains(chain_starts(cdf, bootstrap.keys), ranks);
+    m_stats.bootstrap_seconds = timer.seconds();
+}
 
+std::vector<uint64_t> MetropolisStream::chain_starts(const std::vector<double>& cdf,
+                                                     const std::vector<double>& keys) const {
+    const uint64_t n = cdf.size() - 1;
     // Chain c's start: stratified (start_resampling.h), or an independent pick ∝ I'.
     std::vector<uint64_t> starts(size_t(m_options.chains), 0);
     if (m_options.stratified_starts) {
@@ -197,20 +106,23 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
         for (uint64_t i = 0; i < n; ++i)
             weights[i] = cdf[i + 1] - cdf[i];
         Rng pick(chain_start_seed(m_options.seed), 0);
-        starts = stratified_picks(weights, keys, uint64_t(m_options.chains), pick);
-    } else {
-        for (int c = 0; c < m_options.chains; ++c) {
-            Rng pick(chain_start_seed(m_options.seed), uint64_t(c));
-            const double x = double(pick.next_float()) * cdf[n];
-            // The first path whose interval [cdf[i], cdf[i+1]) holds x (empty intervals never do).
-            uint64_t start =
-                uint64_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin()) - 1;
-            start = std::min(start, n - 1);
-            while (start > 0 && !(cdf[start + 1] > cdf[start]))
-                --start;
-            starts[size_t(c)] = start;
-        }
+        return stratified_picks(weights, keys, uint64_t(m_options.chains), pick);
     }
+    for (int c = 0; c < m_options.chains; ++c) {
+        Rng pick(chain_start_seed(m_options.seed), uint64_t(c));
+        const double x = double(pick.next_float()) * cdf[n];
+        // The first path whose interval [cdf[i], cdf[i+1]) holds x (empty intervals never do).
+        uint64_t start = uint64_t(std::upper_bound(cdf.begin(), cdf.end(), x) - cdf.begin()) - 1;
+        start = std::min(start, n - 1);
+        while (start > 0 && !(cdf[start + 1] > cdf[start]))
+            --start;
+        starts[size_t(c)] = start;
+    }
+    return starts;
+}
+
+void MetropolisStream::start_chains(const std::vector<uint64_t>& starts,
+                                    const cluster::Cluster& ranks) {
     m_chains.resize(size_t(m_options.chains));
     for (int c = 0; c < m_options.chains; ++c) {
         if (c % ranks.size() != ranks.rank()) continue;  // another rank's chain
@@ -222,7 +134,6 @@ MetropolisStream::MetropolisStream(const scene::Scene& scene, const trace::Accel
         chain->rng.seed(chain_step_seed(m_options.seed), uint64_t(c));
         m_chains[size_t(c)] = std::move(chain);
     }
-    m_stats.bootstrap_seconds = timer.seconds();
 }
 
 MetropolisStream::~MetropolisStream() = default;
@@ -370,27 +281,6 @@ double MetropolisStream::scale() const {
     // b = 1 where no chain runs and only the direct light's sequence lights the image.
     const double b = m_stats.b > 0.0 ? m_stats.b : 1.0;
     return m_stats.steps > 0 ? b / double(m_stats.steps) : 0.0;
-}
-
-bool MetropolisStream::add_direct_radiance(std::vector<double>& radiance) const {
-    if (!m_direct || radiance.empty()) return false;
-    // Enough samples for the point weights (a heuristic of the target: any positive weights keep
-    // the estimate unbiased); the sequence's stratification keeps them smooth.
-    constexpr uint64_t kSamples = 1024;
-    std::vector<light::Vpl> vpl;
-    std::vector<float> dense(radiance.size());
-    bool lit = false;
-    for (uint64_t j = 0; j < kSamples; ++j) {
-        vpl.clear();
-        if (m_direct->sample(j, vpl) == 0) continue;
-        std::fill(dense.begin(), dense.end(), 0.0f);
-        m_importance.evaluate_points(vpl, dense);
-        for (size_t p = 0; p < radiance.size(); ++p) {
-            radiance[p] += double(dense[p]) / double(kSamples);
-            lit = lit || dense[p] > 0.0f;
-        }
-    }
-    return lit;
 }
 
 void MetropolisStream::next_direct(uint64_t begin, uint64_t end, std::vector<light::Vpl>& out) {

@@ -132,6 +132,19 @@ public:
 
 private:
     struct Chain;
+    struct BootstrapPaths;  // metropolis_bootstrap.cpp
+    struct Bootstrap;       // metropolis_bootstrap.h
+    // I of `n` independent paths (this rank traces its share), the importance's point radiance set
+    // from them.
+    Bootstrap run_bootstrap(const scene::Scene& scene, const light::LightSampler& lights,
+                            cluster::Cluster& ranks, uint64_t n);
+    // Traces this rank's bootstrap paths in blocks: their luminance per point, [has a VPL], key.
+    void trace_bootstrap(const scene::Bounds& bounds, BootstrapPaths& paths) const;
+    // Each chain's start path, from the prefix sums `cdf` of the bootstrap's I' and its keys.
+    std::vector<uint64_t> chain_starts(const std::vector<double>& cdf,
+                                       const std::vector<double>& keys) const;
+    // The chains this rank runs, each on its start path.
+    void start_chains(const std::vector<uint64_t>& starts, const cluster::Cluster& ranks);
     void run_chain(Chain& chain, uint64_t steps, std::vector<light::Vpl>& out,
                    MetropolisStats& stats) const;
     double target(const std::vector<light::Vpl>& vpls) const;

@@ -180,52 +180,55 @@ AccessorView::AccessorView(const Document& doc, int index, AccessorNeeds needs)
     m_normalized = accessor.normalized;
     m_count = accessor.count;
 
-    if (accessor.bufferView == -1) {
-        if (m_count > kMaxZeroElements) {
-            doc.fail(m_label + " has no buffer view and " + std::to_string(m_count) +
-                     " elements, more than " + std::to_string(kMaxZeroElements));
-        }
-    } else {
-        size_t stride = m_element_size;
-        const auto& views = doc.model.bufferViews;
-        if (size_t(accessor.bufferView) < views.size()) {
-            const size_t view_stride = views[size_t(accessor.bufferView)].byteStride;
-            if (view_stride != 0 && view_stride < m_element_size) {
-                doc.fail(m_label + " has " + std::to_string(m_element_size) +
-                         "-byte elements but buffer view " + std::to_string(accessor.bufferView) +
-                         " has a byteStride of " + std::to_string(view_stride));
-            }
-            if (view_stride != 0) stride = view_stride;
-        }
-        m_stride = stride;
-        m_data = view_bytes(accessor.bufferView, accessor.byteOffset, m_count, m_element_size,
-                            stride, m_label);
+    if (accessor.bufferView != -1) {
+        locate_data(accessor);
+    } else if (m_count > kMaxZeroElements) {
+        doc.fail(m_label + " has no buffer view and " + std::to_string(m_count) +
+                 " elements, more than " + std::to_string(kMaxZeroElements));
     }
+    if (accessor.sparse.isSparse) read_sparse(accessor);
+}
 
-    if (accessor.sparse.isSparse) {
-        const auto& sparse = accessor.sparse;
-        if (sparse.count < 1 || size_t(sparse.count) > m_count) {
-            doc.fail(m_label + " has " + std::to_string(sparse.count) +
-                     " sparse elements; it must have between 1 and " + std::to_string(m_count));
+void AccessorView::locate_data(const tinygltf::Accessor& accessor) {
+    size_t stride = m_element_size;
+    const auto& views = m_doc.model.bufferViews;
+    if (size_t(accessor.bufferView) < views.size()) {
+        const size_t view_stride = views[size_t(accessor.bufferView)].byteStride;
+        if (view_stride != 0 && view_stride < m_element_size) {
+            m_doc.fail(m_label + " has " + std::to_string(m_element_size) +
+                       "-byte elements but buffer view " + std::to_string(accessor.bufferView) +
+                       " has a byteStride of " + std::to_string(view_stride));
         }
-        if (!is_index_type(sparse.indices.componentType)) {
-            doc.fail(m_label + " has sparse indices of " +
-                     component_name(sparse.indices.componentType) +
-                     " type; they must be unsigned byte, short or int");
-        }
-        if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0) {
-            doc.fail(m_label + " has a negative sparse byteOffset");
-        }
-        m_sparse.count = size_t(sparse.count);
-        m_sparse.index_component_type = sparse.indices.componentType;
-        const size_t index_size = component_size(sparse.indices.componentType);
-        m_sparse.indices =
-            view_bytes(sparse.indices.bufferView, size_t(sparse.indices.byteOffset), m_sparse.count,
-                       index_size, index_size, m_label + " sparse indices");
-        m_sparse.values =
-            view_bytes(sparse.values.bufferView, size_t(sparse.values.byteOffset), m_sparse.count,
-                       m_element_size, m_element_size, m_label + " sparse values");
+        if (view_stride != 0) stride = view_stride;
     }
+    m_stride = stride;
+    m_data = view_bytes(accessor.bufferView, accessor.byteOffset, m_count, m_element_size, stride,
+                        m_label);
+}
+
+void AccessorView::read_sparse(const tinygltf::Accessor& accessor) {
+    const auto& sparse = accessor.sparse;
+    if (sparse.count < 1 || size_t(sparse.count) > m_count) {
+        m_doc.fail(m_label + " has " + std::to_string(sparse.count) +
+                   " sparse elements; it must have between 1 and " + std::to_string(m_count));
+    }
+    if (!is_index_type(sparse.indices.componentType)) {
+        m_doc.fail(m_label + " has sparse indices of " +
+                   component_name(sparse.indices.componentType) +
+                   " type; they must be unsigned byte, short or int");
+    }
+    if (sparse.indices.byteOffset < 0 || sparse.values.byteOffset < 0) {
+        m_doc.fail(m_label + " has a negative sparse byteOffset");
+    }
+    m_sparse.count = size_t(sparse.count);
+    m_sparse.index_component_type = sparse.indices.componentType;
+    const size_t index_size = component_size(sparse.indices.componentType);
+    m_sparse.indices =
+        view_bytes(sparse.indices.bufferView, size_t(sparse.indices.byteOffset), m_sparse.count,
+                   index_size, index_size, m_label + " sparse indices");
+    m_sparse.values =
+        view_bytes(sparse.values.bufferView, size_t(sparse.values.byteOffset), m_sparse.count,
+                   m_element_size, m_element_size, m_label + " sparse values");
 }
 
 const unsigned char* AccessorView::view_bytes(int view_index, size_t offset, size_t count,

@@ -50,6 +50,10 @@ private:
     // substitutions last so that they win.
     template <typename Visit>
     void for_each_element(Visit&& visit) const;
+    // m_data and m_stride: the accessor's elements in its buffer view, checked to fit.
+    void locate_data(const tinygltf::Accessor& accessor);
+    // m_sparse: the accessor's sparse substitutions, checked.
+    void read_sparse(const tinygltf::Accessor& accessor);
     const unsigned char* view_bytes(int view_index, size_t offset, size_t count,
                                     size_t element_size, size_t stride,
                                     const std::string& what) const;

@@ -204,6 +204,108 @@ std::vector<T> unweld(const std::vector<T>& values, const std::vector<uint32_t>&
     return out;
 }
 
+// The primitive's index accessor, if it has one.
+std::optional<AccessorView> indices_accessor(const Document& doc,
+                                             const tinygltf::Primitive& primitive,
+                                             const std::string& where) {
+    std::optional<AccessorView> indices_view;
+    if (primitive.indices != -1) {
+        indices_view.emplace(doc, primitive.indices,
+                             AccessorNeeds{"indices of " + where,
+                                           TINYGLTF_TYPE_SCALAR,
+                                           {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
+                                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
+                                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT}});
+    }
+    return indices_view;
+}
+
+// The triangles that `corner_count` corners (indices when `indexed`, else vertices) make in
+// `mode`.
+size_t count_triangles(const Document& doc, const std::string& where, int mode, size_t corner_count,
+                       bool indexed) {
+    if (mode == TINYGLTF_MODE_TRIANGLES) {
+        if (corner_count % 3 != 0) {
+            doc.fail(where + " has " + std::to_string(corner_count) +
+                     (indexed ? " indices" : " vertices") + ", not a multiple of 3");
+        }
+        return corner_count / 3;
+    }
+    return corner_count >= 3 ? corner_count - 2 : 0;
+}
+
+// Charges a placed primitive's triangles and output vertices to the scene's budget.
+void charge(const Document& doc, GeometryBudget& budget, size_t triangle_count,
+            uint64_t out_vertices, const std::string& placed) {
+    if (budget.triangles + triangle_count > kMaxTriangles) {
+        doc.fail("the scene has more than " + std::to_string(kMaxTriangles) + " triangles when " +
+                 placed);
+    }
+    if (budget.vertices + out_vertices > kMaxVertices) {
+        doc.fail("the scene has more than " + std::to_string(kMaxVertices) + " vertices when " +
+                 placed);
+    }
+    budget.triangles += triangle_count;
+    budget.vertices += out_vertices;
+}
+
+// The primitive's corners as vertex indices: its indices (checked), else every vertex in order.
+std::vector<uint32_t> read_corners(const Document& doc,
+                                   const std::optional<AccessorView>& indices_view,
+                                   size_t vertex_count) {
+    std::vector<uint32_t> corners;
+    if (indices_view) {
+        corners = indices_view->read_uints();
+        for (size_t i = 0; i < corners.size(); ++i) {
+            if (corners[i] >= vertex_count) {
+                doc.fail(indices_view->label() + " has index " + std::to_string(corners[i]) +
+                         " at element " + std::to_string(i) + ", past the vertex count " +
+                         std::to_string(vertex_count));
+            }
+        }
+    } else {
+        corners.resize(vertex_count);
+        std::iota(corners.begin(), corners.end(), 0u);
+    }
+    return corners;
+}
+
+// The positions placed in the world by node `node`, each within scene_range.h's bounds.
+void place_positions(const Document& doc, const Placement& placement, int node,
+                     const AccessorView& positions_view, std::vector<Vec3>& positions) {
+    for (size_t i = 0; i < positions.size(); ++i) {
+        const DVec3 p = placement.point(positions[i]);
+        for (int c = 0; c < 3; ++c) {
+            if (!(std::abs(p[c]) <= kMaxCoordinate)) {
+                doc.fail(indexed("nodes", size_t(node)) + " places " +
+                         indexed(indexed("accessors", size_t(positions_view.index())), i) + " (" +
+                         positions_view.usage() + ") at " + std::string(1, "xyz"[c]) + " = " +
+                         number_text(p[c]) + ", beyond the supported magnitude " +
+                         number_text(kMaxCoordinate));
+            }
+        }
+        positions[i] = Vec3(p);
+    }
+}
+
+// glTF: without normals the primitive is flat shaded, so every triangle gets its own three
+// vertices carrying its face normal.
+void flat_shaded(const std::vector<Vec3>& positions, const std::vector<uint32_t>& triangles,
+                 const Attributes& attributes, Mesh& out) {
+    out.positions = unweld(positions, triangles);
+    out.uv0 = unweld(attributes.uv0, triangles);
+    out.uv1 = unweld(attributes.uv1, triangles);
+    out.tangents = unweld(attributes.tangents, triangles);
+    out.colors = unweld(attributes.colors, triangles);
+    out.normals.resize(out.positions.size());
+    out.indices.resize(out.positions.size());
+    std::iota(out.indices.begin(), out.indices.end(), 0u);
+    for (size_t t = 0; t < out.indices.size(); t += 3) {
+        const Vec3 n = unit_or_fallback(face_normal(out.positions, &out.indices[t]));
+        out.normals[t] = out.normals[t + 1] = out.normals[t + 2] = n;
+    }
+}
+
 }  // namespace
 
 bool build_primitive_mesh(const Document& doc, int mesh_index, int primitive_index, int node,
@@ -230,75 +332,24 @@ bool build_primitive_mesh(const Document& doc, int mesh_index, int primitive_ind
         doc, *position_index,
         AccessorNeeds{"POSITION of " + where, TINYGLTF_TYPE_VEC3, {TINYGLTF_COMPONENT_TYPE_FLOAT}});
     const size_t vertex_count = positions_view.count();
-    std::optional<AccessorView> indices_view;
-    if (primitive.indices != -1) {
-        indices_view.emplace(doc, primitive.indices,
-                             AccessorNeeds{"indices of " + where,
-                                           TINYGLTF_TYPE_SCALAR,
-                                           {TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE,
-                                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT,
-                                            TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT}});
-    }
+    const std::optional<AccessorView> indices_view = indices_accessor(doc, primitive, where);
     const size_t corner_count = indices_view ? indices_view->count() : vertex_count;
-    size_t triangle_count = 0;
-    if (mode == TINYGLTF_MODE_TRIANGLES) {
-        if (corner_count % 3 != 0) {
-            doc.fail(where + " has " + std::to_string(corner_count) +
-                     (indices_view ? " indices" : " vertices") + ", not a multiple of 3");
-        }
-        triangle_count = corner_count / 3;
-    } else {
-        triangle_count = corner_count >= 3 ? corner_count - 2 : 0;
-    }
+    const size_t triangle_count =
+        count_triangles(doc, where, mode, corner_count, indices_view.has_value());
     if (triangle_count == 0) return false;
     const bool has_normals = attribute(primitive, "NORMAL").has_value();
     const uint64_t out_vertices = has_normals ? vertex_count : 3 * uint64_t(triangle_count);
-    const std::string placed = "node " + std::to_string(node) + " places " + where;
-    if (budget.triangles + triangle_count > kMaxTriangles) {
-        doc.fail("the scene has more than " + std::to_string(kMaxTriangles) + " triangles when " +
-                 placed);
-    }
-    if (budget.vertices + out_vertices > kMaxVertices) {
-        doc.fail("the scene has more than " + std::to_string(kMaxVertices) + " vertices when " +
-                 placed);
-    }
-    budget.triangles += triangle_count;
-    budget.vertices += out_vertices;
+    charge(doc, budget, triangle_count, out_vertices,
+           "node " + std::to_string(node) + " places " + where);
 
     std::vector<Vec3> positions = positions_view.read_vec3();
     check_finite(doc, positions, positions_view);
-    std::vector<uint32_t> corners;
-    if (indices_view) {
-        corners = indices_view->read_uints();
-        for (size_t i = 0; i < corners.size(); ++i) {
-            if (corners[i] >= vertex_count) {
-                doc.fail(indices_view->label() + " has index " + std::to_string(corners[i]) +
-                         " at element " + std::to_string(i) + ", past the vertex count " +
-                         std::to_string(vertex_count));
-            }
-        }
-    } else {
-        corners.resize(vertex_count);
-        std::iota(corners.begin(), corners.end(), 0u);
-    }
-    std::vector<uint32_t> triangles = triangulate(mode, corners, triangle_count);
-    corners = {};
+    std::vector<uint32_t> triangles =
+        triangulate(mode, read_corners(doc, indices_view, vertex_count), triangle_count);
     Attributes attributes = read_attributes(doc, primitive, where, vertex_count);
 
     const Placement placement(world);
-    for (size_t i = 0; i < positions.size(); ++i) {
-        const DVec3 p = placement.point(positions[i]);
-        for (int c = 0; c < 3; ++c) {
-            if (!(std::abs(p[c]) <= kMaxCoordinate)) {
-                doc.fail(indexed("nodes", size_t(node)) + " places " +
-                         indexed(indexed("accessors", size_t(positions_view.index())), i) + " (" +
-                         positions_view.usage() + ") at " + std::string(1, "xyz"[c]) + " = " +
-                         number_text(p[c]) + ", beyond the supported magnitude " +
-                         number_text(kMaxCoordinate));
-            }
-        }
-        positions[i] = Vec3(p);
-    }
+    place_positions(doc, placement, node, positions_view, positions);
     if (placement.mirrors()) {
         for (size_t t = 0; t < triangles.size(); t += 3) {
             std::swap(triangles[t + 1], triangles[t + 2]);
@@ -309,30 +360,17 @@ bool build_primitive_mesh(const Document& doc, int mesh_index, int primitive_ind
 
     out.name = (mesh.name.empty() ? "mesh " + std::to_string(mesh_index) : mesh.name) +
                (mesh.primitives.size() > 1 ? " primitive " + std::to_string(primitive_index) : "");
-    if (has_normals) {
-        out.normals = placed_normals(placement, attributes.normals, positions, triangles);
-        out.positions = std::move(positions);
-        out.uv0 = std::move(attributes.uv0);
-        out.uv1 = std::move(attributes.uv1);
-        out.tangents = std::move(attributes.tangents);
-        out.colors = std::move(attributes.colors);
-        out.indices = std::move(triangles);
-    } else {
-        // glTF: without normals the primitive is flat shaded, so every triangle gets its own
-        // three vertices carrying its face normal.
-        out.positions = unweld(positions, triangles);
-        out.uv0 = unweld(attributes.uv0, triangles);
-        out.uv1 = unweld(attributes.uv1, triangles);
-        out.tangents = unweld(attributes.tangents, triangles);
-        out.colors = unweld(attributes.colors, triangles);
-        out.normals.resize(out.positions.size());
-        out.indices.resize(out.positions.size());
-        std::iota(out.indices.begin(), out.indices.end(), 0u);
-        for (size_t t = 0; t < out.indices.size(); t += 3) {
-            const Vec3 n = unit_or_fallback(face_normal(out.positions, &out.indices[t]));
-            out.normals[t] = out.normals[t + 1] = out.normals[t + 2] = n;
-        }
+    if (!has_normals) {
+        flat_shaded(positions, triangles, attributes, out);
+        return true;
     }
+    out.normals = placed_normals(placement, attributes.normals, positions, triangles);
+    out.positions = std::move(positions);
+    out.uv0 = std::move(attributes.uv0);
+    out.uv1 = std::move(attributes.uv1);
+    out.tangents = std::move(attributes.tangents);
+    out.colors = std::move(attributes.colors);
+    out.indices = std::move(triangles);
     return true;
 }
 

@@ -82,6 +82,116 @@ std::vector<float> code_table(int bits, ColorSpace space) {
     return table;
 }
 
+// The wrap modes and filter of glTF sampler `index` (checked to exist) on `texture`.
+void apply_sampler(const Document& doc, const std::string& texture_name, int index,
+                   Texture& texture) {
+    const tinygltf::Model& model = doc.model;
+    if (index < 0 || size_t(index) >= model.samplers.size()) {
+        doc.fail(texture_name + " refers to sampler " + std::to_string(index) +
+                 ", but the file has " + std::to_string(model.samplers.size()) + " samplers");
+    }
+    const tinygltf::Sampler& sampler = model.samplers[size_t(index)];
+    const std::string sampler_name = "sampler " + std::to_string(index);
+    auto wrap = [&](int mode, const char* axis) {
+        switch (mode) {
+            case kWrapRepeat:
+                return Wrap::Repeat;
+            case kWrapClampToEdge:
+                return Wrap::ClampToEdge;
+            case kWrapMirroredRepeat:
+                return Wrap::MirroredRepeat;
+            default:
+                doc.fail(sampler_name + " has an invalid " + axis + " " + std::to_string(mode));
+        }
+    };
+    texture.wrap_s = wrap(sampler.wrapS, "wrapS");
+    texture.wrap_t = wrap(sampler.wrapT, "wrapT");
+    if (sampler.magFilter == kFilterNearest) {
+        texture.filter = Filter::Nearest;
+    } else if (sampler.magFilter != kFilterLinear && sampler.magFilter != -1) {
+        doc.fail(sampler_name + " has an invalid magFilter " + std::to_string(sampler.magFilter));
+    }
+}
+
+// The image `source` of a texture, checked to exist and to hold data (under 2 GiB).
+const tinygltf::Image& source_image(const Document& doc, const std::string& texture_name,
+                                    int source) {
+    const tinygltf::Model& model = doc.model;
+    if (source == -1) doc.fail(texture_name + " has no image source");
+    if (source < 0 || size_t(source) >= model.images.size()) {
+        doc.fail(texture_name + " refers to image " + std::to_string(source) +
+                 ", but the file has " + std::to_string(model.images.size()) + " images");
+    }
+    const tinygltf::Image& image = model.images[size_t(source)];
+    const std::string image_name = "image " + std::to_string(source);
+    if (image.image.empty()) {
+        // tinygltf keeps going (with a warning) when an external image cannot be read.
+        if (!image.uri.empty()) {
+            const std::string problem = external_file_problem(doc.base_dir, image.uri);
+            doc.fail(image_name + " file '" + image.uri + "' " +
+                     (problem.empty() ? "cannot be read" : problem));
+        }
+        doc.fail(image_name + " has no data");
+    }
+    if (image.image.size() > size_t(INT_MAX)) doc.fail(image_name + " is larger than 2 GiB");
+    return image;
+}
+
+// An image's codes as stb_image decoded them: 8 or 16 bits, 1 to 4 channels.
+struct Pixels {
+    std::unique_ptr<void, StbiFree> data;
+    int channels = 0;
+    bool sixteen_bits = false;
+
+    size_t code(size_t i) const {
+        return sixteen_bits ? static_cast<const uint16_t*>(data.get())[i]
+                            : static_cast<const uint8_t*>(data.get())[i];
+    }
+};
+
+// The pixels of `bytes`, whose header stbi_info read as width × height.
+Pixels decode_pixels(const Document& doc, const std::string& image_name, const unsigned char* bytes,
+                     int length, int width, int height) {
+    Pixels pixels;
+    pixels.sixteen_bits = stbi_is_16_bit_from_memory(bytes, length) != 0;
+    int decoded_width = 0;
+    int decoded_height = 0;
+    int& channels = pixels.channels;
+    pixels.data.reset(pixels.sixteen_bits
+                          ? static_cast<void*>(stbi_load_16_from_memory(
+                                bytes, length, &decoded_width, &decoded_height, &channels, 0))
+                          : static_cast<void*>(stbi_load_from_memory(
+                                bytes, length, &decoded_width, &decoded_height, &channels, 0)));
+    if (!pixels.data) doc.fail(image_name + " cannot be decoded: " + decode_problem(bytes, length));
+    if (decoded_width != width || decoded_height != height || channels < 1 || channels > 4) {
+        doc.fail(image_name + " decodes inconsistently with its header");
+    }
+    return pixels;
+}
+
+// texture.texels (width × height of them) from the pixels' codes, colour decoded from `space`.
+void fill_texels(const Pixels& pixels, ColorSpace space, Texture& texture) {
+    const int bits = pixels.sixteen_bits ? 16 : 8;
+    const int channels = pixels.channels;
+    const std::vector<float> colour = code_table(bits, space);
+    const std::vector<float> linear =
+        space == ColorSpace::Linear ? colour : code_table(bits, ColorSpace::Linear);
+    texture.texels.resize(size_t(texture.width) * size_t(texture.height));
+    for (size_t t = 0; t < texture.texels.size(); ++t) {
+        const size_t base = t * size_t(channels);
+        Vec4& out = texture.texels[t];
+        // Grey fills R, G and B; a missing alpha is opaque. Alpha is never sRGB-encoded.
+        if (channels <= 2) {
+            out = Vec4(Vec3(colour[pixels.code(base)]),
+                       channels == 2 ? linear[pixels.code(base + 1)] : 1.0f);
+        } else {
+            out = Vec4(colour[pixels.code(base)], colour[pixels.code(base + 1)],
+                       colour[pixels.code(base + 2)],
+                       channels == 4 ? linear[pixels.code(base + 3)] : 1.0f);
+        }
+    }
+}
+
 }  // namespace
 
 int TextureCache::get(int index, ColorSpace space, const std::string& usage) {
@@ -100,59 +210,13 @@ int TextureCache::get(int index, ColorSpace space, const std::string& usage) {
 }
 
 Texture TextureCache::decode(int index, ColorSpace space) {
-    const tinygltf::Model& model = m_doc.model;
-    const tinygltf::Texture& gltf_texture = model.textures[size_t(index)];
+    const tinygltf::Texture& gltf_texture = m_doc.model.textures[size_t(index)];
     const std::string texture_name = "texture " + std::to_string(index);
     Texture texture;
-
-    if (gltf_texture.sampler != -1) {
-        if (gltf_texture.sampler < 0 || size_t(gltf_texture.sampler) >= model.samplers.size()) {
-            m_doc.fail(texture_name + " refers to sampler " + std::to_string(gltf_texture.sampler) +
-                       ", but the file has " + std::to_string(model.samplers.size()) + " samplers");
-        }
-        const tinygltf::Sampler& sampler = model.samplers[size_t(gltf_texture.sampler)];
-        const std::string sampler_name = "sampler " + std::to_string(gltf_texture.sampler);
-        auto wrap = [&](int mode, const char* axis) {
-            switch (mode) {
-                case kWrapRepeat:
-                    return Wrap::Repeat;
-                case kWrapClampToEdge:
-                    return Wrap::ClampToEdge;
-                case kWrapMirroredRepeat:
-                    return Wrap::MirroredRepeat;
-                default:
-                    m_doc.fail(sampler_name + " has an invalid " + axis + " " +
-                               std::to_string(mode));
-            }
-        };
-        texture.wrap_s = wrap(sampler.wrapS, "wrapS");
-        texture.wrap_t = wrap(sampler.wrapT, "wrapT");
-        if (sampler.magFilter == kFilterNearest) {
-            texture.filter = Filter::Nearest;
-        } else if (sampler.magFilter != kFilterLinear && sampler.magFilter != -1) {
-            m_doc.fail(sampler_name + " has an invalid magFilter " +
-                       std::to_string(sampler.magFilter));
-        }
-    }
-
-    const int source = gltf_texture.source;
-    if (source == -1) m_doc.fail(texture_name + " has no image source");
-    if (source < 0 || size_t(source) >= model.images.size()) {
-        m_doc.fail(texture_name + " refers to image " + std::to_string(source) +
-                   ", but the file has " + std::to_string(model.images.size()) + " images");
-    }
-    const tinygltf::Image& image = model.images[size_t(source)];
-    const std::string image_name = "image " + std::to_string(source);
-    if (image.image.empty()) {
-        // tinygltf keeps going (with a warning) when an external image cannot be read.
-        if (!image.uri.empty()) {
-            const std::string problem = external_file_problem(m_doc.base_dir, image.uri);
-            m_doc.fail(image_name + " file '" + image.uri + "' " +
-                       (problem.empty() ? "cannot be read" : problem));
-        }
-        m_doc.fail(image_name + " has no data");
-    }
-    if (image.image.size() > size_t(INT_MAX)) m_doc.fail(image_name + " is larger than 2 GiB");
+    if (gltf_texture.sampler != -1)
+        apply_sampler(m_doc, texture_name, gltf_texture.sampler, texture);
+    const tinygltf::Image& image = source_image(m_doc, texture_name, gltf_texture.source);
+    const std::string image_name = "image " + std::to_string(gltf_texture.source);
     const unsigned char* bytes = image.image.data();
     const int length = int(image.image.size());
 
@@ -170,46 +234,15 @@ Texture TextureCache::decode(int index, ColorSpace space) {
     if (m_total_texels + texels > kMaxTotalTexels) {
         m_doc.fail("the textures exceed " + std::to_string(kMaxTotalTexels) + " texels in all");
     }
-
-    const bool sixteen_bits = stbi_is_16_bit_from_memory(bytes, length) != 0;
-    int decoded_width = 0;
-    int decoded_height = 0;
-    std::unique_ptr<void, StbiFree> pixels(
-        sixteen_bits ? static_cast<void*>(stbi_load_16_from_memory(bytes, length, &decoded_width,
-                                                                   &decoded_height, &channels, 0))
-                     : static_cast<void*>(stbi_load_from_memory(bytes, length, &decoded_width,
-                                                                &decoded_height, &channels, 0)));
-    if (!pixels) m_doc.fail(image_name + " cannot be decoded: " + decode_problem(bytes, length));
-    if (decoded_width != width || decoded_height != height || channels < 1 || channels > 4) {
-        m_doc.fail(image_name + " decodes inconsistently with its header");
-    }
+    const Pixels pixels = decode_pixels(m_doc, image_name, bytes, length, width, height);
     m_total_texels += texels;
 
-    const std::vector<float> colour = code_table(sixteen_bits ? 16 : 8, space);
-    const std::vector<float> linear = space == ColorSpace::Linear
-                                          ? colour
-                                          : code_table(sixteen_bits ? 16 : 8, ColorSpace::Linear);
-    auto code = [&](size_t i) -> size_t {
-        return sixteen_bits ? static_cast<const uint16_t*>(pixels.get())[i]
-                            : static_cast<const uint8_t*>(pixels.get())[i];
-    };
     texture.name = !image.name.empty()                                      ? image.name
                    : !image.uri.empty() && image.uri.rfind("data:", 0) != 0 ? image.uri
                                                                             : texture_name;
     texture.width = width;
     texture.height = height;
-    texture.texels.resize(size_t(texels));
-    for (size_t t = 0; t < texture.texels.size(); ++t) {
-        const size_t base = t * size_t(channels);
-        Vec4& out = texture.texels[t];
-        // Grey fills R, G and B; a missing alpha is opaque. Alpha is never sRGB-encoded.
-        if (channels <= 2) {
-            out = Vec4(Vec3(colour[code(base)]), channels == 2 ? linear[code(base + 1)] : 1.0f);
-        } else {
-            out = Vec4(colour[code(base)], colour[code(base + 1)], colour[code(base + 2)],
-                       channels == 4 ? linear[code(base + 3)] : 1.0f);
-        }
-    }
+    fill_texels(pixels, space, texture);
     return texture;
 }
 

@@ -207,6 +207,28 @@ Vec4 colour(const Vec3& v) {
     return Vec4(v, 1.0f);
 }
 
+// The closure node the record's x[50] names, on the record's inputs.
+ClosureParams cpu_closure(const float* x) {
+    const auto v3 = [&](int i) { return Vec3(x[i], x[i + 1], x[i + 2]); };
+    const int kind = int(x[50]);
+    const Vec4 base = colour(v3(40));
+    const Vec4 spec = colour(v3(46));
+    const SurfacePoint plain;
+    const auto closure = [&](std::string_view name, std::vector<Vec4> inputs) {
+        const Node n = node_of(name);
+        return n.kind->closure(GivenInputs(n, plain, std::move(inputs)));
+    };
+    if (kind == 0) return closure("lambertian", {base});
+    if (kind == 1) return closure("ggx_conductor", {base, scalar(x[44])});
+    if (kind == 2)
+        return closure("dielectric_diffuse",
+                       {base, scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
+    if (kind == 3)
+        return closure("metal_rough",
+                       {base, scalar(x[43]), scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
+    return closure("rough_dielectric", {scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
+}
+
 // The C++ evaluators on the same record.
 std::vector<float> cpu_eval(const Record& r, const scene::Texture& base_texture) {
     const float* x = r.in;
@@ -249,26 +271,7 @@ std::vector<float> cpu_eval(const Record& r, const scene::Texture& base_texture)
     GivenInputs heights(bump, framed, {scalar(x[35])});
     heights.set_bump(v2(38), scalar(x[36]), scalar(x[37]));
     out(19, bump.kind->normal(heights), 3);
-    const int kind = int(x[50]);
-    const Vec4 base = colour(v3(40));
-    const Vec4 spec = colour(v3(46));
-    ClosureParams c;
-    const auto closure = [&](std::string_view name, std::vector<Vec4> inputs) {
-        const Node n = node_of(name);
-        return n.kind->closure(GivenInputs(n, plain, std::move(inputs)));
-    };
-    if (kind == 0)
-        c = closure("lambertian", {base});
-    else if (kind == 1)
-        c = closure("ggx_conductor", {base, scalar(x[44])});
-    else if (kind == 2)
-        c = closure("dielectric_diffuse",
-                    {base, scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
-    else if (kind == 3)
-        c = closure("metal_rough",
-                    {base, scalar(x[43]), scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
-    else
-        c = closure("rough_dielectric", {scalar(x[44]), scalar(x[45]), spec, scalar(x[49])});
+    const ClosureParams c = cpu_closure(x);
     y[22] = float(uint32_t(closure_type(c)));
     out(23, c.base_color, 3);
     y[26] = c.metallic;

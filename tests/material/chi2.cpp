@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <sstream>
+#include <string>
 #include <vector>
 
 namespace mvpl::test {
@@ -60,15 +61,13 @@ double sidak_significance(double family_significance, int test_count) {
     return 1.0 - std::pow(1.0 - family_significance, 1.0 / std::max(test_count, 1));
 }
 
-Chi2Result run_chi2_test(const std::function<std::optional<Vec3>()>& sample,
-                         const std::function<double(const Vec3&)>& pdf, const Chi2Config& config) {
-    Chi2Result result;
-    const int cells = config.cos_bins * config.phi_bins;
-    const double n = static_cast<double>(config.sample_count);
-    std::vector<double> observed(static_cast<size_t>(cells) + 1, 0.0);
-    std::vector<double> expected(static_cast<size_t>(cells) + 1, 0.0);
+namespace {
 
-    // Histogram of the samples; the last entry counts the failures.
+// Histogram of config.sample_count samples over the cos θ × φ bins, the failures in the last
+// entry; false (with the reason in `message`) on a non-finite or non-unit direction.
+bool histogram(const std::function<std::optional<Vec3>()>& sample, const Chi2Config& config,
+               std::vector<double>& observed, std::string& message) {
+    const int cells = config.cos_bins * config.phi_bins;
     for (size_t i = 0; i < config.sample_count; ++i) {
         const std::optional<Vec3> w = sample();
         if (!w) {
@@ -76,8 +75,8 @@ Chi2Result run_chi2_test(const std::function<std::optional<Vec3>()>& sample,
             continue;
         }
         if (!is_finite(*w) || std::abs(glm::length(*w) - 1.0f) > 1e-3f) {
-            result.message = "sampler returned a non-finite or non-unit direction";
-            return result;
+            message = "sampler returned a non-finite or non-unit direction";
+            return false;
         }
         const double phi = std::atan2(static_cast<double>(w->y), static_cast<double>(w->x));
         const double phi01 = (phi < 0.0 ? phi + 2.0 * M_PI : phi) / (2.0 * M_PI);
@@ -87,9 +86,15 @@ Chi2Result run_chi2_test(const std::function<std::optional<Vec3>()>& sample,
             std::clamp(static_cast<int>(phi01 * config.phi_bins), 0, config.phi_bins - 1);
         ++observed[static_cast<size_t>(ci * config.phi_bins + pi)];
     }
-    result.failed_samples = static_cast<size_t>(observed[static_cast<size_t>(cells)]);
+    return true;
+}
 
-    // Expected counts: ∫ pdf over each bin, with an absolute tolerance far below one sample.
+// Expected counts: ∫ pdf over each bin, with an absolute tolerance far below one sample; the
+// failure entry gets what the pdf leaves of 1. Returns ∫ pdf over the sphere.
+double expected_counts(const std::function<double(const Vec3&)>& pdf, const Chi2Config& config,
+                       std::vector<double>& expected) {
+    const int cells = config.cos_bins * config.phi_bins;
+    const double n = static_cast<double>(config.sample_count);
     const auto density = [&pdf](double cos_theta, double phi) {
         return pdf(sphere_direction(cos_theta, phi));
     };
@@ -104,32 +109,26 @@ Chi2Result run_chi2_test(const std::function<std::optional<Vec3>()>& sample,
             total += integral;
         }
     }
-    result.pdf_integral = total;
     expected[static_cast<size_t>(cells)] = std::max(0.0, 1.0 - total) * n;
+    return total;
+}
 
-    // A direction bin with no density at all that still receives samples is a support error,
-    // whatever the statistic says (the failure bin is exempt: its expectation is a difference).
-    for (int i = 0; i < cells; ++i) {
-        if (expected[static_cast<size_t>(i)] == 0.0 && observed[static_cast<size_t>(i)] > 0.0) {
-            std::ostringstream s;
-            s << "bin " << i << " received " << observed[static_cast<size_t>(i)]
-              << " samples where the pdf is 0";
-            result.message = s.str();
-            return result;
-        }
-    }
-
-    // Pool the bins with small expectations (ascending) into one, as pbrt-v3 does.
+// The χ² statistic over the bins, those with small expectations (ascending) pooled into one as
+// pbrt-v3 does; `used` counts the terms. False where samples fell only in bins of zero
+// expectation.
+bool pooled_statistic(const std::vector<double>& observed, const std::vector<double>& expected,
+                      double min_expected, double& statistic, int& used) {
     std::vector<size_t> order(expected.size());
     std::iota(order.begin(), order.end(), size_t{0});
     std::sort(order.begin(), order.end(),
               [&expected](size_t a, size_t b) { return expected[a] < expected[b]; });
-    double pooled_observed = 0.0, pooled_expected = 0.0, statistic = 0.0;
-    int used = 0;
+    double pooled_observed = 0.0, pooled_expected = 0.0;
+    statistic = 0.0;
+    used = 0;
     for (const size_t i : order) {
         if (expected[i] == 0.0 && observed[i] == 0.0) continue;
-        const bool pool_open = pooled_expected > 0.0 && pooled_expected < config.min_expected;
-        if (expected[i] < config.min_expected || pool_open) {
+        const bool pool_open = pooled_expected > 0.0 && pooled_expected < min_expected;
+        if (expected[i] < min_expected || pool_open) {
             pooled_observed += observed[i];
             pooled_expected += expected[i];
             continue;
@@ -142,6 +141,38 @@ Chi2Result run_chi2_test(const std::function<std::optional<Vec3>()>& sample,
                      pooled_expected;
         ++used;
     } else if (pooled_observed > 0.0) {
+        return false;
+    }
+    return true;
+}
+
+}  // namespace
+
+Chi2Result run_chi2_test(const std::function<std::optional<Vec3>()>& sample,
+                         const std::function<double(const Vec3&)>& pdf, const Chi2Config& config) {
+    Chi2Result result;
+    const int cells = config.cos_bins * config.phi_bins;
+    std::vector<double> observed(static_cast<size_t>(cells) + 1, 0.0);
+    std::vector<double> expected(static_cast<size_t>(cells) + 1, 0.0);
+    if (!histogram(sample, config, observed, result.message)) return result;
+    result.failed_samples = static_cast<size_t>(observed[static_cast<size_t>(cells)]);
+    const double total = expected_counts(pdf, config, expected);
+    result.pdf_integral = total;
+
+    // A direction bin with no density at all that still receives samples is a support error,
+    // whatever the statistic says (the failure bin is exempt: its expectation is a difference).
+    for (int i = 0; i < cells; ++i) {
+        if (expected[static_cast<size_t>(i)] == 0.0 && observed[static_cast<size_t>(i)] > 0.0) {
+            std::ostringstream s;
+            s << "bin " << i << " received " << observed[static_cast<size_t>(i)]
+              << " samples where the pdf is 0";
+            result.message = s.str();
+            return result;
+        }
+    }
+    double statistic = 0.0;
+    int used = 0;
+    if (!pooled_statistic(observed, expected, config.min_expected, statistic, used)) {
         result.message = "samples in bins of zero expectation";
         return result;
     }

@@ -106,6 +106,60 @@ struct Means {
     double all_left = 0.0;
 };
 
+// The region's mean of the clamping compensation (16 passes) with `clamp` and `vsl_radius`
+// (lobe-wise with spheres, as the renderer pairs them).
+double compensation_mean(const scene::Scene& s, const trace::Accel& accel,
+                         const light::LightSampler& lights, const Region& region, float clamp,
+                         float vsl_radius, uint64_t seed) {
+    CompensationOptions k;
+    k.width = k.height = kSize;
+    k.clamp = clamp;
+    k.vsl_radius = vsl_radius;
+    k.max_depth = kMaxDepth;
+    k.seed = seed;
+    ClampCompensation compensation(s, accel, lights, k);
+    for (int pass = 0; pass < 16; ++pass)
+        compensation.add_pass();
+    return region_mean(s.camera, compensation.image(), region);
+}
+
+// The region's mean of the caustic tracer with options `c` (4 passes); `active` is checked.
+double caustic_mean(const scene::Scene& s, const trace::Accel& accel,
+                    const light::LightSampler& lights, const Region& region,
+                    const CausticOptions& c, bool expect_active = false) {
+    CausticTracer caustics(s, accel, lights, c);
+    if (expect_active) {
+        EXPECT_TRUE(caustics.active());
+    }
+    for (int pass = 0; pass < 4; ++pass)
+        caustics.add_pass();
+    return region_mean(s.camera, caustics.image(), region);
+}
+
+// The region's mean of the path tracer at max depth 3, 128 samples a pixel.
+double tracer_mean(const scene::Scene& s, const trace::Accel& accel,
+                   const light::LightSampler& lights, const Region& region, uint64_t seed) {
+    PathTracerOptions o;
+    o.width = o.height = kSize;
+    o.spp = 128;
+    o.max_depth = kMaxDepth;
+    o.seed = seed;
+    o.quiet = true;
+    return region_mean(s.camera, PathTracer(s, accel, lights).render(o), region);
+}
+
+void print_means(const Means& m, float clamp, float vsl_radius) {
+    std::printf("VPLs + caustics %.5f (±%.5f), path tracer %.5f (±%.5f), VPLs alone %.5f",
+                m.with_caustics.mean, m.with_caustics.standard_error, m.tracer.mean,
+                m.tracer.standard_error, m.vpls_alone);
+    if (clamp == 0.0f)
+        std::printf(", VPLs on the chains' class too + caustics %.5f (run 1)", m.double_count);
+    if (clamp > 0.0f)
+        std::printf(", caustics not leaving the compensation its share %.5f", m.unweighted);
+    if (clamp > 0.0f && vsl_radius > 0.0f) std::printf(", leaving it all of it %.5f", m.all_left);
+    std::printf("\n");
+}
+
 // Over kRuns independent seeds (r + 1), the region's mean of the VPL oracle + caustics and of the
 // path tracer at max depth 3. The oracle has point VPLs and the chains on (the renderer's
 // partition: path_partition.h), its light tracer leaving no VPL on the chains' class; it is
@@ -139,18 +193,8 @@ Means compare_with_tracer(const scene::Scene& s, const Region& region, float cla
             return region_mean(s.camera, gather_vpls(s, accel, vpls, g), region);
         };
         double vpl = vpl_mean(mc);
-        if (clamp > 0.0f) {
-            CompensationOptions k;
-            k.width = k.height = kSize;
-            k.clamp = clamp;
-            k.vsl_radius = vsl_radius;  // lobe-wise with spheres, as the renderer pairs them
-            k.max_depth = kMaxDepth;
-            k.seed = seed;
-            ClampCompensation compensation(s, accel, lights, k);
-            for (int pass = 0; pass < 16; ++pass)
-                compensation.add_pass();
-            vpl += region_mean(s.camera, compensation.image(), region);
-        }
+        if (clamp > 0.0f)
+            vpl += compensation_mean(s, accel, lights, region, clamp, vsl_radius, seed);
         CausticOptions c;
         c.width = c.height = kSize;
         c.max_depth = kMaxDepth;
@@ -159,34 +203,18 @@ Means compare_with_tracer(const scene::Scene& s, const Region& region, float cla
         c.paths_per_pass = 8192;
         c.clamp = clamp;
         c.vsl_radius = vsl_radius;
-        CausticTracer caustics(s, accel, lights, c);
-        EXPECT_TRUE(caustics.active());
-        for (int pass = 0; pass < 4; ++pass)
-            caustics.add_pass();
-        const double caustic = region_mean(s.camera, caustics.image(), region);
-        PathTracerOptions o;
-        o.width = o.height = kSize;
-        o.spp = 128;
-        o.max_depth = kMaxDepth;
-        o.seed = seed;
-        o.quiet = true;
-        tracer.push_back(region_mean(s.camera, PathTracer(s, accel, lights).render(o), region));
+        const double caustic = caustic_mean(s, accel, lights, region, c, true);
+        tracer.push_back(tracer_mean(s, accel, lights, region, seed));
         sum.push_back(vpl + caustic);
         vpl_only.push_back(vpl);
         if (run == 0) {
             if (clamp > 0.0f) {
                 c.clamp = 0.0f;
-                CausticTracer full(s, accel, lights, c);
-                for (int pass = 0; pass < 4; ++pass)
-                    full.add_pass();
-                unweighted.push_back(vpl + region_mean(s.camera, full.image(), region));
+                unweighted.push_back(vpl + caustic_mean(s, accel, lights, region, c));
                 if (vsl_radius > 0.0f) {
                     c.clamp = clamp;
                     c.vsl_radius = 0.0f;
-                    CausticTracer all(s, accel, lights, c);
-                    for (int pass = 0; pass < 4; ++pass)
-                        all.add_pass();
-                    all_left.push_back(vpl + region_mean(s.camera, all.image(), region));
+                    all_left.push_back(vpl + caustic_mean(s, accel, lights, region, c));
                 }
             }
             mc.tracer.specular = light::ChainOptions{};
@@ -200,15 +228,7 @@ Means compare_with_tracer(const scene::Scene& s, const Region& region, float cla
     if (!doubled.empty()) m.double_count = doubled.front();
     if (!unweighted.empty()) m.unweighted = unweighted.front();
     if (!all_left.empty()) m.all_left = all_left.front();
-    std::printf("VPLs + caustics %.5f (±%.5f), path tracer %.5f (±%.5f), VPLs alone %.5f",
-                m.with_caustics.mean, m.with_caustics.standard_error, m.tracer.mean,
-                m.tracer.standard_error, m.vpls_alone);
-    if (clamp == 0.0f)
-        std::printf(", VPLs on the chains' class too + caustics %.5f (run 1)", m.double_count);
-    if (clamp > 0.0f)
-        std::printf(", caustics not leaving the compensation its share %.5f", m.unweighted);
-    if (clamp > 0.0f && vsl_radius > 0.0f) std::printf(", leaving it all of it %.5f", m.all_left);
-    std::printf("\n");
+    print_means(m, clamp, vsl_radius);
     return m;
 }
 

@@ -1,6 +1,7 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <vector>
 
 #include "engine/core/image.h"
 #include "engine/core/subpixel.h"
@@ -71,16 +72,8 @@ TEST_F(ShadingTest, APointVplOverADiffusePlaneGivesTheAnalyticDirectLight) {
     RecordProperty("worst_relative_error", std::to_string(worst));
 }
 
-TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) {
-    scene::Material glossy;
-    glossy.base_color = Rgb(0.7f, 0.5f, 0.3f);
-    glossy.metallic = 0.3f;
-    glossy.roughness = 0.35f;
-    glossy.specular = 0.8f;
-    glossy.specular_color = Rgb(1.0f, 0.9f, 0.95f);
-    glossy.ior = 1.6f;
-    const scene::Scene scene = floor_scene(glossy);
-
+// A glossy surface VPL, an area, a spot and a directional VPL above floor_scene's plane.
+std::vector<light::Vpl> mixed_vpls() {
     std::vector<light::Vpl> vpls(4);
     light::Vpl& surface = vpls[0];
     surface.type = light::VplType::Surface;
@@ -112,6 +105,20 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
     directional.type = light::VplType::Directional;
     directional.normal = glm::normalize(Vec3(0.5f, -1.0f, 0.2f));
     directional.power = Rgb(0.3f, 0.2f, 0.1f);
+    return vpls;
+}
+
+TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) {
+    scene::Material glossy;
+    glossy.base_color = Rgb(0.7f, 0.5f, 0.3f);
+    glossy.metallic = 0.3f;
+    glossy.roughness = 0.35f;
+    glossy.specular = 0.8f;
+    glossy.specular_color = Rgb(1.0f, 0.9f, 0.95f);
+    glossy.ior = 1.6f;
+    const scene::Scene scene = floor_scene(glossy);
+
+    const std::vector<light::Vpl> vpls = mixed_vpls();
 
     VplRenderer renderer(context(), scene);
     RenderOptions options;

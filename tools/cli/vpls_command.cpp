@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <vector>
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
@@ -95,6 +96,44 @@ void draw_dot(Image& image, const Vec2& c, float radius, const Rgb& colour) {
     }
 }
 
+// The scene as the view sees it, flat grey.
+Image flat_view(const scene::Scene& scene, const trace::Accel& accel, const View& view) {
+    Image image(view.width, view.height);
+    for (int y = 0; y < view.height; ++y) {
+        for (int x = 0; x < view.width; ++x) {
+            const trace::Ray ray = view.ray(float(x) + 0.5f, float(y) + 0.5f);
+            const auto si = first_front_hit(scene, accel, ray);
+            // Flat grey by the angle to the view direction: walls and floors stay apart.
+            const float shade =
+                si ? 0.05f + 0.25f * std::abs(glm::dot(si->ng, glm::normalize(ray.direction)))
+                   : 0.0f;
+            image.at(x, y) = Rgb(shade);
+        }
+    }
+    return image;
+}
+
+// The VPLs the view sees as dots over `image`; how many were drawn.
+size_t draw_vpls(Image& image, const View& view, const std::vector<light::Vpl>& vpls) {
+    float max_power = 0.0f;
+    for (const light::Vpl& v : vpls)
+        max_power = std::max(max_power, luminance(v.power));
+    // Powers as the sampler weighted them, relative to the largest: area ∝ power, at least a
+    // pixel wide.
+    size_t drawn = 0;
+    for (const light::Vpl& v : vpls) {
+        Vec2 film;
+        if (v.type == light::VplType::Directional || !view.project(v.position, film)) continue;
+        const float rel = max_power > 0.0f ? luminance(v.power) / max_power : 0.0f;
+        const float radius =
+            0.8f + 0.004f * float(std::min(view.width, view.height)) * std::sqrt(rel);
+        const bool emitter = v.path_length == 0;
+        draw_dot(image, film, radius, emitter ? Rgb(1.0f, 0.9f, 0.2f) : Rgb(1.0f, 0.35f, 0.1f));
+        ++drawn;
+    }
+    return drawn;
+}
+
 }  // namespace
 
 int run_vpls(const Args& args) {
@@ -149,33 +188,8 @@ int run_vpls(const Args& args) {
     stream->next(count, vpls);
 
     const View view = make_view(scene, view_name == "top", width, height);
-    Image image(width, height);
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const trace::Ray ray = view.ray(float(x) + 0.5f, float(y) + 0.5f);
-            const auto si = first_front_hit(scene, accel, ray);
-            // Flat grey by the angle to the view direction: walls and floors stay apart.
-            const float shade =
-                si ? 0.05f + 0.25f * std::abs(glm::dot(si->ng, glm::normalize(ray.direction)))
-                   : 0.0f;
-            image.at(x, y) = Rgb(shade);
-        }
-    }
-    float max_power = 0.0f;
-    for (const light::Vpl& v : vpls)
-        max_power = std::max(max_power, luminance(v.power));
-    // Powers as the sampler weighted them, relative to the largest: area ∝ power, at least a
-    // pixel wide.
-    size_t drawn = 0;
-    for (const light::Vpl& v : vpls) {
-        Vec2 film;
-        if (v.type == light::VplType::Directional || !view.project(v.position, film)) continue;
-        const float rel = max_power > 0.0f ? luminance(v.power) / max_power : 0.0f;
-        const float radius = 0.8f + 0.004f * float(std::min(width, height)) * std::sqrt(rel);
-        const bool emitter = v.path_length == 0;
-        draw_dot(image, film, radius, emitter ? Rgb(1.0f, 0.9f, 0.2f) : Rgb(1.0f, 0.35f, 0.1f));
-        ++drawn;
-    }
+    Image image = flat_view(scene, accel, view);
+    const size_t drawn = draw_vpls(image, view, vpls);
     write_images(image, outputs);
     say_written("vpls", outputs, defaulted, quiet);
     if (!quiet) {

@@ -58,14 +58,14 @@ std::string inflate_stream(const std::string& path, const std::string& data, siz
     return out;
 }
 
-}  // namespace
+// One shape's stream, inflated, and the file's format version.
+struct ShapeData {
+    std::string bytes;
+    uint16_t version = 0;
+};
 
-Mesh read_serialized_mesh(const std::string& path, int shape_index, bool* face_normals) {
-    require_regular_file(path);
-    std::ifstream file(path, std::ios::binary);
-    if (!file) throw InputError(path, "cannot open the file");
-    const std::string data((std::istreambuf_iterator<char>(file)),
-                           std::istreambuf_iterator<char>());
+// Shape `shape_index` of the file's `data`, found through the table at the file's end.
+ShapeData shape_data(const std::string& path, const std::string& data, int shape_index) {
     if (data.size() < 8 || read_le<uint16_t>(data, 0) != kMagic)
         throw InputError(path, "not a Mitsuba serialized mesh (bad header)");
     const uint16_t version = read_le<uint16_t>(data, 2);
@@ -84,37 +84,23 @@ Mesh read_serialized_mesh(const std::string& path, int shape_index, bool* face_n
     if (offset + 4 >= table || read_le<uint16_t>(data, size_t(offset)) != kMagic)
         throw InputError(path, "shape " + std::to_string(shape_index) + " has a bad offset");
     const uint64_t limit = std::min<uint64_t>(kMaxInflated, (table - offset) * 1100 + 4096);
-    const std::string s = inflate_stream(path, data, size_t(offset) + 4, limit);
+    return {inflate_stream(path, data, size_t(offset) + 4, limit), version};
+}
 
+// A shape's stream read front to back, every read checked against its end.
+struct ShapeReader {
+    const std::string& path;
+    int shape_index;
+    const std::string& s;
     size_t at = 0;
-    const auto need = [&](uint64_t bytes) {
+
+    void need(uint64_t bytes) const {
         if (bytes > s.size() || at > s.size() - bytes)
             throw InputError(path, "shape " + std::to_string(shape_index) + " is truncated");
-    };
-    need(4);
-    const uint32_t flags = read_le<uint32_t>(s, at);
-    at += 4;
-    Mesh mesh;
-    if (version == 4) {
-        const size_t end = s.find('\0', at);
-        if (end == std::string::npos) throw InputError(path, "unterminated shape name");
-        mesh.name = s.substr(at, end - at);
-        at = end + 1;
     }
-    if (mesh.name.empty()) mesh.name = std::filesystem::path(path).stem().string();
-    need(16);
-    const uint64_t vertices = read_le<uint64_t>(s, at);
-    const uint64_t triangles = read_le<uint64_t>(s, at + 8);
-    at += 16;
-    if (vertices > kMaxVertices || triangles > kMaxTriangles || vertices == 0 || triangles == 0)
-        throw InputError(path, "shape " + std::to_string(shape_index) + " has " +
-                                   std::to_string(vertices) + " vertices and " +
-                                   std::to_string(triangles) + " triangles");
-    const bool doubles = (flags & kDouble) != 0;
-    if (doubles == ((flags & kSingle) != 0))
-        throw InputError(path, "the flags name neither single nor double precision");
-    const size_t real = doubles ? 8 : 4;
-    const auto read_reals = [&](size_t n) {
+    // n reals (doubles or floats in the stream) as floats, each finite and within range.
+    std::vector<float> read_reals(size_t n, bool doubles) {
+        const size_t real = doubles ? 8 : 4;
         need(uint64_t(n) * real);
         std::vector<float> out(n);
         for (size_t i = 0; i < n; ++i) {
@@ -127,32 +113,78 @@ Mesh read_serialized_mesh(const std::string& path, int shape_index, bool* face_n
         }
         at += n * real;
         return out;
-    };
-    const std::vector<float> p = read_reals(size_t(vertices) * 3);
+    }
+};
+
+// The per-vertex arrays that `flags` announce, in the stream's order.
+void read_vertex_data(ShapeReader& r, uint32_t flags, bool doubles, uint64_t vertices, Mesh& mesh) {
+    const std::vector<float> p = r.read_reals(size_t(vertices) * 3, doubles);
     for (size_t i = 0; i < vertices; ++i)
         mesh.positions.emplace_back(p[3 * i], p[3 * i + 1], p[3 * i + 2]);
     if (flags & kHasNormals) {
-        const std::vector<float> n = read_reals(size_t(vertices) * 3);
+        const std::vector<float> n = r.read_reals(size_t(vertices) * 3, doubles);
         for (size_t i = 0; i < vertices; ++i)
             mesh.normals.emplace_back(n[3 * i], n[3 * i + 1], n[3 * i + 2]);
     }
     if (flags & kHasUvs) {
-        const std::vector<float> uv = read_reals(size_t(vertices) * 2);
+        const std::vector<float> uv = r.read_reals(size_t(vertices) * 2, doubles);
         for (size_t i = 0; i < vertices; ++i)
             mesh.uv0.emplace_back(uv[2 * i], uv[2 * i + 1]);
     }
-    if (flags & kHasColors) read_reals(size_t(vertices) * 3);  // not used by any BSDF we map
+    if (flags & kHasColors)
+        r.read_reals(size_t(vertices) * 3, doubles);  // not used by any BSDF we map
+}
+
+// The triangles' vertex indices, 64-bit where the vertex count needs them.
+void read_indices(ShapeReader& r, uint64_t vertices, uint64_t triangles, Mesh& mesh) {
     const bool wide = vertices > uint64_t(UINT32_MAX);
-    need(triangles * 3 * (wide ? 8 : 4));
+    r.need(triangles * 3 * (wide ? 8 : 4));
     mesh.indices.resize(size_t(triangles) * 3);
     for (size_t i = 0; i < mesh.indices.size(); ++i) {
         const uint64_t index =
-            wide ? read_le<uint64_t>(s, at + i * 8) : read_le<uint32_t>(s, at + i * 4);
+            wide ? read_le<uint64_t>(r.s, r.at + i * 8) : read_le<uint32_t>(r.s, r.at + i * 4);
         if (index >= vertices)
-            throw InputError(path, "shape " + std::to_string(shape_index) + ": index " +
-                                       std::to_string(index) + " is out of range");
+            throw InputError(r.path, "shape " + std::to_string(r.shape_index) + ": index " +
+                                         std::to_string(index) + " is out of range");
         mesh.indices[i] = uint32_t(index);
     }
+}
+
+}  // namespace
+
+Mesh read_serialized_mesh(const std::string& path, int shape_index, bool* face_normals) {
+    require_regular_file(path);
+    std::ifstream file(path, std::ios::binary);
+    if (!file) throw InputError(path, "cannot open the file");
+    const std::string data((std::istreambuf_iterator<char>(file)),
+                           std::istreambuf_iterator<char>());
+    const ShapeData shape = shape_data(path, data, shape_index);
+    const std::string& s = shape.bytes;
+    ShapeReader r{path, shape_index, s};
+    r.need(4);
+    const uint32_t flags = read_le<uint32_t>(s, r.at);
+    r.at += 4;
+    Mesh mesh;
+    if (shape.version == 4) {
+        const size_t end = s.find('\0', r.at);
+        if (end == std::string::npos) throw InputError(path, "unterminated shape name");
+        mesh.name = s.substr(r.at, end - r.at);
+        r.at = end + 1;
+    }
+    if (mesh.name.empty()) mesh.name = std::filesystem::path(path).stem().string();
+    r.need(16);
+    const uint64_t vertices = read_le<uint64_t>(s, r.at);
+    const uint64_t triangles = read_le<uint64_t>(s, r.at + 8);
+    r.at += 16;
+    if (vertices > kMaxVertices || triangles > kMaxTriangles || vertices == 0 || triangles == 0)
+        throw InputError(path, "shape " + std::to_string(shape_index) + " has " +
+                                   std::to_string(vertices) + " vertices and " +
+                                   std::to_string(triangles) + " triangles");
+    const bool doubles = (flags & kDouble) != 0;
+    if (doubles == ((flags & kSingle) != 0))
+        throw InputError(path, "the flags name neither single nor double precision");
+    read_vertex_data(r, flags, doubles, vertices, mesh);
+    read_indices(r, vertices, triangles, mesh);
     if (face_normals) *face_normals = (flags & kFaceNormals) != 0;
     return mesh;
 }
