@@ -126,7 +126,7 @@ Image VplIntegrator::finish() {
         image = shared_image(true);
     } else {
         image = vpl_image();
-        add_image(image, finish_cpu(m_pacing));
+        add_cpu_finished(image, m_pacing);
     }
     m_stats.shading_seconds += shading.seconds();
     return image;
@@ -137,8 +137,14 @@ Image VplIntegrator::cpu_image() const {
 }
 
 Image VplIntegrator::finish_cpu(Pacing pacing) {
-    m_cpu->pace(m_stats.vpls, pacing);
     Image sum(int(m_estimate.render.width), int(m_estimate.render.height));
+    add_cpu_finished(sum, pacing);
+    return sum;
+}
+
+// Each estimator's image added on its own, in this order: the same sums, to the bit, whoever asks.
+void VplIntegrator::add_cpu_finished(Image& sum, Pacing pacing) {
+    m_cpu->pace(m_stats.vpls, pacing);
     // Interrupted (interrupt.h): the passes done, not those allowed.
     const bool wait = pacing == Pacing::Fixed && !interrupted();
     if (CpuEstimatorThread* t = m_cpu->compensation_thread()) {
@@ -149,7 +155,6 @@ Image VplIntegrator::finish_cpu(Pacing pacing) {
         add_image(sum, t->finish(wait));
         m_stats.caustic_passes = t->passes();
     }
-    return sum;
 }
 
 // Over ranks: the contributions and the CPU images' pass sums summed to rank 0, which resolves.

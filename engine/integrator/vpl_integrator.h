@@ -80,6 +80,7 @@ public:
 private:
     bool shared() const { return m_ranks.size() > 1; }
     Image vpl_image();
+    void add_cpu_finished(Image& sum, Pacing pacing);
     Image shared_image(bool finishing);
 
     cluster::Cluster& m_ranks;
