@@ -7,6 +7,11 @@
 #include "shaders/shared/closure.h"
 
 namespace mvpl::material {
+
+// shading_math_glsl.cpp.in
+extern const std::string_view kShadingConstantsGlsl;
+extern const std::string_view kShadingMathGlsl;
+
 namespace {
 
 using Deps = std::array<std::string_view, 5>;
@@ -17,16 +22,21 @@ struct Entry {
     std::string_view code;
 };
 
-// Line for line the C++ of fresnel.h, microfacet.*, lambertian.h, conductor.*,
-// dielectric_diffuse.*, bsdf.cpp and closure.h, in world space where the CPU uses the local
-// frame: w.z = dot(n, w) and w.x² + w.y² = |n × w|² (the cross product keeps the small sines of
-// glossy lobes free of the cancellation in 1 − cos²).
+// Fresnel and the GGX terms are shaders/shared/shading_math.h's, which C++ compiles too; the
+// closures' evaluation below is line for line the C++ of lambertian.h, conductor.*,
+// dielectric_diffuse.*, bsdf.cpp and closure.h, in world space where the CPU uses the local frame
+// (shading_math.h says why).
 const Entry kEntries[] = {
-    {"constants", {}, R"(const float kPi = 3.14159265358979323846;
-const float kInvPi = 0.31830988618379067154;
-const float kMinAlpha = 1e-4;  // microfacet.h
-const float kMinCos = 1e-7;    // microfacet.h
-)"},
+    // shaders/shared/shading_constants.h and shading_math.h, as C++ compiles them: the
+    // functions by name below.
+    {"constants", {}, kShadingConstantsGlsl},
+    {"shading_math", {"constants"}, kShadingMathGlsl},
+    {"schlick_weight", {"shading_math"}, ""},
+    {"fresnel_schlick", {"shading_math"}, ""},
+    {"f0_from_ior", {"shading_math"}, ""},
+    {"roughness_to_alpha", {"shading_math"}, ""},
+    {"ggx_d", {"shading_math"}, ""},
+    {"ggx_visibility", {"shading_math"}, ""},
     {"Closure", {}, shared::kClosureGlsl},
     {"SurfacePoint",
      {},
@@ -60,60 +70,6 @@ float alpha_hash(vec3 p, uint seed) {
 )"},
     {"max_component", {}, R"(float max_component(vec3 v) {
     return max(v.r, max(v.g, v.b));
-}
-)"},
-    {"schlick_weight", {}, R"(float schlick_weight(float cos_theta) {
-    const float m = clamp(1.0 - abs(cos_theta), 0.0, 1.0);
-    const float m2 = m * m;
-    return m2 * m2 * m;
-}
-)"},
-    {"fresnel_schlick",
-     {"schlick_weight"},
-     R"(vec3 fresnel_schlick(vec3 f0, vec3 f90, float cos_theta) {
-    return f0 + (f90 - f0) * schlick_weight(cos_theta);
-}
-float fresnel_schlick(float f0, float f90, float cos_theta) {
-    return f0 + (f90 - f0) * schlick_weight(cos_theta);
-}
-)"},
-    {"f0_from_ior", {}, R"(float f0_from_ior(float ior) {
-    const float n = max(ior, 0.0);
-    const float r = (n - 1.0) / (n + 1.0);
-    return r * r;
-}
-)"},
-    {"roughness_to_alpha", {"constants"}, R"(float roughness_to_alpha(float roughness) {
-    const float r = clamp(roughness, 0.0, 1.0);
-    return max(r * r, kMinAlpha);
-}
-)"},
-    {"sin2_about", {}, R"(float sin2_about(vec3 n, vec3 w) {
-    const vec3 c = cross(n, w);
-    return dot(c, c);
-}
-)"},
-    {"ggx_d", {"constants", "sin2_about"}, R"(float ggx_d(vec3 n, vec3 h, float alpha) {
-    const float a2 = alpha * alpha;
-    const float hz = dot(n, h);
-    const float denom = sin2_about(n, h) + a2 * hz * hz;
-    if (!(denom > 0.0)) return 0.0;
-    return a2 / (kPi * denom * denom);
-}
-)"},
-    {"ggx_stretched_length",
-     {"sin2_about"},
-     R"(float ggx_stretched_length(vec3 n, vec3 w, float alpha) {
-    const float z = dot(n, w);
-    return sqrt(z * z + alpha * alpha * sin2_about(n, w));
-}
-)"},
-    {"ggx_visibility",
-     {"constants", "ggx_stretched_length"},
-     R"(float ggx_visibility(vec3 n, vec3 wo, vec3 wi, float alpha) {
-    const float co = max(dot(n, wo), kMinCos);
-    const float ci = max(dot(n, wi), kMinCos);
-    return 0.5 / (ci * ggx_stretched_length(n, wo, alpha) + co * ggx_stretched_length(n, wi, alpha));
 }
 )"},
     {"ggx_reflection",

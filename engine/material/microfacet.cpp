@@ -2,15 +2,6 @@
 
 namespace mvpl::material {
 
-float ggx_d(const Vec3& h, float alpha) {
-    const float a2 = alpha * alpha;
-    // h.x² + h.y² + α² h.z² ≥ α² h.z² > 0 for any h above the horizon, and ≥ h.x² + h.y² = 1 at
-    // the horizon: never zero for a unit h with alpha ≥ kMinAlpha.
-    const float denom = h.x * h.x + h.y * h.y + a2 * h.z * h.z;
-    if (!(denom > 0.0f)) return 0.0f;
-    return a2 / (kPi * denom * denom);
-}
-
 float ggx_lambda(const Vec3& w, float alpha) {
     const float c = std::max(w.z, kMinCos);
     return 0.5f * (ggx_stretched_length(w, alpha) / c - 1.0f);
@@ -29,13 +20,6 @@ float ggx_g2(const Vec3& wo, const Vec3& wi, float alpha) {
     const float ci = std::max(wi.z, 0.0f);
     const float denom = ci * ggx_stretched_length(wo, alpha) + co * ggx_stretched_length(wi, alpha);
     return denom > 0.0f ? 2.0f * co * ci / denom : 0.0f;
-}
-
-float ggx_visibility(const Vec3& wo, const Vec3& wi, float alpha) {
-    const float co = std::max(wo.z, kMinCos);
-    const float ci = std::max(wi.z, kMinCos);
-    // A(w) ≥ cos θ ≥ kMinCos, so the denominator is ≥ 2 kMinCos²: finite.
-    return 0.5f / (ci * ggx_stretched_length(wo, alpha) + co * ggx_stretched_length(wi, alpha));
 }
 
 Vec3 ggx_sample_visible_normal(const Vec3& wo, float alpha, const Vec2& u) {

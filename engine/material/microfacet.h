@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "engine/core/math.h"
+#include "shaders/shared/shading_math.h"
 
 namespace mvpl::material {
 
@@ -21,26 +22,29 @@ namespace mvpl::material {
 // half vector normalize(wo + wi) computed in float (~1e-7 rad), so eval(wo, sample().wi)
 // reproduces the density that the sampler drew from — on the CPU and on the GPU alike. A lobe of
 // 1e-4 rad (0.006°) is a mirror for any image this renderer makes.
-inline constexpr float kMinAlpha = 1e-4f;
+// (shaders/shared/shading_math.h holds the value, for C++ and GLSL.)
+using shared::math::kMinAlpha;
 
 // Cosines below this are treated as this value inside the microfacet terms, so that the
 // visibility term V below (≤ 1 / (4 kMinCos · kMinAlpha)) stays finite at the horizon.
-inline constexpr float kMinCos = 1e-7f;
+using shared::math::kMinCos;
 
-inline float roughness_to_alpha(float roughness) {
-    const float r = std::clamp(roughness, 0.0f, 1.0f);
-    return std::max(r * r, kMinAlpha);
-}
+using shared::math::roughness_to_alpha;
+
+// The local frame's normal: shading_math.h's functions take the normal, which is z here.
+inline constexpr Vec3 kLocalNormal{0.0f, 0.0f, 1.0f};
 
 // D(h) = α² / (π (h.x² + h.y² + α² h.z²)²), which is Walter et al. eq. 33 rewritten for a unit h
 // without tan θ, so that h = n (tan θ = 0) and h at the horizon (cos θ = 0) need no special case
 // and 1 − cos² θ never cancels catastrophically for small α.
-float ggx_d(const Vec3& h, float alpha);
+inline float ggx_d(const Vec3& h, float alpha) {
+    return shared::math::ggx_d(kLocalNormal, h, alpha);
+}
 
 // √(cos² θ + α² sin² θ): the length of the direction stretched by α (Heitz 2018, sec. 3.2). It is
 // the one expression that Λ, G1 and the visibility term share.
 inline float ggx_stretched_length(const Vec3& w, float alpha) {
-    return std::sqrt(w.z * w.z + alpha * alpha * (w.x * w.x + w.y * w.y));
+    return shared::math::ggx_stretched_length(kLocalNormal, w, alpha);
 }
 
 // Smith Λ for GGX (Heitz 2014, eq. 72): Λ = (√(1 + α² tan² θ) − 1) / 2, evaluated as
@@ -54,7 +58,9 @@ float ggx_g2(const Vec3& wo, const Vec3& wi, float alpha);
 // The specular "visibility" V = G2 / (4 cos θo cos θi) in the division-safe form
 // V = 0.5 / (cos θi A(wo) + cos θo A(wi)) (multiply numerator and denominator of
 // 1/(1 + Λo + Λi) by 2 cos θo cos θi). Cosines are clamped at kMinCos.
-float ggx_visibility(const Vec3& wo, const Vec3& wi, float alpha);
+inline float ggx_visibility(const Vec3& wo, const Vec3& wi, float alpha) {
+    return shared::math::ggx_visibility(kLocalNormal, wo, wi, alpha);
+}
 
 // Heitz 2018, listing 1: a microfacet normal distributed as the visible normals seen from wo,
 // D_wo(h) = G1(wo) max(0, wo·h) D(h) / cos θo. Requires wo.z > 0; h.z ≥ 0.

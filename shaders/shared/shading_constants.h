@@ -1,0 +1,21 @@
+// The constants of the shading mathematics (shading_math.h), for C++ and GLSL: a shader that
+// evaluates only Lambertian closures needs these and nothing else of it.
+#ifndef MVPL_SHADERS_SHARED_SHADING_CONSTANTS_H
+#define MVPL_SHADERS_SHARED_SHADING_CONSTANTS_H
+
+#ifdef __cplusplus
+namespace mvpl::shared::math {
+#endif
+
+const float kPi = 3.14159265358979323846f;
+const float kInvPi = 0.31830988618379067154f;
+// Smallest GGX alpha evaluated, and the smallest cosine inside the microfacet terms: why these
+// values, engine/material/microfacet.h.
+const float kMinAlpha = 1e-4f;
+const float kMinCos = 1e-7f;
+
+#ifdef __cplusplus
+}  // namespace mvpl::shared::math
+#endif
+
+#endif
