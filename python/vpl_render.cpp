@@ -81,6 +81,7 @@ Image render_vpls(const SceneHandle& scene, const std::vector<std::string>& toke
         scene.session_for(parser, a.camera.choice, a.environment.choice);
     cli::apply_scene_defaults(parser, session->scene(), &a.settings.tracer.max_depth, &a.width,
                               &a.height);
+    cli::apply_vpl_integrator_defaults(parser, *session, a.settings.tracer.max_depth, a.renderer);
     session->warn_if_no_light("the image shows emitters only");
     const Shading shading = make_shading(a, *session);
     const integrator::Estimate estimate = cli::render_estimate(parser, a, session->scene());

@@ -226,6 +226,7 @@ int run_convergence(const Args& args) {
         loaded = std::make_unique<session::SceneSession>(scene_path, camera.choice,
                                                          environment.choice, scene_file.options);
         apply_scene_defaults(parser, loaded->scene(), &settings.tracer.max_depth, nullptr, nullptr);
+        apply_vpl_integrator_defaults(parser, *loaded, settings.tracer.max_depth, renderer_args);
         if (ranks.root()) create_output_folder(out_dir);
     });
     if (!parsed) return 0;

@@ -69,6 +69,7 @@ int run_render(const Args& args) {
             a.scene_path, a.camera.choice, a.environment.choice, a.scene_file.options);
         apply_scene_defaults(parser, session->scene(), &a.settings.tracer.max_depth, &a.width,
                              &a.height);
+        apply_vpl_integrator_defaults(parser, *session, a.settings.tracer.max_depth, a.renderer);
         session->warn_if_no_light("the image shows emitters only");
         if (!a.oracle) {
             gpu::ContextOptions co;
