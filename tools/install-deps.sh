@@ -25,6 +25,10 @@ packages=(
   libopenmpi-dev openmpi-bin
   # convergence plots (tools/plot_convergence.py)
   python3-matplotlib
+  # the Python module (python/; optional: -DMVPL_PYTHON=OFF builds without)
+  python3-dev python3-numpy pybind11-dev
+  # the man page (optional: without help2man the install has none) and `man -l` in its test
+  help2man man-db
   # the loaders' fuzz target (tests/fuzz): clang with libFuzzer and its sanitizer runtimes
   clang libclang-rt-14-dev
 )

@@ -10,24 +10,9 @@
 #include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
 #include "engine/core/interrupt.h"
-#include "tools/cli/commands.h"
+#include "tools/cli/command_table.h"
 
 namespace {
-
-constexpr const char* kUsage =
-    "usage: mvpl COMMAND [options]\n"
-    "\n"
-    "commands:\n"
-    "  render SCENE      render with virtual point lights on the GPU\n"
-    "  reference SCENE   render with the CPU reference path tracer\n"
-    "  compare A B       error of image A against reference B\n"
-    "  info              Vulkan devices and their limits\n"
-    "  preview SCENE     interactive window, refining while the camera rests\n"
-    "  vpls SCENE        where a sampler puts its VPLs, drawn over the scene\n"
-    "  bench SCENE       VPL throughput: light paths, shadow and shading passes, memory\n"
-    "  convergence SCENE error against run time: path tracer and VPL samplers vs --ref\n"
-    "\n"
-    "`mvpl COMMAND --help` describes a command's options.\n";
 
 // Errors are one line: embedded newlines (from libraries) are folded.
 std::string one_line(std::string text) {
@@ -47,8 +32,8 @@ void silence_other_ranks(const mvpl::cluster::Cluster& ranks) {
 
 int run(const std::string& command, const mvpl::cli::Args& args) {
     using namespace mvpl;
-    if (cluster::world().size() > 1 && command != "render" && command != "bench" &&
-        command != "convergence") {
+    const cli::Command* found = cli::find_command(command);
+    if (found && cluster::world().size() > 1 && !found->over_ranks) {
         // Every rank refuses alike, so no rank waits for another: no MPI_Abort needed.
         const std::string what =
             "under mpirun only `mvpl render`, `mvpl bench` and `mvpl convergence` share their "
@@ -56,20 +41,13 @@ int run(const std::string& command, const mvpl::cli::Args& args) {
             command + "' as one process";
         throw cluster::RankFailure(what, 2, 0);
     }
-    if (command == "reference") return cli::run_reference(args);
-    if (command == "render") return cli::run_render(args);
-    if (command == "compare") return cli::run_compare(args);
-    if (command == "info") return cli::run_info(args);
-    if (command == "preview") return cli::run_preview(args);
-    if (command == "vpls") return cli::run_vpls(args);
-    if (command == "bench") return cli::run_bench(args);
-    if (command == "convergence") return cli::run_convergence(args);
+    if (found) return found->run(args);
     if (command == "--help" || command == "-h" || command == "help") {
-        std::fputs(kUsage, stdout);
+        std::fputs(cli::usage_text().c_str(), stdout);
         return 0;
     }
     if (command == "--version") {
-        std::puts("mvpl 0.1.0");
+        std::puts("mvpl " MVPL_VERSION);
         return 0;
     }
     throw UsageError("unknown command '" + command + "' (see mvpl --help)");
@@ -82,7 +60,7 @@ int main(int argc, char** argv) {
     if (argc < 2) {
         // As git does: the command list for the newcomer on stdout; the project's one error line
         // and exit code 2 for scripts.
-        std::fputs(kUsage, stdout);
+        std::fputs(cli::usage_text().c_str(), stdout);
         std::fputs("mvpl: error: no command given (see mvpl --help)\n", stderr);
         return 2;
     }

@@ -142,6 +142,12 @@ struct Scene {
     int max_depth = 0;  // Mitsuba's max_depth (−1 unlimited)
     int film_width = 0;
     int film_height = 0;
+    // Mitsuba 0.6's `vpl` integrator: its shadowMapResolution, the default --shadow-res (0: no
+    // such integrator), and its clamping, relative to each VPL's nearest and farthest geometry,
+    // which the command line turns into the default --clamp (sampler/mitsuba_clamping.h;
+    // negative: no such integrator).
+    int shadow_resolution = 0;
+    float vpl_clamping = -1.0f;
 
     Bounds bounds() const;
     size_t triangle_count() const;

@@ -372,8 +372,8 @@ TEST(Cli, BadInputCorpus) {
 // Each command's --help: exit 0, nothing on stderr, its usage line, and a value name for every
 // option that takes one (never the old placeholder VALUE).
 TEST(Cli, EveryCommandsHelpExitsZero) {
-    for (const std::string command :
-         {"render", "reference", "compare", "info", "preview", "vpls", "bench", "convergence"}) {
+    for (const std::string command : {"render", "reference", "compare", "info", "preview", "vpls",
+                                      "bench", "convergence", "completion"}) {
         for (const std::string flag : {" --help", " -h"}) {
             SCOPED_TRACE(command + flag);
             const auto r = run_mvpl(command + flag);
@@ -386,6 +386,16 @@ TEST(Cli, EveryCommandsHelpExitsZero) {
     const auto top = run_mvpl("--help");
     EXPECT_EQ(top.exit_code, 0);
     EXPECT_NE(top.out.find("commands:"), std::string::npos);
+}
+
+// `mvpl completion` (issue 34): bash only; its script lists every command.
+TEST(Cli, CompletionIsForBash) {
+    expect_one_line_error(run_mvpl("completion zsh"), "completion: SHELL must be bash, not 'zsh'");
+    const auto r = run_mvpl("completion bash");
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    for (const std::string command :
+         {"render", "reference", "compare", "info", "preview", "vpls", "bench", "convergence"})
+        EXPECT_NE(r.out.find("    " + command + ")\n"), std::string::npos) << command;
 }
 
 // `mvpl render --help`: the options under their groups' headings, in the order the command

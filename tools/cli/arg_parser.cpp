@@ -89,7 +89,23 @@ void write_command_line(std::ostream& out, const std::string& line) {
     out << '\n';
 }
 
+std::function<void(const ArgParser&)>& listener() {
+    static std::function<void(const ArgParser&)> f;
+    return f;
+}
+
 }  // namespace
+
+void ArgParser::set_listener(std::function<void(const ArgParser&)> f) {
+    listener() = std::move(f);
+}
+
+std::vector<ArgParser::OptionInfo> ArgParser::options() const {
+    std::vector<OptionInfo> out;
+    for (const Option& o : m_options)
+        out.push_back({o.name, o.aliases, o.takes_value ? o.value_name : ""});
+    return out;
+}
 
 ArgParser::ArgParser(std::string command, std::string summary)
     : m_command(std::move(command)), m_summary(std::move(summary)) {
@@ -210,6 +226,10 @@ bool ArgParser::given(const std::string& name) const {
 
 bool ArgParser::parse(const std::vector<std::string>& args) {
     m_given.clear();
+    if (listener()) {
+        listener()(*this);
+        return false;
+    }
     size_t positional = 0;
     // Each option given, as it was spelled (an alias or its name).
     std::vector<std::pair<const Option*, std::string>> given;

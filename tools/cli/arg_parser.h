@@ -50,9 +50,23 @@ public:
     // Whether the last parse() saw the option (by its name or an alias) on the command line.
     bool given(const std::string& name) const;
 
-    // Returns false when --help was given (usage already printed to stdout).
+    // Returns false when --help was given (usage already printed to stdout), or while a
+    // listener is set (below).
     bool parse(const std::vector<std::string>& args);
     std::string usage() const;
+
+    // An option as the command line spells it: its name, its aliases and what its value is
+    // (value_name: N, FILE, mc|metropolis…; empty for a flag).
+    struct OptionInfo {
+        std::string name;
+        std::vector<std::string> aliases;
+        std::string value_name;
+    };
+    std::vector<OptionInfo> options() const;
+    // While set, parse() hands its parser to `listener` and returns false, parsing nothing, as
+    // it does for --help: running a command with the listener set reads its option table
+    // (`mvpl completion`) without a second declaration of it. An empty function unsets it.
+    static void set_listener(std::function<void(const ArgParser&)> listener);
 
 private:
     struct Option {

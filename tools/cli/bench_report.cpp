@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <nlohmann/json.hpp>
 #include <string>
 
 namespace mvpl::cli {
@@ -13,31 +14,10 @@ double ratio(double numerator, double denominator) {
     return denominator > 0.0 ? numerator / denominator : 0.0;
 }
 
-// JSON-escapes a string (paths and device names: quotes, backslashes, control characters).
-std::string quoted(const std::string& text) {
-    std::string out = "\"";
-    for (const char c : text) {
-        if (c == '"' || c == '\\') {
-            out += '\\';
-            out += c;
-        } else if (static_cast<unsigned char>(c) < 0x20) {
-            char buf[8];
-            std::snprintf(buf, sizeof buf, "\\u%04x", unsigned(static_cast<unsigned char>(c)));
-            out += buf;
-        } else {
-            out += c;
-        }
-    }
-    return out + "\"";
-}
+using Json = nlohmann::ordered_json;  // keys in the order written, as people read them
 
-// Seventeen significant digits round-trip a double, so a reader recomputes rates exactly.
-std::string number(double value) {
-    if (!std::isfinite(value)) return "null";
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.17g", value);
-    return buf;
-}
+// Seventeen significant digits round-trip a double (nlohmann writes the shortest that does), so
+// a reader recomputes rates exactly; NaN and infinities are written as null.
 
 std::string chain_bound(float roughness) {
     char buf[32];
@@ -52,44 +32,43 @@ std::string vsl_radius(float radius) {
     return buf;
 }
 
-std::string render_json(const RenderResult& r, const std::string& indent) {
-    const std::string i = indent + "  ";
-    std::string s = "{\n";
-    s += i + "\"width\": " + std::to_string(r.config.width) + ",\n";
-    s += i + "\"height\": " + std::to_string(r.config.height) + ",\n";
-    s += i + "\"shadow_resolution\": " + std::to_string(r.config.shadow_resolution) + ",\n";
-    s += i + "\"batch\": " + std::to_string(r.config.batch) + ",\n";
-    s += i + "\"shadow_culling\": " + (r.config.shadow_culling ? "true" : "false") + ",\n";
-    s += i + "\"shadow_proxy\": " + (r.config.shadow_proxy ? "true" : "false") + ",\n";
-    s += i + "\"shadow_lod\": " + (r.config.shadow_lod ? "true" : "false") + ",\n";
-    s += i + "\"backface_culling\": " + (r.config.backface_culling ? "true" : "false") + ",\n";
-    s += i + "\"interleave\": " + std::to_string(r.config.interleave) + ",\n";
-    s += i + "\"batches_per_position\": " + std::to_string(r.config.batches_per_position) + ",\n";
-    s += i + "\"devices\": " + std::to_string(r.config.devices) + ",\n";
-    s += i + "\"hemicube\": " + (r.config.hemicube ? "true" : "false") + ",\n";
-    s += i + "\"vpl_culling\": " + (r.config.vpl_culling ? "true" : "false") + ",\n";
-    const bool chains = r.config.chain_roughness >= 0.0f;
-    s += i + "\"chains\": " + (chains ? "true" : "false") + ",\n";
-    if (chains) s += i + "\"chain_roughness\": " + number(r.config.chain_roughness) + ",\n";
-    s += i + "\"chain_ms\": " + number(r.median.chain_ms) + ",\n";
-    s += i + "\"chain_rays\": " + std::to_string(r.median.chain_rays) + ",\n";
-    s += i + "\"culled_vpls\": " + std::to_string(r.median.culled_vpls) + ",\n";
-    s += i + "\"shadow_texels_per_vpl\": " + number(r.shadow_texels_per_vpl) + ",\n";
-    s += i + "\"shadow_triangles_per_vpl\": " + number(r.shadow_triangles_per_vpl) + ",\n";
-    s += i + "\"shadow_front_only_share\": " + number(r.shadow_front_only_share) + ",\n";
-    s += i + "\"jitter\": " + (r.config.jitter ? "true" : "false") + ",\n";
-    s += i + "\"batches\": " + std::to_string(r.median.batches) + ",\n";
-    s += i + "\"g_buffers\": " + std::to_string(r.median.g_buffers) + ",\n";
-    s += i + "\"g_buffer_ms\": " + number(r.median.g_buffer_ms) + ",\n";
-    s += i + "\"shadow_ms\": " + number(r.median.shadow_ms) + ",\n";
-    s += i + "\"shadow_ms_per_vpl\": " + number(r.shadow_ms_per_vpl) + ",\n";
-    s += i + "\"shading_ms\": " + number(r.median.shading_ms) + ",\n";
-    s += i + "\"shading_ms_per_vpl\": " + number(r.shading_ms_per_vpl) + ",\n";
-    s += i + "\"shading_pixel_vpls_per_s\": " + number(r.shading_pixel_vpls_per_s) + ",\n";
-    s += i + "\"render_wall_s\": " + number(r.median.wall_s) + ",\n";
-    s += i + "\"end_to_end_s\": " + number(r.end_to_end_s) + ",\n";
-    s += i + "\"end_to_end_vpls_per_s\": " + number(r.end_to_end_vpls_per_s) + "\n";
-    return s + indent + "}";
+Json render_json(const RenderResult& r) {
+    const BenchConfig& c = r.config;
+    Json j = {{"width", c.width},
+              {"height", c.height},
+              {"shadow_resolution", c.shadow_resolution},
+              {"batch", c.batch},
+              {"shadow_culling", c.shadow_culling},
+              {"shadow_proxy", c.shadow_proxy},
+              {"shadow_lod", c.shadow_lod},
+              {"backface_culling", c.backface_culling},
+              {"interleave", c.interleave},
+              {"batches_per_position", c.batches_per_position},
+              {"devices", c.devices},
+              {"hemicube", c.hemicube},
+              {"vpl_culling", c.vpl_culling},
+              {"chains", c.chain_roughness >= 0.0f}};
+    if (c.chain_roughness >= 0.0f) j["chain_roughness"] = c.chain_roughness;
+    const Json measured = {{"chain_ms", r.median.chain_ms},
+                           {"chain_rays", r.median.chain_rays},
+                           {"culled_vpls", r.median.culled_vpls},
+                           {"shadow_texels_per_vpl", r.shadow_texels_per_vpl},
+                           {"shadow_triangles_per_vpl", r.shadow_triangles_per_vpl},
+                           {"shadow_front_only_share", r.shadow_front_only_share},
+                           {"jitter", c.jitter},
+                           {"batches", r.median.batches},
+                           {"g_buffers", r.median.g_buffers},
+                           {"g_buffer_ms", r.median.g_buffer_ms},
+                           {"shadow_ms", r.median.shadow_ms},
+                           {"shadow_ms_per_vpl", r.shadow_ms_per_vpl},
+                           {"shading_ms", r.median.shading_ms},
+                           {"shading_ms_per_vpl", r.shading_ms_per_vpl},
+                           {"shading_pixel_vpls_per_s", r.shading_pixel_vpls_per_s},
+                           {"render_wall_s", r.median.wall_s},
+                           {"end_to_end_s", r.end_to_end_s},
+                           {"end_to_end_vpls_per_s", r.end_to_end_vpls_per_s}};
+    j.update(measured);
+    return j;
 }
 
 }  // namespace
@@ -161,38 +140,35 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
 }
 
 std::string bench_json(const BenchReport& b) {
-    std::string s = "{\n";
-    s += "  \"scene\": " + quoted(b.scene) + ",\n";
-    s += "  \"triangles\": " + std::to_string(b.triangles) + ",\n";
-    s += "  \"device\": " + quoted(b.device) + ",\n";
-    s += "  \"repeat\": " + std::to_string(b.repeat) + ",\n";
-    s += std::string("  \"shadows\": ") + (b.shadows ? "true" : "false") + ",\n";
-    s += "  \"ranks\": " + std::to_string(b.ranks) + ",\n";
-    s += "  \"startup\": {\n";
-    s += "    \"scene_load_s\": " + number(b.scene_load_s) + ",\n";
-    s += "    \"bvh_build_s\": " + number(b.bvh_build_s) + ",\n";
-    s += "    \"context_s\": " + number(b.context_s) + ",\n";
-    s += "    \"renderer_s\": " + number(b.renderer_s) + ",\n";
-    s += "    \"total_s\": " + number(b.startup_s()) + "\n";
-    s += "  },\n";
-    s += "  \"light_paths\": {\n";
-    s += "    \"paths\": " + std::to_string(b.paths) + ",\n";
-    s += "    \"vpls\": " + std::to_string(b.vpls) + ",\n";
-    s += "    \"seconds\": " + number(b.sampling_s) + ",\n";
-    s += "    \"paths_per_s\": " + number(b.paths_per_s()) + ",\n";
-    s += "    \"vpls_per_s\": " + number(b.sampling_vpls_per_s()) + "\n";
-    s += "  },\n";
-    s += "  \"render\": " + render_json(b.main, "  ") + ",\n";
-    s += "  \"sweep\": [";
-    for (size_t i = 0; i < b.sweep.size(); ++i) {
-        s += (i ? ", " : "\n    ") + render_json(b.sweep[i], "    ");
-    }
-    s += b.sweep.empty() ? "],\n" : "\n  ],\n";
-    s += "  \"memory\": {\n";
-    s += "    \"peak_host_bytes\": " + std::to_string(b.peak_host_bytes) + ",\n";
-    s += "    \"peak_device_bytes\": " + std::to_string(b.peak_device_bytes) + "\n";
-    s += "  }\n";
-    return s + "}\n";
+    Json sweep = Json::array();
+    for (const RenderResult& r : b.sweep)
+        sweep.push_back(render_json(r));
+    const Json j = {
+        {"scene", b.scene},
+        {"triangles", b.triangles},
+        {"device", b.device},
+        {"repeat", b.repeat},
+        {"shadows", b.shadows},
+        {"ranks", b.ranks},
+        {"startup",
+         {{"scene_load_s", b.scene_load_s},
+          {"bvh_build_s", b.bvh_build_s},
+          {"context_s", b.context_s},
+          {"renderer_s", b.renderer_s},
+          {"total_s", b.startup_s()}}},
+        {"light_paths",
+         {{"paths", b.paths},
+          {"vpls", b.vpls},
+          {"seconds", b.sampling_s},
+          {"paths_per_s", b.paths_per_s()},
+          {"vpls_per_s", b.sampling_vpls_per_s()}}},
+        {"render", render_json(b.main)},
+        {"sweep", sweep},
+        {"memory",
+         {{"peak_host_bytes", b.peak_host_bytes}, {"peak_device_bytes", b.peak_device_bytes}}}};
+    // A path's bytes need not be UTF-8 on Linux: invalid sequences become U+FFFD rather than an
+    // exception after the whole benchmark ran.
+    return j.dump(2, ' ', false, Json::error_handler_t::replace) + "\n";
 }
 
 std::string bench_table(const BenchReport& b) {

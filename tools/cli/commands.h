@@ -16,5 +16,6 @@ int run_preview(const Args& args);
 int run_vpls(const Args& args);
 int run_bench(const Args& args);
 int run_convergence(const Args& args);
+int run_completion(const Args& args);
 
 }  // namespace mvpl::cli

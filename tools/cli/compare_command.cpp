@@ -1,6 +1,5 @@
 // `mvpl compare`: error of one image against a reference.
 #include <cstdio>
-#include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -12,6 +11,7 @@
 #include "engine/core/reference_noise.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/error_json.h"
 
 namespace mvpl::cli {
 
@@ -21,17 +21,7 @@ namespace {
 // scripts); reference_noise and relMSE_vs_truth only with several references.
 void print_error(const ImageError& e, std::optional<double> noise, bool json) {
     if (json) {
-        nlohmann::json j = {{"relMSE", e.rel_mse},
-                            {"RMSE", e.rmse},
-                            {"mean_abs", e.mean_abs},
-                            {"mean_ratio", {e.mean_ratio.x, e.mean_ratio.y, e.mean_ratio.z}},
-                            {"rel_err_p999", e.rel_err_p999},
-                            {"max_ratio", e.max_ratio}};
-        if (noise) {
-            j["reference_noise"] = *noise;
-            j["relMSE_vs_truth"] = e.rel_mse - *noise;
-        }
-        std::printf("%s\n", j.dump().c_str());
+        std::printf("%s\n", error_json(e, noise).dump().c_str());
         return;
     }
     std::printf("relMSE %.6g\nRMSE %.6g\nmean_abs %.6g\nmean_ratio %.6f %.6f %.6f\n", e.rel_mse,

@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <sstream>
+#include <system_error>
 
 #include "engine/cluster/cluster.h"
 #include "engine/core/atomic_files.h"
@@ -40,11 +41,20 @@ std::vector<std::string> split_commas(const std::string& text) {
     return out;
 }
 
-// tools/plot_convergence.py next to the sources this binary was built from, or $MVPL_TOOLS_DIR.
+// The plot script: in $MVPL_TOOLS_DIR when set; else where `cmake --install` puts it beside an
+// installed binary (BIN/../share/mvpl); else tools/ of the sources this binary was built from.
 std::filesystem::path plot_script() {
+    constexpr const char* kScript = "plot_convergence.py";
     if (const char* dir = std::getenv("MVPL_TOOLS_DIR"))
-        return std::filesystem::path(dir) / "plot_convergence.py";
-    return std::filesystem::path(MVPL_TOOLS_DIR) / "plot_convergence.py";
+        return std::filesystem::path(dir) / kScript;
+    std::error_code error;
+    const std::filesystem::path exe = std::filesystem::read_symlink("/proc/self/exe", error);
+    if (!error) {
+        const std::filesystem::path installed =
+            exe.parent_path().parent_path() / "share" / "mvpl" / kScript;
+        if (std::filesystem::is_regular_file(installed, error)) return installed;
+    }
+    return std::filesystem::path(MVPL_TOOLS_DIR) / kScript;
 }
 
 // The interpreter that Debian's python3-matplotlib installs into is /usr/bin/python3; a `python3`
@@ -216,6 +226,7 @@ int run_convergence(const Args& args) {
         loaded = std::make_unique<session::SceneSession>(scene_path, camera.choice,
                                                          environment.choice, scene_file.options);
         apply_scene_defaults(parser, loaded->scene(), &settings.tracer.max_depth, nullptr, nullptr);
+        apply_vpl_integrator_defaults(parser, *loaded, settings.tracer.max_depth, renderer_args);
         if (ranks.root()) create_output_folder(out_dir);
     });
     if (!parsed) return 0;

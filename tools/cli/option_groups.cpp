@@ -9,6 +9,7 @@
 #include "engine/light/specular_chain.h"
 #include "engine/render/batch_plan.h"
 #include "engine/render/device_split.h"
+#include "engine/sampler/mitsuba_clamping.h"
 
 namespace mvpl::cli {
 
@@ -360,6 +361,17 @@ void apply_scene_defaults(const ArgParser& parser, const scene::Scene& scene, in
         !parser.given("--res")) {
         *width = scene.film_width;
         *height = scene.film_height;
+    }
+}
+
+void apply_vpl_integrator_defaults(const ArgParser& parser, const session::SceneSession& session,
+                                   int max_depth, RendererArgs& renderer) {
+    const scene::Scene& scene = session.scene();
+    if (scene.shadow_resolution > 0 && !parser.given("--shadow-res"))
+        renderer.shadow_res = scene.shadow_resolution;
+    if (scene.vpl_clamping >= 0.0f && !parser.given("--clamp")) {
+        renderer.clamp = sampler::mitsuba_clamp(scene, session.accel(), session.lights(),
+                                                scene.vpl_clamping, max_depth);
     }
 }
 

@@ -137,4 +137,10 @@ void add_scene_file_options(ArgParser& parser, SceneFileArgs& args);
 void apply_scene_defaults(const ArgParser& parser, const scene::Scene& scene, int* max_depth,
                           int* width, int* height);
 
+// What a Mitsuba 0.6 `vpl` integrator asks for where the command line did not: its
+// shadowMapResolution for --shadow-res and its clamping, mapped onto --clamp for light paths of
+// `max_depth` (sampler/mitsuba_clamping.h: Mitsuba clamps per VPL, mvpl at one distance).
+void apply_vpl_integrator_defaults(const ArgParser& parser, const session::SceneSession& session,
+                                   int max_depth, RendererArgs& renderer);
+
 }  // namespace mvpl::cli

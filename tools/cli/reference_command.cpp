@@ -5,45 +5,28 @@
 #include <memory>
 
 #include "engine/core/error.h"
-#include "engine/core/host_memory.h"
 #include "engine/core/image.h"
 #include "engine/reference/path_tracer.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
+#include "tools/cli/reference_args.h"
 #include "tools/session/scene_session.h"
 
 namespace mvpl::cli {
 
 int run_reference(const Args& args) {
-    std::string scene_path;
-    reference::PathTracerOptions options;
-    std::vector<std::string> outputs;
-    float exposure = 0.0f;
-    int threads = 0;
+    ReferenceArgs a;
     ArgParser parser(
         "reference",
         "Renders SCENE with the CPU reference path tracer (next-event estimation, MIS,\n"
         "Russian roulette). Writes EXR (linear float) or PNG (sRGB) by the extension of -o.");
-    parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .xml, .ply, .obj)");
-    parser.add_int("--spp", &options.spp, "samples per pixel");
-    parser.add_resolution("--res", &options.width, &options.height, "image size");
-    parser.add_strings("-o", &outputs, "output image, .exr or .png", "FILE");
-    parser.add_float("--exposure", &exposure, "PNG exposure in stops");
-    parser.add_int("--threads", &threads, "worker threads (0 = all cores)");
-    parser.add_flag("--quiet", &options.quiet, "no progress bar and no summary line");
-    add_max_depth_option(parser, options.max_depth);
-    add_seed_option(parser, options.seed);
-    CameraArgs camera;
-    add_camera_options(parser, camera);
-    EnvironmentArgs environment;
-    add_environment_options(parser, environment);
-    SceneFileArgs scene_file;
-    add_scene_file_options(parser, scene_file);
+    add_reference_options(parser, a);
     if (!parser.parse(args)) return 0;
-    if (options.spp < 1) throw UsageError("reference: --spp must be at least 1");
-    if (threads < 0) throw UsageError("reference: --threads must not be negative");
+    reference::PathTracerOptions& options = a.options;
+    std::vector<std::string>& outputs = a.outputs;
+    const int threads = a.threads;
     bool defaulted = false;
     outputs = outputs_or(outputs, "reference.exr", defaulted);
     check_outputs(outputs);
@@ -53,21 +36,18 @@ int run_reference(const Args& args) {
                                                       threads);
     }
 
-    const session::SceneSession session(scene_path, camera.choice, environment.choice,
-                                        scene_file.options);
+    const session::SceneSession session(a.scene_path, a.camera.choice, a.environment.choice,
+                                        a.scene_file.options);
     apply_scene_defaults(parser, session.scene(), &options.max_depth, &options.width,
                          &options.height);
     session.warn_if_no_light("the image is black");
-    const std::string shortfall = host_memory_shortfall(
-        "a " + std::to_string(options.width) + "x" + std::to_string(options.height) + " image",
-        reference::PathTracer::host_bytes(options), host_memory_bytes());
-    if (!shortfall.empty()) throw UsageError("reference: " + shortfall);
+    check_host_memory(options);
 
     reference::RenderStats stats;
     const reference::PathTracer tracer(session.scene(), session.accel(), session.lights());
     const Image image = tracer.render(options, &stats);
     session.warn_if_black(image);
-    write_images(image, outputs, exposure);
+    write_images(image, outputs, a.exposure);
     say_written("reference", outputs, defaulted, options.quiet);
 
     if (stats.nonfinite_samples > 0) {

@@ -117,10 +117,39 @@ void add_sensor(Context& ctx, pugi::xml_node sensor) {
     scene.cameras.push_back(camera);
 }
 
+namespace {
+
+// Mitsuba 0.6's `vpl` (src/integrators/vpl/vpl.cpp): maxDepth (default 5), shadowMapResolution
+// (default 512) and clamping (default 0.1), upgraded to snake_case as every 0.x name.
+void read_vpl_integrator(Context& ctx, pugi::xml_node integrator) {
+    Scene& scene = ctx.scene();
+    const int depth = ctx.get_int(integrator, "max_depth", 5);
+    if (depth == 0 || depth < -1)
+        ctx.fail(ctx.property(integrator, "max_depth"),
+                 "maxDepth " + std::to_string(depth) + " is not a depth (1.., or -1)");
+    scene.max_depth = std::min(depth, 1024);
+    // The range --shadow-res takes.
+    const int resolution = ctx.get_int(integrator, "shadow_map_resolution", 512);
+    if (resolution < 4 || resolution > 4096)
+        ctx.fail(ctx.property(integrator, "shadow_map_resolution"),
+                 "shadowMapResolution " + std::to_string(resolution) + " is not in 4..4096");
+    scene.shadow_resolution = resolution;
+    const float clamping = ctx.get_float(integrator, "clamping", 0.1f);
+    if (!(clamping >= 0.0f && clamping <= 1.0f))
+        ctx.fail(ctx.property(integrator, "clamping"), "clamping must be in [0, 1]");
+    scene.vpl_clamping = clamping;
+}
+
+}  // namespace
+
 void read_integrator(Context& ctx, pugi::xml_node integrator) {
     const std::string type = integrator.attribute("type").as_string();
     if (type == "direct") {
         ctx.scene().max_depth = 2;
+        return;
+    }
+    if (type == "vpl") {
+        read_vpl_integrator(ctx, integrator);
         return;
     }
     if (type != "path" && type != "volpath" && type != "volpathmis" && type != "prb")

@@ -1,0 +1,118 @@
+"""The installed Python module against the installed `mvpl` (issue 34): the same image as `mvpl
+render` for the same scene, seed and VPLs, arrays of the right shape and dtype, bad input raising
+ValueError with the command line's one line, compare() equal to `mvpl compare --json`, Ctrl-C and
+a failing progress callback ending a render.
+
+usage: PYTHONPATH=PREFIX/lib/python3.X/dist-packages python3 test_module.py MVPL_EXE ASSETS_DIR
+"""
+import json
+import os
+import signal
+import subprocess
+import sys
+import tempfile
+import unittest
+
+import numpy as np
+
+import mvpl
+
+MVPL = sys.argv[1]
+SCENE = os.path.join(sys.argv[2], "cornell-box", "cbox.gltf")
+# Tiny: the test must stay cheap (a few seconds on two lavapipe cores).
+RENDER = ["--res", "32x32", "--vpls", "64", "--seed", "7"]
+KEYWORDS = dict(res=(32, 32), vpls=64, seed=7)
+
+
+def run_mvpl(*args, cwd=None):
+    return subprocess.run([MVPL, *args], capture_output=True, text=True, cwd=cwd)
+
+
+def cli_error_line(*args):
+    """The one line `mvpl ARGS` prints for bad input (exit code 2)."""
+    with tempfile.TemporaryDirectory() as folder:
+        result = run_mvpl(*args, cwd=folder)
+    assert result.returncode == 2, result
+    lines = result.stderr.splitlines()
+    assert len(lines) == 1, result.stderr
+    return lines[0]
+
+
+class ModuleTest(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.scene = mvpl.load_file(SCENE)
+        cls.folder = tempfile.TemporaryDirectory()
+        cls.cli_exr = os.path.join(cls.folder.name, "cli.exr")
+        result = run_mvpl("render", SCENE, *RENDER, "--quiet", "-o", cls.cli_exr)
+        assert result.returncode == 0, result.stderr
+
+    @classmethod
+    def tearDownClass(cls):
+        cls.folder.cleanup()
+
+    def test_render_equals_the_command_line(self):
+        # A render of a fixed VPL count is deterministic for its seed (the chunks, the sub-pixel
+        # positions and the CPU estimators' passes are fixed): the same pixels to the bit.
+        image = mvpl.render(self.scene, **KEYWORDS)
+        self.assertEqual(image.shape, (32, 32, 3))
+        self.assertEqual(image.dtype, np.float32)
+        self.assertGreater(float(image.mean()), 0.0)
+        error = mvpl.compare(image, self.cli_exr)
+        self.assertEqual(error["RMSE"], 0.0, error)
+        # Another seed gives another image: the comparison can fail.
+        other = mvpl.render(self.scene, **dict(KEYWORDS, seed=8))
+        self.assertGreater(mvpl.compare(other, self.cli_exr)["RMSE"], 0.0)
+
+    def test_compare_is_compare_json(self):
+        other = os.path.join(self.folder.name, "other.exr")
+        self.assertEqual(run_mvpl("render", SCENE, *RENDER[:-1], "8", "--quiet", "-o",
+                                  other).returncode, 0)
+        cli = json.loads(run_mvpl("compare", other, self.cli_exr, "--json").stdout)
+        self.assertEqual(mvpl.compare(other, self.cli_exr), cli)
+        self.assertEqual(set(cli), {"relMSE", "RMSE", "mean_abs", "mean_ratio", "rel_err_p999",
+                                    "max_ratio"})
+
+    def test_reference_shape(self):
+        image = mvpl.reference(self.scene, spp=1, res=(8, 6), max_depth=2)
+        self.assertEqual(image.shape, (6, 8, 3))
+        self.assertEqual(image.dtype, np.float32)
+        self.assertGreater(float(image.mean()), 0.0)
+
+    def test_bad_input_raises_the_command_lines_line(self):
+        cases = [
+            (lambda: mvpl.render(self.scene, vpls=0), ["render", SCENE, "--vpls", "0"]),
+            (lambda: mvpl.render(self.scene, vpl=3), ["render", SCENE, "--vpl", "3"]),
+            (lambda: mvpl.render(self.scene, sampler="gibbs"),
+             ["render", SCENE, "--sampler", "gibbs"]),
+            (lambda: mvpl.reference(self.scene, spp=0), ["reference", SCENE, "--spp", "0"]),
+            (lambda: mvpl.load_file("no-such-scene.gltf"), ["render", "no-such-scene.gltf"]),
+        ]
+        for call, args in cases:
+            with self.subTest(args=args):
+                with self.assertRaises(ValueError) as raised:
+                    call()
+                self.assertEqual(str(raised.exception), cli_error_line(*args))
+
+    def test_progress_reaches_one(self):
+        shares = []
+        mvpl.render(self.scene, progress=shares.append, **KEYWORDS)
+        self.assertEqual(shares[-1], 1.0)
+        self.assertEqual(shares, sorted(shares))
+
+    def test_ctrl_c_and_a_failing_callback_end_the_render(self):
+        def interrupt(done):
+            os.kill(os.getpid(), signal.SIGINT)  # as Ctrl-C: Python's handler sets a flag
+
+        with self.assertRaises(KeyboardInterrupt):
+            mvpl.render(self.scene, progress=interrupt, **KEYWORDS)
+
+        def fail(done):
+            raise RuntimeError("from the callback")
+
+        with self.assertRaisesRegex(RuntimeError, "from the callback"):
+            mvpl.render(self.scene, progress=fail, **KEYWORDS)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)
