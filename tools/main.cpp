@@ -10,6 +10,7 @@
 #include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
 #include "engine/core/interrupt.h"
+#include "engine/core/version.h"
 #include "tools/cli/commands.h"
 
 namespace {
@@ -69,7 +70,7 @@ int run(const std::string& command, const mvpl::cli::Args& args) {
         return 0;
     }
     if (command == "--version") {
-        std::puts("mvpl 0.1.0");
+        std::printf("mvpl %s\n", version());
         return 0;
     }
     throw UsageError("unknown command '" + command + "' (see mvpl --help)");
