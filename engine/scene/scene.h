@@ -119,6 +119,13 @@ struct Camera {
     Vec3 position() const { return Vec3(camera_to_world[3]); }
 };
 
+// An AOV a scene file asks for (Mitsuba's `<integrator type="aov">`): mvpl's kind (albedo,
+// normal, depth, position: engine/aov/aov_kind.h) and the file's name for its channels.
+struct FileAov {
+    std::string kind;
+    std::string name;
+};
+
 struct Scene {
     std::string path;
     std::vector<Mesh> meshes;
@@ -139,6 +146,8 @@ struct Scene {
     int max_depth = 0;  // Mitsuba's max_depth (−1 unlimited)
     int film_width = 0;
     int film_height = 0;
+    // The AOVs the file asks for, written by render and reference unless --aov is given.
+    std::vector<FileAov> aovs;
 
     Bounds bounds() const;
     size_t triangle_count() const;

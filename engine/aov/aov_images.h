@@ -1,0 +1,54 @@
+#pragma once
+// The AOV images of a render or a reference (README, "AOVs"): each pixel's AOV is the mean over
+// the sub-pixel positions its colour averages over, at most kMaxAovPositions of them.
+//
+// The cap: the AOVs are traced on the CPU (aov_tracer.h), one ray per pixel and position, and a
+// long render draws many positions (a 60 s Cornell box at 512²: 150). Past 64 positions the
+// covered fraction of a pixel cut by an edge is within 0.005 RMS of the exact one (subpixel.h:
+// 0.026 at 32, 0.0094 at 128), so the first 64 of the image's positions stand for all.
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "engine/aov/aov_film.h"
+#include "engine/aov/aov_kind.h"
+#include "engine/aov/aov_tracer.h"
+#include "engine/core/exr_file.h"
+#include "engine/integrator/estimate.h"
+#include "engine/integrator/scene_view.h"
+#include "engine/reference/path_tracer.h"
+
+namespace mvpl::aov {
+
+inline constexpr uint64_t kMaxAovPositions = 64;
+
+// The AOVs of a VPL estimate after `vpls` VPLs: over the positions of its G-buffers
+// (render::subpixel_schedule(estimate.render).positions_after(vpls), the first
+// kMaxAovPositions), through the render's specular chains with the render's generator. Reads the
+// scene only; deterministic whatever the thread count.
+std::vector<ChannelImage> render_aovs(const integrator::SceneView& view,
+                                      const integrator::Estimate& estimate, uint64_t vpls,
+                                      const std::vector<AovRequest>& aovs);
+
+// The chains the reference's AOVs follow: `mvpl render`'s default (light::kDefaultChainRoughness)
+// under the reference's path depth, so that the reference and the render report the same
+// surfaces.
+light::ChainOptions reference_chains(int max_depth);
+
+// The AOVs of a path-traced reference, fed by PathTracer::render's camera-sample hook: its first
+// kMaxAovPositions samples of each pixel, chains drawn from light::chain_rng(seed, pixel,
+// sample).
+class ReferenceAovs {
+public:
+    ReferenceAovs(const scene::Scene& scene, const trace::Accel& accel,
+                  const reference::PathTracerOptions& options, std::vector<AovRequest> aovs);
+    reference::CameraSampleHook hook();
+    std::vector<ChannelImage> images() const;
+
+private:
+    reference::PathTracerOptions m_options;
+    AovTracer m_tracer;
+    AovFilm m_film;
+};
+
+}  // namespace mvpl::aov
