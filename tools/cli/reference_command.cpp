@@ -3,13 +3,17 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 
+#include "engine/aov/aov_images.h"
 #include "engine/core/error.h"
+#include "engine/core/timer.h"
 #include "engine/core/host_memory.h"
 #include "engine/core/image.h"
 #include "engine/reference/path_tracer.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/exr_outputs.h"
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/session/scene_session.h"
@@ -20,6 +24,7 @@ int run_reference(const Args& args) {
     std::string scene_path;
     reference::PathTracerOptions options;
     std::vector<std::string> outputs;
+    std::string aov_list;
     float exposure = 0.0f;
     int threads = 0;
     ArgParser parser(
@@ -31,6 +36,7 @@ int run_reference(const Args& args) {
     parser.add_resolution("--res", &options.width, &options.height, "image size");
     parser.add_strings("-o", &outputs, "output image, .exr or .png", "FILE");
     parser.add_float("--exposure", &exposure, "PNG exposure in stops");
+    add_aov_option(parser, &aov_list, &outputs);
     parser.add_int("--threads", &threads, "worker threads (0 = all cores)");
     parser.add_flag("--quiet", &options.quiet, "no progress bar and no summary line");
     add_max_depth_option(parser, options.max_depth);
@@ -42,6 +48,7 @@ int run_reference(const Args& args) {
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
     if (!parser.parse(args)) return 0;
+    Timer wall;
     if (options.spp < 1) throw UsageError("reference: --spp must be at least 1");
     if (threads < 0) throw UsageError("reference: --threads must not be negative");
     bool defaulted = false;
@@ -65,9 +72,18 @@ int run_reference(const Args& args) {
 
     reference::RenderStats stats;
     const reference::PathTracer tracer(session.scene(), session.accel(), session.lights());
-    const Image image = tracer.render(options, &stats);
+    const std::vector<aov::AovRequest> aovs =
+        aov_requests(parser, aov_list, session.scene(), outputs);
+    std::optional<aov::ReferenceAovs> aov_film;
+    if (!aovs.empty()) aov_film.emplace(session.scene(), session.accel(), options, aovs);
+    const Image image =
+        tracer.render(options, &stats, aov_film ? aov_film->hook() : reference::CameraSampleHook{});
     session.warn_if_black(image);
-    write_images(image, outputs, exposure);
+    ExrExtras extras;
+    if (aov_film) extras.layers = aov_film->images();
+    extras.attributes = run_attributes(
+        {"reference", &args, options.seed, std::nullopt, options.spp, wall.seconds()});
+    write_images(image, outputs, exposure, extras);
     say_written("reference", outputs, defaulted, options.quiet);
 
     if (stats.nonfinite_samples > 0) {

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "engine/aov/aov_images.h"
 #include "engine/cluster/cluster.h"
 
 #include "engine/core/error.h"
@@ -18,6 +19,7 @@
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/device_choice.h"
+#include "tools/cli/exr_outputs.h"
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/cli/render_runs.h"
@@ -38,6 +40,7 @@ struct RenderArgs {
     int width = 256, height = 256;
     RendererArgs renderer;
     std::vector<std::string> outputs;
+    std::string aovs;
     float exposure = 0.0f;
     int device = -1;
     bool qmc = false, random_paths = false, oracle = false, quiet = false;
@@ -68,6 +71,7 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     parser.add_resolution("--res", &a.width, &a.height, "image size");
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png", "FILE");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
+    add_aov_option(parser, &a.aovs, &a.outputs);
     parser.add_flag("--oracle", &a.oracle,
                     "shade on the CPU with exact visibility instead of the GPU");
     parser.add_flag("--quiet", &a.quiet, "no progress bar and no summary line");
@@ -206,7 +210,14 @@ int run_render(const Args& args) {
         }
         if (!ranks.root()) return;
         session->warn_if_black(result.image);
-        write_images(result.image, a.outputs, a.exposure);
+        ExrExtras extras;
+        const session::SceneSession& s = *session;
+        extras.layers = aov::render_aovs({&s.scene(), &s.accel(), &s.lights(), &s.camera()},
+                                         job.estimate, result.stats.vpls,
+                                         aov_requests(parser, a.aovs, s.scene(), a.outputs));
+        extras.attributes = run_attributes({"render", &args, job.estimate.sampling.seed,
+                                            result.stats.vpls, std::nullopt, total.seconds()});
+        write_images(result.image, a.outputs, a.exposure, extras);
         say_written("render", a.outputs, defaulted, a.quiet);
         if (!a.quiet) std::fputs(summary_line(job, result, total.seconds()).c_str(), stdout);
     });
