@@ -10,6 +10,11 @@
 
 namespace mvpl::aov {
 
+uint64_t aov_positions(const integrator::Estimate& estimate, uint64_t vpls) {
+    return std::min(render::subpixel_schedule(estimate.render).positions_after(vpls),
+                    kMaxAovPositions);
+}
+
 std::vector<ChannelImage> render_aovs(const integrator::SceneView& view,
                                       const integrator::Estimate& estimate, uint64_t vpls,
                                       const std::vector<AovRequest>& aovs) {
@@ -17,7 +22,7 @@ std::vector<ChannelImage> render_aovs(const integrator::SceneView& view,
     const int width = int(ro.width);
     const int height = int(ro.height);
     const SubpixelSchedule schedule = render::subpixel_schedule(ro);
-    const uint64_t positions = std::min(schedule.positions_after(vpls), kMaxAovPositions);
+    const uint64_t positions = aov_positions(estimate, vpls);
     const AovTracer tracer(*view.scene, *view.accel, *view.camera, width, height, ro.chains);
     AovFilm film(aovs, width, height);
     parallel_for(height, 1, [&](int64_t y0, int64_t y1) {

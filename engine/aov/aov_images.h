@@ -22,6 +22,9 @@ namespace mvpl::aov {
 
 inline constexpr uint64_t kMaxAovPositions = 64;
 
+// The sub-pixel positions render_aovs averages over after `vpls` VPLs.
+uint64_t aov_positions(const integrator::Estimate& estimate, uint64_t vpls);
+
 // The AOVs of a VPL estimate after `vpls` VPLs: over the positions of its G-buffers
 // (render::subpixel_schedule(estimate.render).positions_after(vpls), the first
 // kMaxAovPositions), through the render's specular chains with the render's generator. Reads the

@@ -212,9 +212,17 @@ int run_render(const Args& args) {
         session->warn_if_black(result.image);
         ExrExtras extras;
         const session::SceneSession& s = *session;
+        const std::vector<aov::AovRequest> aovs =
+            aov_requests(parser, a.aovs, s.scene(), a.outputs);
+        Timer aov_time;
         extras.layers = aov::render_aovs({&s.scene(), &s.accel(), &s.lights(), &s.camera()},
-                                         job.estimate, result.stats.vpls,
-                                         aov_requests(parser, a.aovs, s.scene(), a.outputs));
+                                         job.estimate, result.stats.vpls, aovs);
+        if (!aovs.empty() && !a.quiet) {
+            std::printf("aov: %zu AOVs over %llu sub-pixel positions, %.2f s\n", aovs.size(),
+                        static_cast<unsigned long long>(
+                            aov::aov_positions(job.estimate, result.stats.vpls)),
+                        aov_time.seconds());
+        }
         extras.attributes = run_attributes({"render", &args, job.estimate.sampling.seed,
                                             result.stats.vpls, std::nullopt, total.seconds()});
         write_images(result.image, a.outputs, a.exposure, extras);
