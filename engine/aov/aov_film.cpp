@@ -15,19 +15,21 @@ void AovFilm::add(int x, int y, const AovSample& s) {
     for (size_t i = 0; i < m_requests.size(); ++i) {
         float* v = m_sums[i].data() + pixel * size_t(components(m_requests[i].kind));
         switch (m_requests[i].kind) {
-        case Aov::Albedo:
-            for (int c = 0; c < 3; ++c)
-                v[c] += s.albedo[c];
-            break;
-        case Aov::Normal:
-            for (int c = 0; c < 3; ++c)
-                v[c] += s.normal[c];
-            break;
-        case Aov::Position:
-            for (int c = 0; c < 3; ++c)
-                v[c] += s.position[c];
-            break;
-        case Aov::Depth: v[0] += s.depth; break;
+            case Aov::Albedo:
+                for (int c = 0; c < 3; ++c)
+                    v[c] += s.albedo[c];
+                break;
+            case Aov::Normal:
+                for (int c = 0; c < 3; ++c)
+                    v[c] += s.normal[c];
+                break;
+            case Aov::Position:
+                for (int c = 0; c < 3; ++c)
+                    v[c] += s.position[c];
+                break;
+            case Aov::Depth:
+                v[0] += s.depth;
+                break;
         }
     }
 }

@@ -27,10 +27,14 @@ std::vector<std::string> suffixed(const std::string& layer, const char* suffixes
 // mvpl's channels for --aov (aov_kind.h says whose conventions they follow).
 std::vector<std::string> own_channels(Aov kind) {
     switch (kind) {
-    case Aov::Albedo: return suffixed("albedo", "RGB");
-    case Aov::Normal: return suffixed("N", "XYZ");
-    case Aov::Depth: return {"Z"};
-    case Aov::Position: return suffixed("P", "XYZ");
+        case Aov::Albedo:
+            return suffixed("albedo", "RGB");
+        case Aov::Normal:
+            return suffixed("N", "XYZ");
+        case Aov::Depth:
+            return {"Z"};
+        case Aov::Position:
+            return suffixed("P", "XYZ");
     }
     return {};
 }
@@ -38,10 +42,13 @@ std::vector<std::string> own_channels(Aov kind) {
 // Mitsuba 3's aov integrator's channels for an AOV it calls `name`.
 std::vector<std::string> mitsuba_channels(Aov kind, const std::string& name) {
     switch (kind) {
-    case Aov::Albedo: return suffixed(name, "RGB");
-    case Aov::Depth: return {name + ".T"};
-    case Aov::Normal:
-    case Aov::Position: return suffixed(name, "XYZ");
+        case Aov::Albedo:
+            return suffixed(name, "RGB");
+        case Aov::Depth:
+            return {name + ".T"};
+        case Aov::Normal:
+        case Aov::Position:
+            return suffixed(name, "XYZ");
     }
     return {};
 }
@@ -80,7 +87,8 @@ std::vector<AovRequest> parse_aov_list(std::string_view text, const std::string&
             throw UsageError(option + ": unknown AOV '" + std::string(item) + "' (" + name_list() +
                              ")");
         }
-        if (std::any_of(out.begin(), out.end(), [&](const AovRequest& r) { return r.kind == k->kind; }))
+        if (std::any_of(out.begin(), out.end(),
+                        [&](const AovRequest& r) { return r.kind == k->kind; }))
             throw UsageError(option + ": AOV '" + std::string(item) + "' given twice");
         out.push_back(AovRequest{k->kind, std::string(k->name), own_channels(k->kind)});
         start = comma + 1;

@@ -3,8 +3,8 @@
 // are called. mvpl's names follow the compositors' conventions: OpenEXR's standard depth channel
 // Z (Nuke reads it as depth.Z), P and N for world-space position and normal (Arnold's, RenderMan's
 // and Nuke's relighting nodes' names), X/Y/Z and R/G/B suffixes (Blender's and Mitsuba's layers).
-// A Mitsuba scene's `<integrator type="aov">` names them itself (Mitsuba 3's aov plugin: name.R/G/B,
-// name.T for depth, name.X/Y/Z).
+// A Mitsuba scene's `<integrator type="aov">` names them itself (Mitsuba 3's aov plugin:
+// name.R/G/B, name.T for depth, name.X/Y/Z).
 #include <string>
 #include <string_view>
 #include <vector>

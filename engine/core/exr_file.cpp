@@ -24,8 +24,8 @@ namespace mvpl {
 
 namespace {
 
-// ITU-R BT.709 primaries and the D65 white point (CIE xy), OpenEXR's default chromaticities, written
-// explicitly so that a reader need not know the default.
+// ITU-R BT.709 primaries and the D65 white point (CIE xy), OpenEXR's default chromaticities,
+// written explicitly so that a reader need not know the default.
 Imf::Chromaticities rec709() {
     return Imf::Chromaticities(Imath::V2f(0.64f, 0.33f), Imath::V2f(0.30f, 0.60f),
                                Imath::V2f(0.15f, 0.06f), Imath::V2f(0.3127f, 0.3290f));
@@ -63,9 +63,12 @@ std::string number_text(double v) {
 
 std::string attribute_text(const Imf::Attribute& a) {
     if (const auto* s = dynamic_cast<const Imf::StringAttribute*>(&a)) return s->value();
-    if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&a)) return std::to_string(i->value());
-    if (const auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&a)) return number_text(d->value());
-    if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a)) return number_text(f->value());
+    if (const auto* i = dynamic_cast<const Imf::IntAttribute*>(&a))
+        return std::to_string(i->value());
+    if (const auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&a))
+        return number_text(d->value());
+    if (const auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a))
+        return number_text(f->value());
     if (const auto* c = dynamic_cast<const Imf::ChromaticitiesAttribute*>(&a)) {
         const Imf::Chromaticities& v = c->value();
         std::string text;
@@ -150,8 +153,8 @@ ExrContents read_exr_file(const std::string& path) {
         Imf::FrameBuffer fb;
         const size_t ys = sizeof(float) * size_t(out.width);
         // OpenEXR addresses a slice by absolute data-window coordinates.
-        const ptrdiff_t origin = -ptrdiff_t(dw.min.x) * ptrdiff_t(sizeof(float)) -
-                                 ptrdiff_t(dw.min.y) * ptrdiff_t(ys);
+        const ptrdiff_t origin =
+            -ptrdiff_t(dw.min.x) * ptrdiff_t(sizeof(float)) - ptrdiff_t(dw.min.y) * ptrdiff_t(ys);
         for (auto& [name, values] : out.channels) {
             char* base = reinterpret_cast<char*>(values.data()) + origin;
             fb.insert(name, Imf::Slice(Imf::FLOAT, base, sizeof(float), ys));

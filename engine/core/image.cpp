@@ -104,9 +104,8 @@ void write_image(const Image& image, const std::string& path, float exposure) {
 }
 
 void write_exr(const Image& image, const std::string& path) {
-    write_files_atomically({path}, [&](size_t, const std::string& file) {
-        write_exr_file(image, ExrExtras{}, file);
-    });
+    write_files_atomically(
+        {path}, [&](size_t, const std::string& file) { write_exr_file(image, ExrExtras{}, file); });
 }
 
 void write_png(const Image& image, const std::string& path, float exposure) {

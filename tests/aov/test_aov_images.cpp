@@ -45,8 +45,8 @@ struct Expected {
 scene::Scene plane_scene(float edge_x) {
     scene::Scene s;
     s.materials = {test::diffuse_material(kBase)};
-    s.meshes.push_back(test::make_quad(Vec3(edge_x, -50, kPlaneZ), Vec3(200, 0, 0),
-                                       Vec3(0, 100, 0), 0));
+    s.meshes.push_back(
+        test::make_quad(Vec3(edge_x, -50, kPlaneZ), Vec3(200, 0, 0), Vec3(0, 100, 0), 0));
     s.camera = test::look_at(Vec3(0.0f), Vec3(0, 0, -1), 0.8f);
     s.has_camera = true;
     return s;
@@ -87,8 +87,7 @@ float expect_pixel(const std::vector<ChannelImage>& images, int x, int y, const 
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(images[0].values[3 * p + c], want.albedo[c], tol) << x << "," << y;
         EXPECT_NEAR(images[1].values[3 * p + c], want.normal[c], tol) << x << "," << y;
-        EXPECT_NEAR(images[3].values[3 * p + c], want.position[c], geometric_tol)
-            << x << "," << y;
+        EXPECT_NEAR(images[3].values[3 * p + c], want.position[c], geometric_tol) << x << "," << y;
     }
     EXPECT_NEAR(images[2].values[p], want.depth, geometric_tol) << x << "," << y;
     return std::abs(images[2].values[p] - want.depth);

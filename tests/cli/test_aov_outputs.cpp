@@ -28,8 +28,7 @@ using test::shell_quote;
 const std::string kCbox = MVPL_ASSETS_DIR "/cornell-box/cbox.gltf";
 
 fs::path temp_file(const std::string& name) {
-    const fs::path dir =
-        fs::temp_directory_path() / ("mvpl_aov_cli_" + std::to_string(::getpid()));
+    const fs::path dir = fs::temp_directory_path() / ("mvpl_aov_cli_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     return dir / name;
 }
@@ -103,9 +102,9 @@ TEST(AovCli, AMitsubaAovIntegratorIsWrittenUnderItsNames) {
     const fs::path scene = temp_file("cbox_aov.xml");
     std::ofstream(scene) << xml;
     const fs::path out = temp_file("mitsuba.exr");
-    test::CommandResult r = test::run_mvpl("reference " + shell_quote(scene.string()) +
-                                           " --spp 1 --res 8x8 --quiet -o " +
-                                           shell_quote(out.string()));
+    test::CommandResult r =
+        test::run_mvpl("reference " + shell_quote(scene.string()) +
+                       " --spp 1 --res 8x8 --quiet -o " + shell_quote(out.string()));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     EXPECT_EQ(channel_names(read_exr_file(out.string())),
               (std::set<std::string>{"R", "G", "B", "dd.y.T", "nn.X", "nn.Y", "nn.Z"}));

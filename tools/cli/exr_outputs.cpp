@@ -74,7 +74,8 @@ std::string command_line(const std::string& command, const Args& args) {
 std::vector<ExrAttribute> run_attributes(const RunFacts& facts) {
     std::vector<ExrAttribute> out;
     out.push_back({"mvpl/version", std::string(version())});
-    out.push_back({"mvpl/commandLine", command_line(facts.command, facts.args ? *facts.args : Args{})});
+    out.push_back(
+        {"mvpl/commandLine", command_line(facts.command, facts.args ? *facts.args : Args{})});
     out.push_back({"mvpl/seed", std::to_string(facts.seed)});
     if (facts.vpls) out.push_back({"mvpl/vpls", std::to_string(*facts.vpls)});
     if (facts.spp) out.push_back({"mvpl/spp", *facts.spp});

@@ -7,9 +7,9 @@
 
 #include "engine/aov/aov_images.h"
 #include "engine/core/error.h"
-#include "engine/core/timer.h"
 #include "engine/core/host_memory.h"
 #include "engine/core/image.h"
+#include "engine/core/timer.h"
 #include "engine/reference/path_tracer.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"

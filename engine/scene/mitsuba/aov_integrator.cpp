@@ -17,11 +17,11 @@ struct TypeMap {
     std::string_view mitsuba;
     std::string_view mvpl;
 };
-constexpr TypeMap kTypes[] = {
-    {"albedo", "albedo"}, {"depth", "depth"},      {"position", "position"}, {"sh_normal", "normal"},
-    {"geo_normal", ""},   {"uv", ""},              {"dp_du", ""},            {"dp_dv", ""},
-    {"duv_dx", ""},       {"duv_dy", ""},          {"prim_index", ""},       {"shape_index", ""},
-    {"boundary_test", ""}};
+constexpr TypeMap kTypes[] = {{"albedo", "albedo"},    {"depth", "depth"}, {"position", "position"},
+                              {"sh_normal", "normal"}, {"geo_normal", ""}, {"uv", ""},
+                              {"dp_du", ""},           {"dp_dv", ""},      {"duv_dx", ""},
+                              {"duv_dy", ""},          {"prim_index", ""}, {"shape_index", ""},
+                              {"boundary_test", ""}};
 
 // Mitsuba's string::tokenize: pieces between commas and blanks, empty ones dropped.
 std::vector<std::string> tokens(const std::string& text, std::string_view delimiters) {
