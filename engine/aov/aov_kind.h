@@ -1,10 +1,11 @@
 #pragma once
-// The AOVs mvpl writes beside the image (README, "AOVs"): what each one is and what its channels
-// are called. mvpl's names follow the compositors' conventions: OpenEXR's standard depth channel
-// Z (Nuke reads it as depth.Z), P and N for world-space position and normal (Arnold's, RenderMan's
-// and Nuke's relighting nodes' names), X/Y/Z and R/G/B suffixes (Blender's and Mitsuba's layers).
-// A Mitsuba scene's `<integrator type="aov">` names them itself (Mitsuba 3's aov plugin:
-// name.R/G/B, name.T for depth, name.X/Y/Z).
+// The AOVs mvpl writes beside the image (README, "AOVs and EXR attributes"): what each one is and
+// what its channels are called. mvpl's names follow the compositors' conventions: OpenEXR's
+// standard depth channel Z ("distance of the front of a sample from the viewer"; Nuke reads it as
+// depth.Z), P and N for world-space position and normal (Arnold's built-in AOV names), with the
+// X/Y/Z and R/G/B suffixes of Blender's and Mitsuba's layers. A Mitsuba scene's
+// `<integrator type="aov">` names them itself (Mitsuba 3's aov plugin: name.R/G/B, name.T for
+// depth, name.X/Y/Z).
 #include <string>
 #include <string_view>
 #include <vector>
