@@ -8,6 +8,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/core/timer.h"
 #include "engine/light/chain_options.h"
 #include "engine/sampler/sampler_factory.h"
 #include "engine/scene/camera.h"
@@ -16,6 +17,7 @@
 #include "engine/trace/ray.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/exr_outputs.h"
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/session/scene_session.h"
@@ -95,6 +97,39 @@ void draw_dot(Image& image, const Vec2& c, float radius, const Rgb& colour) {
     }
 }
 
+// The flat-shaded view with the VPLs drawn over it as dots; `drawn` counts those in view.
+Image draw_vpls(const scene::Scene& scene, const trace::Accel& accel, const View& view, int width,
+                int height, const std::vector<light::Vpl>& vpls, size_t& drawn) {
+    Image image(width, height);
+    for (int y = 0; y < height; ++y) {
+        for (int x = 0; x < width; ++x) {
+            const trace::Ray ray = view.ray(float(x) + 0.5f, float(y) + 0.5f);
+            const auto si = first_front_hit(scene, accel, ray);
+            // Flat grey by the angle to the view direction: walls and floors stay apart.
+            const float shade =
+                si ? 0.05f + 0.25f * std::abs(glm::dot(si->ng, glm::normalize(ray.direction)))
+                   : 0.0f;
+            image.at(x, y) = Rgb(shade);
+        }
+    }
+    float max_power = 0.0f;
+    for (const light::Vpl& v : vpls)
+        max_power = std::max(max_power, luminance(v.power));
+    // Powers as the sampler weighted them, relative to the largest: area ∝ power, at least a
+    // pixel wide.
+    drawn = 0;
+    for (const light::Vpl& v : vpls) {
+        Vec2 film;
+        if (v.type == light::VplType::Directional || !view.project(v.position, film)) continue;
+        const float rel = max_power > 0.0f ? luminance(v.power) / max_power : 0.0f;
+        const float radius = 0.8f + 0.004f * float(std::min(width, height)) * std::sqrt(rel);
+        const bool emitter = v.path_length == 0;
+        draw_dot(image, film, radius, emitter ? Rgb(1.0f, 0.9f, 0.2f) : Rgb(1.0f, 0.35f, 0.1f));
+        ++drawn;
+    }
+    return image;
+}
+
 }  // namespace
 
 int run_vpls(const Args& args) {
@@ -126,6 +161,7 @@ int run_vpls(const Args& args) {
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
     if (!parser.parse(args)) return 0;
+    const Timer wall;
     if (view_name != "top" && view_name != "camera")
         throw UsageError("vpls: --view must be top or camera");
     if (count < 1 || count > (uint64_t(1) << 24))
@@ -148,35 +184,13 @@ int run_vpls(const Args& args) {
     std::vector<light::Vpl> vpls;
     stream->next(count, vpls);
 
-    const View view = make_view(scene, view_name == "top", width, height);
-    Image image(width, height);
-    for (int y = 0; y < height; ++y) {
-        for (int x = 0; x < width; ++x) {
-            const trace::Ray ray = view.ray(float(x) + 0.5f, float(y) + 0.5f);
-            const auto si = first_front_hit(scene, accel, ray);
-            // Flat grey by the angle to the view direction: walls and floors stay apart.
-            const float shade =
-                si ? 0.05f + 0.25f * std::abs(glm::dot(si->ng, glm::normalize(ray.direction)))
-                   : 0.0f;
-            image.at(x, y) = Rgb(shade);
-        }
-    }
-    float max_power = 0.0f;
-    for (const light::Vpl& v : vpls)
-        max_power = std::max(max_power, luminance(v.power));
-    // Powers as the sampler weighted them, relative to the largest: area ∝ power, at least a
-    // pixel wide.
     size_t drawn = 0;
-    for (const light::Vpl& v : vpls) {
-        Vec2 film;
-        if (v.type == light::VplType::Directional || !view.project(v.position, film)) continue;
-        const float rel = max_power > 0.0f ? luminance(v.power) / max_power : 0.0f;
-        const float radius = 0.8f + 0.004f * float(std::min(width, height)) * std::sqrt(rel);
-        const bool emitter = v.path_length == 0;
-        draw_dot(image, film, radius, emitter ? Rgb(1.0f, 0.9f, 0.2f) : Rgb(1.0f, 0.35f, 0.1f));
-        ++drawn;
-    }
-    write_images(image, outputs);
+    const Image image = draw_vpls(scene, accel, make_view(scene, view_name == "top", width, height),
+                                  width, height, vpls, drawn);
+    ExrExtras extras;
+    extras.attributes =
+        run_attributes({"vpls", &args, settings.seed, vpls.size(), std::nullopt, wall.seconds()});
+    write_images(image, outputs, 0.0f, extras);
     say_written("vpls", outputs, defaulted, quiet);
     if (!quiet) {
         const std::string stats = stream->statistics();
