@@ -18,6 +18,7 @@ uint64_t aov_positions(const integrator::Estimate& estimate, uint64_t vpls) {
 std::vector<ChannelImage> render_aovs(const integrator::SceneView& view,
                                       const integrator::Estimate& estimate, uint64_t vpls,
                                       const std::vector<AovRequest>& aovs) {
+    if (aovs.empty()) return {};
     const render::RenderOptions& ro = estimate.render;
     const int width = int(ro.width);
     const int height = int(ro.height);

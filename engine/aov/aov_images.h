@@ -30,7 +30,7 @@ uint64_t aov_positions(const integrator::Estimate& estimate, uint64_t vpls);
 // The AOVs of a VPL estimate after `vpls` VPLs: over the positions of its G-buffers
 // (render::subpixel_schedule(estimate.render).positions_after(vpls), the first
 // kMaxAovPositions), through the render's specular chains with the render's generator. Reads the
-// scene only; deterministic whatever the thread count.
+// scene only; deterministic whatever the thread count; none (and no work) for no AOVs.
 std::vector<ChannelImage> render_aovs(const integrator::SceneView& view,
                                       const integrator::Estimate& estimate, uint64_t vpls,
                                       const std::vector<AovRequest>& aovs);
