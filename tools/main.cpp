@@ -10,6 +10,7 @@
 #include "engine/cluster/cluster.h"
 #include "engine/core/error.h"
 #include "engine/core/interrupt.h"
+#include "engine/core/version.h"
 #include "tools/cli/command_table.h"
 
 namespace {
@@ -47,7 +48,7 @@ int run(const std::string& command, const mvpl::cli::Args& args) {
         return 0;
     }
     if (command == "--version") {
-        std::puts("mvpl " MVPL_VERSION);
+        std::printf("mvpl %s\n", version());
         return 0;
     }
     throw UsageError("unknown command '" + command + "' (see mvpl --help)");

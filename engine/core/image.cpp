@@ -6,7 +6,6 @@
 #include <ImfFrameBuffer.h>
 #include <ImfHeader.h>
 #include <ImfInputFile.h>
-#include <ImfOutputFile.h>
 #include <stb_image_write.h>
 
 #include <algorithm>
@@ -16,6 +15,7 @@
 
 #include "engine/core/atomic_files.h"
 #include "engine/core/error.h"
+#include "engine/core/exr_file.h"
 #include "engine/core/file_extension.h"
 #include "engine/core/png.h"
 #include "engine/core/regular_file.h"
@@ -40,23 +40,6 @@ float srgb_to_linear(float v) {
 }
 
 namespace {
-
-void exr_to_file(const Image& image, const std::string& file) {
-    Imf::Header header(image.width(), image.height());
-    header.channels().insert("R", Imf::Channel(Imf::FLOAT));
-    header.channels().insert("G", Imf::Channel(Imf::FLOAT));
-    header.channels().insert("B", Imf::Channel(Imf::FLOAT));
-    Imf::OutputFile out(file.c_str(), header);
-    Imf::FrameBuffer fb;
-    char* base = reinterpret_cast<char*>(const_cast<Rgb*>(image.pixels().data()));
-    const size_t xs = sizeof(Rgb);
-    const size_t ys = sizeof(Rgb) * size_t(image.width());
-    fb.insert("R", Imf::Slice(Imf::FLOAT, base + 0 * sizeof(float), xs, ys));
-    fb.insert("G", Imf::Slice(Imf::FLOAT, base + 1 * sizeof(float), xs, ys));
-    fb.insert("B", Imf::Slice(Imf::FLOAT, base + 2 * sizeof(float), xs, ys));
-    out.setFrameBuffer(fb);
-    out.writePixels(image.height());
-}
 
 // The PNG file's bytes, encoded in memory so that writing them is checked (stb's own file
 // writer ignores write errors).
@@ -87,7 +70,8 @@ std::vector<uint8_t> tonemapped_rgb8(const Image& image, float exposure) {
 
 }  // namespace
 
-void write_images(const Image& image, const std::vector<std::string>& paths, float exposure) {
+void write_images(const Image& image, const std::vector<std::string>& paths, float exposure,
+                  const ExrExtras& extras) {
     for (const std::string& path : paths) {
         const std::string ext = lower_extension(path);
         if (ext != ".exr" && ext != ".png")
@@ -96,10 +80,17 @@ void write_images(const Image& image, const std::vector<std::string>& paths, flo
     // The last guard: a non-finite value is never written silently (finite_check.h). One scan
     // serves every path; the error names the first, as writing them in turn did.
     if (!paths.empty()) require_finite(image, paths.front() + " not written");
+    for (const ChannelImage& layer : extras.layers) {
+        for (const float v : layer.values) {
+            if (!std::isfinite(v))
+                throw NonFiniteError(paths.front() + " not written: " + layer.name + " holds " +
+                                     std::to_string(v));
+        }
+    }
     std::vector<uint8_t> png;  // encoded once for every .png target
     write_files_atomically(paths, [&](size_t i, const std::string& file) {
         if (lower_extension(paths[i]) == ".exr") {
-            exr_to_file(image, file);
+            write_exr_file(image, extras, file);
             return;
         }
         if (png.empty())
@@ -113,8 +104,8 @@ void write_image(const Image& image, const std::string& path, float exposure) {
 }
 
 void write_exr(const Image& image, const std::string& path) {
-    write_files_atomically({path},
-                           [&](size_t, const std::string& file) { exr_to_file(image, file); });
+    write_files_atomically(
+        {path}, [&](size_t, const std::string& file) { write_exr_file(image, ExrExtras{}, file); });
 }
 
 void write_png(const Image& image, const std::string& path, float exposure) {

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "engine/core/color.h"
+#include "engine/core/exr_file.h"
 
 namespace mvpl {
 
@@ -37,10 +38,13 @@ private:
 // Writes by the extension of `path`: .exr (32-bit float linear) or .png (8-bit sRGB after
 // multiplying by 2^exposure), whole or not at all (atomic_files.h). Throws UsageError for another
 // extension, NonFiniteError (finite_check.h) for an image with a NaN or an infinity, InputError
-// naming the path when the file cannot be written (a missing folder, a full disk).
+// naming the path when the file cannot be written (a missing folder, a full disk). Every EXR
+// carries the Rec. 709 chromaticities (exr_file.h).
 void write_image(const Image& image, const std::string& path, float exposure = 0.0f);
 // Every path or none: nothing replaces a target until all are written (`-o` given several times).
-void write_images(const Image& image, const std::vector<std::string>& paths, float exposure = 0.0f);
+// `extras`: channels and attributes an EXR holds besides the image (exr_file.h); a PNG has none.
+void write_images(const Image& image, const std::vector<std::string>& paths, float exposure = 0.0f,
+                  const ExrExtras& extras = {});
 void write_exr(const Image& image, const std::string& path);
 void write_png(const Image& image, const std::string& path, float exposure = 0.0f);
 // Reads the R, G, B channels of an EXR (half or float). Throws InputError naming the file.

@@ -118,6 +118,7 @@ ChainedReceiver make_chained_receiver(const scene::Scene& scene, const trace::Ac
             out.chain_emitted += out.throughput * seen * weight;
         }
         if (!vertex) return out;  // left the scene, or seen from below its shading surface
+        out.distance += glm::length(vertex->sp.p - ray.origin);
         const trace::ShadingPoint& sp = vertex->sp;
         const Vec3& wo = vertex->wo;
         if (!continues_chain(sp.bsdf, wo, options)) {

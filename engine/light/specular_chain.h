@@ -53,6 +53,9 @@ struct ChainedReceiver {
     // The longest VPL path (segments) that may light the receiver under max_depth; UINT32_MAX
     // when unlimited.
     uint32_t max_vpl_length = UINT32_MAX;
+    // The length of the path from the camera ray's origin to the receiver, segment by segment
+    // (where a mirror shows the receiver to be: the depth AOV of engine/aov).
+    float distance = 0.0f;
     // Emitted radiance met after the first vertex (emitters, the environment), and the punctual
     // lights' radiance reflected at each glossy vertex (a BSDF sample never finds a delta light),
     // weighted by the throughput to it; the first vertex's own emission goes to

@@ -141,7 +141,8 @@ uint64_t PathTracer::host_bytes(const PathTracerOptions& options) {
     return uint64_t(options.width) * uint64_t(options.height) * (sizeof(Rgb) + 2 * 3);
 }
 
-Image PathTracer::render(const PathTracerOptions& options, RenderStats* stats) const {
+Image PathTracer::render(const PathTracerOptions& options, RenderStats* stats,
+                         const CameraSampleHook& on_sample) const {
     Image image(options.width, options.height);
     const uint64_t rays_before = m_accel.ray_count();
     std::atomic<uint64_t> nonfinite{0};
@@ -156,6 +157,7 @@ Image PathTracer::render(const PathTracerOptions& options, RenderStats* stats) c
                 DVec3 sum(0.0);
                 for (int s = 0; s < options.spp; ++s) {
                     const Vec2 film = Vec2(float(x), float(y)) + next_2d(rng);
+                    if (on_sample) on_sample(x, int(y), s, film);
                     const scene::CameraRay cr = scene::generate_camera_ray(
                         m_scene.camera, options.width, options.height, film);
                     const Rgb L = radiance(trace::Ray{cr.origin, cr.direction}, rng,

@@ -3,6 +3,7 @@
 // multiple importance sampling against BSDF sampling for area lights (Veach 1997, power heuristic),
 // on the same CPU material evaluators the VPL methods use.
 #include <cstdint>
+#include <functional>
 
 #include "engine/core/image.h"
 #include "engine/core/image_size.h"
@@ -40,13 +41,19 @@ struct RenderStats {
 // (reference/clamp_compensation.h). Deeper vertices always scatter through the whole BSDF.
 enum class FirstVertex { AllLobes, DiffuseLobe };
 
+// Called once per camera sample with its pixel, its index in the pixel and its film point
+// (pixels, scene::generate_camera_ray), from the thread that renders the pixel: what the AOVs
+// average over (engine/aov), so that they see the image's own sub-pixel positions.
+using CameraSampleHook = std::function<void(int x, int y, int sample, const Vec2& film)>;
+
 class PathTracer {
 public:
     PathTracer(const scene::Scene& scene, const trace::Accel& accel,
                const light::LightSampler& lights);
 
     // Box-filtered image, deterministic for a seed whatever the thread count.
-    Image render(const PathTracerOptions& options, RenderStats* stats = nullptr) const;
+    Image render(const PathTracerOptions& options, RenderStats* stats = nullptr,
+                 const CameraSampleHook& on_sample = {}) const;
     // Host bytes a render with `options` holds at its peak, written out included: checked
     // against host_memory_bytes() before rendering (host_memory.h).
     static uint64_t host_bytes(const PathTracerOptions& options);

@@ -122,6 +122,13 @@ struct Camera {
     Vec3 position() const { return Vec3(camera_to_world[3]); }
 };
 
+// An AOV a scene file asks for (Mitsuba's `<integrator type="aov">`): mvpl's kind (albedo,
+// normal, depth, position: engine/aov/aov_kind.h) and the file's name for its channels.
+struct FileAov {
+    std::string kind;
+    std::string name;
+};
+
 struct Scene {
     std::string path;
     std::vector<Mesh> meshes;
@@ -148,6 +155,8 @@ struct Scene {
     // negative: no such integrator).
     int shadow_resolution = 0;
     float vpl_clamping = -1.0f;
+    // The AOVs the file asks for, written by render and reference unless --aov is given.
+    std::vector<FileAov> aovs;
 
     Bounds bounds() const;
     size_t triangle_count() const;

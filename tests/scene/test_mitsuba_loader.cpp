@@ -163,6 +163,33 @@ TEST(MitsubaSensor, FieldOfViewAxisFilmAndOrientation) {
     expect_near(Vec3(s.camera.camera_to_world[1]), Vec3(0, 1, 0));
 }
 
+// Mitsuba 3's aov integrator: the AOVs it names in mvpl's kinds, the nested integrator's depth,
+// the types mvpl does not write warned about, and a malformed list refused.
+TEST(MitsubaIntegrator, AovIntegratorRecordsItsAovs) {
+    const fs::path p = write("aov.xml", scene_xml(R"(<integrator type="aov">
+    <string name="aovs" value="dd.y:depth, nn:sh_normal,alb:albedo,pp:position,uv:uv"/>
+    <integrator type="path" name="image"><integer name="max_depth" value="4"/></integrator>
+</integrator>
+<shape type="rectangle"/>)"));
+    const Scene s = load_scene(p.string());
+    ASSERT_EQ(s.aovs.size(), 4u);
+    const std::pair<const char*, const char*> expected[] = {
+        {"depth", "dd.y"}, {"normal", "nn"}, {"albedo", "alb"}, {"position", "pp"}};
+    for (size_t i = 0; i < 4; ++i) {
+        EXPECT_EQ(s.aovs[i].kind, expected[i].first) << i;
+        EXPECT_EQ(s.aovs[i].name, expected[i].second) << i;
+    }
+    EXPECT_EQ(s.max_depth, 4);
+    ASSERT_EQ(s.warnings.size(), 1u);
+    EXPECT_NE(s.warnings[0].find("'uv' of type 'uv' is not written"), std::string::npos)
+        << s.warnings[0];
+    for (const char* bad : {"nn", "nn:normal", "a:depth,a:albedo"}) {
+        const fs::path q = write("aov_bad.xml", scene_xml(std::string(R"(<integrator type="aov">
+    <string name="aovs" value=")") + bad + R"("/></integrator><shape type="rectangle"/>)"));
+        EXPECT_THROW(load_scene(q.string()), InputError) << bad;
+    }
+}
+
 // Mitsuba's envmap: u = atan2(d.x, −d.z) / 2π, v = acos(d.y) / π in the emitter's local frame.
 // A bright 5 × 5 patch of a 64 × 32 map must be seen from the direction of its centre texel's
 // centre, under to_world turned about +x (a rotation mvpl's own --env-rotate cannot express).

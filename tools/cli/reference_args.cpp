@@ -1,4 +1,5 @@
 #include "tools/cli/reference_args.h"
+#include "tools/cli/exr_outputs.h"
 
 #include "engine/core/error.h"
 #include "engine/core/host_memory.h"
@@ -11,6 +12,7 @@ void add_reference_options(ArgParser& parser, ReferenceArgs& a) {
     parser.add_resolution("--res", &a.options.width, &a.options.height, "image size");
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png", "FILE");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
+    add_aov_option(parser, &a.aov_list, &a.outputs);
     parser.add_int("--threads", &a.threads, "worker threads (0 = all cores)");
     parser.add_flag("--quiet", &a.options.quiet, "no progress bar and no summary line");
     add_max_depth_option(parser, a.options.max_depth);

@@ -15,6 +15,7 @@ struct ReferenceArgs {
     std::string scene_path;
     reference::PathTracerOptions options;
     std::vector<std::string> outputs;
+    std::string aov_list;  // --aov (exr_outputs.h)
     float exposure = 0.0f;
     int threads = 0;
     CameraArgs camera;

@@ -3,12 +3,16 @@
 
 #include <cstdio>
 #include <memory>
+#include <optional>
 
+#include "engine/aov/aov_images.h"
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/core/timer.h"
 #include "engine/reference/path_tracer.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/exr_outputs.h"
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/cli/reference_args.h"
@@ -27,6 +31,7 @@ int run_reference(const Args& args) {
     reference::PathTracerOptions& options = a.options;
     std::vector<std::string>& outputs = a.outputs;
     const int threads = a.threads;
+    Timer wall;
     bool defaulted = false;
     outputs = outputs_or(outputs, "reference.exr", defaulted);
     check_outputs(outputs);
@@ -45,9 +50,18 @@ int run_reference(const Args& args) {
 
     reference::RenderStats stats;
     const reference::PathTracer tracer(session.scene(), session.accel(), session.lights());
-    const Image image = tracer.render(options, &stats);
+    const std::vector<aov::AovRequest> aovs =
+        aov_requests(parser, a.aov_list, session.scene(), outputs);
+    std::optional<aov::ReferenceAovs> aov_film;
+    if (!aovs.empty()) aov_film.emplace(session.scene(), session.accel(), options, aovs);
+    const Image image =
+        tracer.render(options, &stats, aov_film ? aov_film->hook() : reference::CameraSampleHook{});
     session.warn_if_black(image);
-    write_images(image, outputs, a.exposure);
+    ExrExtras extras;
+    if (aov_film) extras.layers = aov_film->images();
+    extras.attributes = run_attributes(
+        {"reference", &args, options.seed, std::nullopt, options.spp, wall.seconds()});
+    write_images(image, outputs, a.exposure, extras);
     say_written("reference", outputs, defaulted, options.quiet);
 
     if (stats.nonfinite_samples > 0) {

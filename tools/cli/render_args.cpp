@@ -1,4 +1,5 @@
 #include "tools/cli/render_args.h"
+#include "tools/cli/exr_outputs.h"
 
 #include "engine/core/error.h"
 #include "engine/core/subpixel.h"
@@ -25,6 +26,7 @@ void add_render_options(ArgParser& parser, RenderArgs& a) {
     parser.add_resolution("--res", &a.width, &a.height, "image size");
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png", "FILE");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
+    add_aov_option(parser, &a.aovs, &a.outputs);
     parser.add_flag("--oracle", &a.oracle,
                     "shade on the CPU with exact visibility instead of the GPU");
     parser.add_flag("--quiet", &a.quiet, "no progress bar and no summary line");

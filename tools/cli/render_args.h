@@ -26,6 +26,7 @@ struct RenderArgs {
     int width = int(kDefaultImageWidth), height = int(kDefaultImageHeight);
     RendererArgs renderer;
     std::vector<std::string> outputs;
+    std::string aovs;  // --aov (exr_outputs.h)
     float exposure = 0.0f;
     int device = -1;
     bool qmc = false, random_paths = false, oracle = false, quiet = false;

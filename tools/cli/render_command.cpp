@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <memory>
 
+#include "engine/aov/aov_images.h"
 #include "engine/cluster/cluster.h"
 
 #include "engine/core/error.h"
@@ -17,6 +18,7 @@
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/device_choice.h"
+#include "tools/cli/exr_outputs.h"
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/cli/render_args.h"
@@ -32,6 +34,27 @@ RenderJob make_job(const ArgParser& parser, RenderArgs& a, const session::SceneS
     job.quiet = a.quiet;
     job.estimate = render_estimate(parser, a, session.scene());
     return job;
+}
+
+// What the EXRs hold besides the image (exr_outputs.h): the AOVs at the render's sub-pixel
+// positions (engine/aov) and the run's attributes.
+ExrExtras exr_extras(const ArgParser& parser, const RenderArgs& a, const Args& args,
+                     const RenderJob& job, const RenderOutcome& result, const Timer& total) {
+    ExrExtras extras;
+    const session::SceneSession& s = *job.session;
+    const std::vector<aov::AovRequest> aovs = aov_requests(parser, a.aovs, s.scene(), a.outputs);
+    Timer aov_time;
+    extras.layers = aov::render_aovs({&s.scene(), &s.accel(), &s.lights(), &s.camera()},
+                                     job.estimate, result.stats.vpls, aovs);
+    if (!aovs.empty() && !a.quiet) {
+        std::printf(
+            "aov: %zu AOVs over %llu sub-pixel positions, %.2f s\n", aovs.size(),
+            static_cast<unsigned long long>(aov::aov_positions(job.estimate, result.stats.vpls)),
+            aov_time.seconds());
+    }
+    extras.attributes = run_attributes({"render", &args, job.estimate.sampling.seed,
+                                        result.stats.vpls, std::nullopt, total.seconds()});
+    return extras;
 }
 
 }  // namespace
@@ -98,7 +121,8 @@ int run_render(const Args& args) {
         }
         if (!ranks.root()) return;
         session->warn_if_black(result.image);
-        write_images(result.image, a.outputs, a.exposure);
+        const ExrExtras extras = exr_extras(parser, a, args, job, result, total);
+        write_images(result.image, a.outputs, a.exposure, extras);
         say_written("render", a.outputs, defaulted, a.quiet);
         if (!a.quiet) std::fputs(summary_line(job, result, total.seconds()).c_str(), stdout);
     });

@@ -9,6 +9,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/image.h"
+#include "engine/core/timer.h"
 #include "engine/light/chain_options.h"
 #include "engine/sampler/sampler_factory.h"
 #include "engine/scene/camera.h"
@@ -17,6 +18,7 @@
 #include "engine/trace/ray.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/exr_outputs.h"
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/session/scene_session.h"
@@ -165,6 +167,7 @@ int run_vpls(const Args& args) {
     SceneFileArgs scene_file;
     add_scene_file_options(parser, scene_file);
     if (!parser.parse(args)) return 0;
+    const Timer wall;
     if (view_name != "top" && view_name != "camera")
         throw UsageError("vpls: --view must be top or camera");
     if (count < 1 || count > (uint64_t(1) << 24))
@@ -190,7 +193,10 @@ int run_vpls(const Args& args) {
     const View view = make_view(scene, view_name == "top", width, height);
     Image image = flat_view(scene, accel, view);
     const size_t drawn = draw_vpls(image, view, vpls);
-    write_images(image, outputs);
+    ExrExtras extras;
+    extras.attributes =
+        run_attributes({"vpls", &args, settings.seed, vpls.size(), std::nullopt, wall.seconds()});
+    write_images(image, outputs, 0.0f, extras);
     say_written("vpls", outputs, defaulted, quiet);
     if (!quiet) {
         const std::string stats = stream->statistics();

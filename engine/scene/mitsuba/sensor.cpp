@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "engine/scene/camera.h"
+#include "engine/scene/mitsuba/aov_integrator.h"
 #include "engine/scene/mitsuba/properties.h"
 #include "engine/scene/mitsuba/transform.h"
 #include "engine/scene/scene_range.h"
@@ -144,6 +145,10 @@ void read_vpl_integrator(Context& ctx, pugi::xml_node integrator) {
 
 void read_integrator(Context& ctx, pugi::xml_node integrator) {
     const std::string type = integrator.attribute("type").as_string();
+    if (type == "aov") {
+        read_aov_integrator(ctx, integrator);
+        return;
+    }
     if (type == "direct") {
         ctx.scene().max_depth = 2;
         return;
