@@ -1,7 +1,8 @@
 #pragma once
-// A graphics pipeline for dynamic rendering (Vulkan 1.3, no render pass objects) and the few
-// commands that draw with it: begin/end rendering into layers of mvpl Images, non-indexed draws
-// from one vertex buffer and indexed draws of index ranges. Vulkan-free to include.
+// A graphics pipeline for dynamic rendering (Vulkan 1.3, no render pass objects; begin/end
+// rendering into layers of mvpl Images in rendering.h) and the few commands that draw with it:
+// non-indexed draws from one vertex buffer and indexed draws of index ranges. Vulkan-free to
+// include.
 //
 // The shape is what the render passes need and no more: one interleaved vertex buffer, push
 // constants visible to both stages (per-draw data fits in 128 bytes, the guaranteed push-constant
@@ -12,7 +13,6 @@
 // viewport and scissor, no blending. Depth is reversed (compare GREATER, clear to 0, z_ndc = near /
 // distance): floats then resolve depth with the same relative precision at every distance, which an
 // infinite far plane and any scene scale need.
-#include <array>
 #include <cstdint>
 #include <span>
 #include <string>
@@ -96,33 +96,6 @@ void bind_images(CommandList& cmd, const GraphicsPipeline& pipeline,
 VkDescriptorSet write_image_set(CommandList& cmd, const GraphicsPipeline& pipeline,
                                 std::span<const Image* const> images);
 void bind_image_set(CommandList& cmd, const GraphicsPipeline& pipeline, VkDescriptorSet set);
-
-// One layer of an image as an attachment, cleared at the start of rendering.
-struct ColorTarget {
-    const Image* image = nullptr;
-    uint32_t layer = 0;
-    std::array<float, 4> clear{0.0f, 0.0f, 0.0f, 0.0f};
-};
-struct DepthTarget {
-    const Image* image = nullptr;
-    uint32_t layer = 0;
-    float clear = 0.0f;  // reversed depth: 0 is infinitely far
-};
-
-// A rectangle of texels: the render area of a pass that fills only part of its targets.
-struct RenderArea {
-    uint32_t x = 0;
-    uint32_t y = 0;
-    uint32_t width = 0;
-    uint32_t height = 0;
-};
-
-// Begins dynamic rendering over the full extent of the targets (all of the same size) and sets
-// the viewport to it. depth may be nullptr. With an area, only it is cleared and drawn (render
-// area and scissor; texels outside keep what they held); the viewport stays the full extent.
-void begin_rendering(CommandList& cmd, std::span<const ColorTarget> colors,
-                     const DepthTarget* depth, const RenderArea* area = nullptr);
-void end_rendering(CommandList& cmd);
 
 // Culls back faces (or not) in the draws that follow, of a pipeline with dynamic_cull (inside
 // begin/end_rendering).

@@ -7,6 +7,7 @@
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/compute_pipeline.h"
 #include "engine/gpu/graphics_pipeline.h"
+#include "engine/gpu/rendering.h"
 #include "engine/gpu/shader_compiler.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shader_program.h"

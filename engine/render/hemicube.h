@@ -3,7 +3,7 @@
 // the world-aligned shadow cube only the texels whose directions can reach the lit side of the
 // VPL's plane are drawn (a render area; Cohen & Greenberg 1985's hemicube is one full face and
 // four half faces, which is what an axis-aligned normal gets here). The shading pass reads a
-// cube texel only for a receiver with n·ω > 0 (shading_template.glsl), or its junction lookup
+// cube texel only for a receiver with n·ω > 0 (shadow_lookup.glsl), or its junction lookup
 // up to about a texel beyond that, so a margin of kHemicubeMargin texels keeps every texel it
 // can read. The cube stays world-aligned, so the lookup does not change.
 #include <cstdint>

@@ -20,7 +20,7 @@ struct ShaderFeatures {
     std::array<bool, material::kClosureTypeCount> closure_types{};
     // A drawn material is double-sided or a mesh is open (not a solid: closed_surface.h), so the
     // scene may hold zero-thickness walls: the shadow test adds its junction lookup
-    // (shaders/render/shading_template.glsl, visibility()).
+    // (shaders/render/shadow_lookup.glsl, visibility()).
     bool thin_walls = false;
     // Glossy pixels are shaded at the end of their specular chains (engine/render/chain_layer.h):
     // the shading pass reads the chain records (binding 5). Not in all(): it needs the layer.

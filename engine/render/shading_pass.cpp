@@ -22,7 +22,7 @@ using shared::ShadingPush;
 constexpr uint32_t kGroupSize = 8;
 
 // Binding 3, the shadow cubes, is a storage image: the shader picks face and texel itself
-// (shading_template.glsl, cube_texel). Binding 4 (the directional maps) exists only in programs
+// (shadow_lookup.glsl, cube_texel). Binding 4 (the directional maps) exists only in programs
 // with directional VPLs or specular chains, binding 5 (the chain records) only in the latter.
 gpu::ComputeLayout shading_layout(const ShaderFeatures& features) {
     gpu::ComputeLayout layout{{gpu::BindingType::storage_image, gpu::BindingType::storage_image,

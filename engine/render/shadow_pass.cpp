@@ -9,6 +9,7 @@
 #include "engine/gpu/embedded_shaders.h"
 #include "engine/gpu/gpu_error.h"
 #include "engine/gpu/graphics_pipeline.h"
+#include "engine/gpu/rendering.h"
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
 #include "engine/render/directional_frame.h"

@@ -175,6 +175,40 @@ void VplRenderer::Impl::start(const scene::Camera& camera, const RenderOptions& 
     m.add_timing(start, 0.0, 0.0);
 }
 
+ShadingBatch VplRenderer::Impl::shading_batch() const {
+    ShadingBatch batch;
+    batch.camera_position = view_camera.position();
+    batch.d_min = options.clamp * geometry.bounds().diagonal();
+    batch.vsl_radius = options.vsl_radius * geometry.bounds().diagonal();
+    batch.shadows = options.shadows ? &shadow->cubes() : nullptr;
+    batch.ortho_shadows = options.shadows ? &shadow->ortho_maps() : nullptr;
+    // Emitted radiance is summed per G-buffer (EmissionSum) and added by resolve(), unscaled, so
+    // the accumulation holds VPLs only.
+    batch.add_emission = false;
+    batch.chains = chains ? &chains->records() : nullptr;
+    return batch;
+}
+
+std::span<const light::Vpl> VplRenderer::Impl::cull(std::span<const light::Vpl> slice,
+                                                    std::vector<light::Vpl>& kept,
+                                                    std::vector<bool>& skip) {
+    skip.clear();
+    // Not with chains: a VPL may light only what a mirror shows, outside the view.
+    if (!options.vpl_culling || chains) return slice;
+    // Without interleaving the culled VPLs leave the batch (each would add nothing); interleaved,
+    // a VPL's index picks its pixels, so they stay and only lose their shadow cubes.
+    kept.clear();
+    skip.resize(slice.size());
+    for (size_t i = 0; i < slice.size(); ++i) {
+        skip[i] = !culling.may_reach_view(slice[i]);
+        if (!skip[i]) kept.push_back(slice[i]);
+    }
+    timings.culled_vpls += slice.size() - kept.size();
+    if (interleave) return slice;
+    skip.clear();
+    return kept;
+}
+
 void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
                                    std::span<const uint64_t> index) {
     Impl& m = *this;
@@ -189,16 +223,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
     const std::vector<Slice> slices = plan_batches(vpls.size(), shaded_before, options, index);
     gpu::GpuTimer timer(*m.context, 3 * uint32_t(slices.size()));
 
-    ShadingBatch batch;
-    batch.camera_position = m.view_camera.position();
-    batch.d_min = options.clamp * m.geometry.bounds().diagonal();
-    batch.vsl_radius = options.vsl_radius * m.geometry.bounds().diagonal();
-    batch.shadows = options.shadows ? &m.shadow->cubes() : nullptr;
-    batch.ortho_shadows = options.shadows ? &m.shadow->ortho_maps() : nullptr;
-    // Emitted radiance is summed per G-buffer (EmissionSum) and added by resolve(), unscaled, so
-    // the accumulation holds VPLs only.
-    batch.add_emission = false;
-    batch.chains = m.chains ? &m.chains->records() : nullptr;
+    ShadingBatch batch = m.shading_batch();
     const uint64_t drawn_before = m.shadow->triangles_drawn();
     const uint64_t front_before = m.shadow->front_only_triangles();
     const uint64_t texels_before = m.shadow->texels_drawn();
@@ -210,24 +235,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
         // call (the accumulation must hold them when the call returns).
         const bool position_ends = si + 1 == slices.size() || slices[si + 1].position != s.position;
         std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
-        skip.clear();
-        // Not with chains: a VPL may light only what a mirror shows, outside the view.
-        if (options.vpl_culling && !m.chains) {
-            // Without interleaving the culled VPLs leave the batch (each would add nothing);
-            // interleaved, a VPL's index picks its pixels, so they stay and only lose their
-            // shadow cubes.
-            kept.clear();
-            skip.resize(slice.size());
-            for (size_t i = 0; i < slice.size(); ++i) {
-                skip[i] = !m.culling.may_reach_view(slice[i]);
-                if (!skip[i]) kept.push_back(slice[i]);
-            }
-            m.timings.culled_vpls += slice.size() - kept.size();
-            if (!m.interleave) {
-                slice = kept;
-                skip.clear();
-            }
-        }
+        slice = m.cull(slice, kept, skip);
         m.shading->upload(slice, m.geometry.bounds());
         if (m.interleave) {
             batch.interleave = options.interleave;

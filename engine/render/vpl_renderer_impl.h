@@ -94,6 +94,13 @@ struct VplRenderer::Impl {
     }
     void start(const scene::Camera& camera, const RenderOptions& options);
     void accumulate(std::span<const light::Vpl> vpls, std::span<const uint64_t> index);
+    // What every batch of accumulate() shades with: the view, the clamp, the maps, the chains.
+    ShadingBatch shading_batch() const;
+    // The VPLs of `slice` to shade. With options.vpl_culling (and no chains): those that may
+    // light the view, copied into kept; interleaved, all of them, with skip[i] set for the others
+    // (they draw no shadow cube). skip is empty otherwise.
+    std::span<const light::Vpl> cull(std::span<const light::Vpl> slice,
+                                     std::vector<light::Vpl>& kept, std::vector<bool>& skip);
 
     // Draws the G-buffer at sub-pixel `index` and, with add_emission, adds its emission to the
     // sum (and marks the position drawn).

@@ -19,56 +19,17 @@
 #include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
+#include "tests/reference/caustic_scenes.h"
 #include "tests/support/sample_statistics.h"
-#include "tests/support/scene_builder.h"
 
 namespace mvpl::reference {
 namespace {
 
 constexpr int kSize = 24;
 constexpr int kMaxDepth = 3;
-constexpr float kPaneY = 0.5f;
-constexpr float kPaneHalf = 0.5f;
-constexpr float kLightHalf = 0.25f;
 // The floor points that see the whole light through the pane: |x|, |z| < 2·kPaneHalf − kLightHalf
 // = 0.75 (the pane halfway up); the region keeps a margin to that umbra's edge.
 constexpr float kRegionHalf = 0.55f;
-
-// A diffuse floor (y = 0) and back wall (z = −1.5) under a downward area light (0.5 × 0.5, y = 1,
-// radiance 4) with a thin smooth glass pane (1 × 1, transmission 1, IOR 1.5) halfway between
-// light and floor, and a point light (intensity 1) low at the side, below the pane's plane; the
-// camera, below that plane too, sees the floor under the pane without looking through it. At max
-// depth 3 that floor is lit through the pane (light → glass → floor → eye: the caustic tracer's),
-// by the point light directly and through the wall (the VPLs').
-// `glass` false: the pane is diffuse (a diffuse-only scene).
-scene::Scene make_pane_scene(bool glass = true) {
-    scene::Scene s;
-    scene::Material pane = test::diffuse_material(Rgb(0.5f));
-    if (glass) {
-        pane.base_color = Rgb(1.0f);
-        pane.roughness = 0.0f;
-        pane.ior = 1.5f;
-        pane.transmission = 1.0f;
-        pane.double_sided = true;
-    }
-    s.materials = {test::diffuse_material(Rgb(0.8f)), test::diffuse_material(Rgb(0.0f)), pane,
-                   test::diffuse_material(Rgb(0.7f))};
-    s.materials[1].emissive = Rgb(4.0f);
-    s.meshes.push_back(test::make_quad(Vec3(-2, 0, -1.5f), Vec3(0, 0, 3.5f), Vec3(4, 0, 0), 0));
-    s.meshes.push_back(test::make_quad(Vec3(-2, 0, -1.5f), Vec3(4, 0, 0), Vec3(0, 2, 0), 3));
-    const float l = kLightHalf, h = kPaneHalf;
-    s.meshes.push_back(  // facing down
-        test::make_quad(Vec3(-l, 1.0f, -l), Vec3(2 * l, 0, 0), Vec3(0, 0, 2 * l), 1));
-    s.meshes.push_back(
-        test::make_quad(Vec3(-h, kPaneY, -h), Vec3(2 * h, 0, 0), Vec3(0, 0, 2 * h), 2));
-    scene::Light point;
-    point.position = Vec3(1.2f, 0.3f, 0.0f);
-    point.intensity = Rgb(1.0f);
-    s.lights.push_back(point);
-    s.camera = test::look_at(Vec3(0.0f, 0.45f, 1.4f), Vec3(0.0f, 0.0f, -0.1f), 1.0f);
-    s.has_camera = true;
-    return s;
-}
 
 // The floor point (y = 0) that pixel (x, y)'s centre ray meets, if it goes down.
 std::optional<Vec3> floor_point(const scene::Camera& camera, int x, int y) {
@@ -282,31 +243,7 @@ TEST(CausticTracer, LobeWiseCompensationLeavesTheGlassLightToTheCaustics) {
     EXPECT_LT(m.all_left, 0.8 * m.tracer.mean);
 }
 
-// A near-mirror (metal, roughness 0.05: the chains' class) standing on the floor beside a
-// downward area light: the light it reflects onto the floor goes to the caustic tracer instead of
-// VPLs on the mirror, so that it is counted once. (VPLs left on the mirror too would count it
-// twice in expectation, but their 10⁻³ rad lobes are heavy-tailed: at 512 paths they add almost
-// nothing in most runs — printed — which is why the light tracer carries that light.) The
-// region: floor points the camera sees directly, in front of the mirror (the camera at x = −1
-// meets them before the mirror's plane x = 0.8).
-scene::Scene make_mirror_scene() {
-    scene::Scene s;
-    scene::Material mirror;
-    mirror.base_color = Rgb(0.9f);
-    mirror.metallic = 1.0f;
-    mirror.roughness = 0.05f;
-    s.materials = {test::diffuse_material(Rgb(0.8f)), test::diffuse_material(Rgb(0.0f)), mirror};
-    s.materials[1].emissive = Rgb(4.0f);
-    s.meshes.push_back(test::make_quad(Vec3(-2, 0, -1.5f), Vec3(0, 0, 3.5f), Vec3(4, 0, 0), 0));
-    s.meshes.push_back(  // facing down
-        test::make_quad(Vec3(-0.05f, 1.0f, -0.25f), Vec3(0.5f, 0, 0), Vec3(0, 0, 0.5f), 1));
-    s.meshes.push_back(  // facing −X
-        test::make_quad(Vec3(0.8f, 0.0f, -0.6f), Vec3(0, 0, 1.2f), Vec3(0, 1.0f, 0), 2));
-    s.camera = test::look_at(Vec3(-1.0f, 0.8f, 1.2f), Vec3(0.3f, 0.0f, -0.2f), 1.0f);
-    s.has_camera = true;
-    return s;
-}
-
+// The floor points the camera sees directly in front of the near-mirror (caustic_scenes.h).
 TEST(CausticTracer, FloorLitByANearMirrorMatchesThePathTracer) {
     const Means m = compare_with_tracer(make_mirror_scene(), [](const Vec3& p) {
         return p.x > 0.0f && p.x < 0.75f && std::abs(p.z) < 0.6f;

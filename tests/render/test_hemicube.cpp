@@ -16,7 +16,7 @@
 namespace mvpl::render {
 namespace {
 
-// The face and texel that direction w falls in, as shading_template.glsl's cube_texel finds
+// The face and texel that direction w falls in, as shadow_lookup.glsl's cube_texel finds
 // them (major axis, then (s_c, t_c) / |m_a|).
 std::pair<uint32_t, glm::uvec2> texel_of(const Vec3& w, uint32_t res) {
     const Vec3 a = glm::abs(w);

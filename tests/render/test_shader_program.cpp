@@ -9,6 +9,7 @@
 #include <fstream>
 #include <set>
 
+#include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
 #include "engine/material/material_codegen.h"
 #include "engine/render/closed_surface.h"
@@ -82,7 +83,7 @@ TEST(ShaderProgram, CornellBoxHasNoMicrofacetCodeNoSamplerAndOnlyItsLightTypes) 
     EXPECT_FALSE(contains(s.shading_comp.source, "vsl_glossy_d2"));
     // Depth 2 (direct light only): no surface VPL, so no closure of a VPL is evaluated.
     const SceneShaders direct = generate_scene_shaders(scene, ShaderOptions{false});
-    EXPECT_FALSE(contains(direct.shading_comp.source, "f_vpl = closure_eval"));
+    EXPECT_FALSE(contains(direct.shading_comp.source, "e.f = closure_eval"));
     EXPECT_FALSE(contains(direct.shading_comp.source, "v.closure_type"));
     // One function per material, named after it; the closure node named after its kind.
     for (size_t i = 0; i < scene.materials.size(); ++i) {
@@ -174,6 +175,26 @@ TEST(ShaderProgram, ATexturedGlossyMaterialAddsExactlyItsNodes) {
     EXPECT_TRUE(added.contains("ggx_d"));
     EXPECT_FALSE(added.contains("ggx_conductor_eval"));
     EXPECT_TRUE(minus(as_set(shading_before), as_set(shading_after)).empty());
+}
+
+// The shading template's `//@if` blocks cut across its functions (a VPL type's code, the glossy
+// lobes, the chains, the junction lookup): every combination that a scene can ask for must still
+// be a program glslang accepts, not only those of the scenes the GPU tests render.
+TEST(ShaderProgram, EveryVariantOfTheShadingProgramCompiles) {
+    for (uint32_t mask = 1; mask < (1u << kVplTypeCount); ++mask) {
+        for (uint32_t flags = 0; flags < 8; ++flags) {
+            ShaderFeatures f;
+            for (int t = 0; t < kVplTypeCount; ++t)
+                f.vpl_types[size_t(t)] = (mask >> t & 1u) != 0;
+            f.closure_types.fill((flags & 1u) != 0);  // microfacet closures: glossy()
+            f.closure_types[size_t(material::ClosureType::Lambertian)] = true;
+            f.thin_walls = (flags & 2u) != 0;
+            f.specular_chains = (flags & 4u) != 0;
+            const StageSource s = generate_shading_source(f);
+            EXPECT_NO_THROW(gpu::compile_glsl(gpu::ShaderStage::compute, s.source, s.name))
+                << "VPL types " << mask << ", flags " << flags;
+        }
+    }
 }
 
 TEST(ShaderProgram, TemplatesKeepOnlyEnabledBlocks) {

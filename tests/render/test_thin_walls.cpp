@@ -124,7 +124,7 @@ std::array<std::pair<Vec3, float>, 4> planes(float wall_x) {
 
 // Where the shadow map may legitimately disagree with exact visibility at receiver p (geometric
 // normal n, facing the VPL) because an occluder's plane passes close to it; the two lookups of
-// shading_template.glsl's visibility(), τ the texel angle, d the distance:
+// shadow_lookup.glsl's visibility(), τ the texel angle, d the distance:
 // - the junction lookup reads the texel of p' = p + τ·d·sin θ·n (the normal offset) and compares
 //   p''s own distance with what the texel stores along its centre, up to half a texel diagonal
 //   (0.71 τ) from p' as seen from the VPL. On an occluder plane met at angle β from its normal,

@@ -139,129 +139,148 @@ void add_examples(ArgParser& parser) {
         "against the mean of two independent references, with their own noise reported");
 }
 
-}  // namespace
-
-int run_convergence(const Args& args) {
-    cluster::Cluster& ranks = cluster::world();
-    // SIGINT, SIGTERM: the methods and points so far are written (engine/core/interrupt.h).
-    install_interrupt_handlers();
+// What `mvpl convergence` was asked.
+struct ConvergenceArgs {
     std::string scene_path, ref_path, out_dir = "convergence";
     std::vector<std::string> more_references;
     std::string methods_text = "pt,mc,metropolis";
     float budget = 10.0f;
     int width = 0, height = 0;
     sampler::SamplerSettings settings;  // max depth and seed; the rest is each sampler's default
-    RendererArgs renderer_args;
-    CompensationArgs compensation_args;
-    bool no_caustics = false;
-    bool quiet = false, no_plot = false;
-    ArgParser parser(
-        "convergence",
-        "Error against run time: the reference path tracer and the VPL samplers,\n"
-        "each run progressively up to --budget seconds against --ref; writes\n"
-        "DIR/convergence.csv and DIR/convergence.png and prints, per VPL sampler, the\n"
-        "speed-up over the path tracer at equal relMSE and the bias floor.\n"
-        "Under mpirun, the ranks share each method's work and rank 0 writes.");
-    parser.add_positional("SCENE", &scene_path, "scene file");
-    parser.add_string("--ref", &ref_path, "reference image (.exr); its size is the image size",
+    RendererArgs renderer;
+    CompensationArgs compensation;
+    bool no_caustics = false, quiet = false, no_plot = false;
+    CameraArgs camera;
+    EnvironmentArgs environment;
+    SceneFileArgs scene_file;
+    int device = -1;
+};
+
+void add_options(ArgParser& parser, ConvergenceArgs& a) {
+    parser.add_positional("SCENE", &a.scene_path, "scene file");
+    parser.add_string("--ref", &a.ref_path, "reference image (.exr); its size is the image size",
                       "FILE");
-    parser.add_strings("--and-ref", &more_references,
+    parser.add_strings("--and-ref", &a.more_references,
                        "another independent reference (a different seed, the same sample count): "
                        "errors are against the references' mean, and the summary prints their "
                        "own share of relMSE and each method's error less it",
                        "FILE");
-    parser.add_float("--budget", &budget, "seconds per method", "SEC");
-    parser.add_string("--out", &out_dir, "output directory", "DIR");
-    parser.add_resolution("--res", &width, &height,
+    parser.add_float("--budget", &a.budget, "seconds per method", "SEC");
+    parser.add_string("--out", &a.out_dir, "output directory", "DIR");
+    parser.add_resolution("--res", &a.width, &a.height,
                           "image size (default and only allowed: the reference's)");
-    parser.add_string("--methods", &methods_text, "comma-separated, of pt, mc and metropolis",
+    parser.add_string("--methods", &a.methods_text, "comma-separated, of pt, mc and metropolis",
                       "NAME,...");
-    parser.add_flag("--no-plot", &no_plot, "write the CSV only");
-    parser.add_flag("--quiet", &quiet, "no progress bars and no summary");
-    add_renderer_options(parser, renderer_args);
-    add_compensation_options(parser, compensation_args);
-    add_caustics_option(parser, no_caustics);
-    add_max_depth_option(parser, settings.tracer.max_depth);
-    add_seed_option(parser, settings.seed);
-    CameraArgs camera;
-    add_camera_options(parser, camera);
-    EnvironmentArgs environment;
-    add_environment_options(parser, environment);
-    SceneFileArgs scene_file;
-    add_scene_file_options(parser, scene_file);
-    int device = -1;
-    add_device_option(parser, device,
+    parser.add_flag("--no-plot", &a.no_plot, "write the CSV only");
+    parser.add_flag("--quiet", &a.quiet, "no progress bars and no summary");
+    add_renderer_options(parser, a.renderer);
+    add_compensation_options(parser, a.compensation);
+    add_caustics_option(parser, a.no_caustics);
+    add_max_depth_option(parser, a.settings.tracer.max_depth);
+    add_seed_option(parser, a.settings.seed);
+    add_camera_options(parser, a.camera);
+    add_environment_options(parser, a.environment);
+    add_scene_file_options(parser, a.scene_file);
+    add_device_option(parser, a.device,
                       "Vulkan device index (see mvpl info), -1 = default; under mpirun "
                       "local-rank: by the rank's place on its machine",
                       "N|local-rank");
     add_examples(parser);
-    bool parsed = false;
+}
+
+// --ref, or the mean of it and the --and-ref images, whose own share of relMSE goes to *noise
+// (0 for one reference); checked against --res.
+Image read_reference(const ConvergenceArgs& a, double* noise) {
+    Image reference = read_finite_exr(a.ref_path);
+    *noise = 0.0;
+    if (!a.more_references.empty()) {
+        std::vector<Image> references{reference};
+        for (const std::string& path : a.more_references) {
+            references.push_back(read_finite_exr(path));
+            if (references.back().width() != reference.width() ||
+                references.back().height() != reference.height())
+                throw InputError(path, "size differs from --ref's");
+        }
+        reference = average_images(references);
+        *noise = reference_noise(references);
+    }
+    if (a.width != 0 && (a.width != reference.width() || a.height != reference.height())) {
+        throw UsageError("convergence: --res " + std::to_string(a.width) + "x" +
+                         std::to_string(a.height) + " differs from the reference's " +
+                         std::to_string(reference.width()) + "x" +
+                         std::to_string(reference.height()));
+    }
+    return reference;
+}
+
+// What every rank reads before the runs: the methods, the reference and the scene.
+struct ConvergenceInputs {
     std::vector<std::string> methods;
     Image reference;
     double noise = 0.0;  // the references' own share of relMSE
-    std::unique_ptr<session::SceneSession> loaded;
+    std::unique_ptr<session::SceneSession> session;
+};
+
+// Parses and loads on every rank (an error on one is met by all); false after --help.
+bool parse_and_load(const Args& args, ArgParser& parser, ConvergenceArgs& a, ConvergenceInputs& in,
+                    cluster::Cluster& ranks) {
+    bool parsed = false;
     cluster::together(ranks, [&] {
         parsed = parser.parse(with_local_rank_device(args));
         if (!parsed) return;
-        check_device("convergence", device);
-        methods = checked_methods(ref_path, budget, methods_text);
-        reference = read_finite_exr(ref_path);
-        if (!more_references.empty()) {
-            std::vector<Image> references{reference};
-            for (const std::string& path : more_references) {
-                references.push_back(read_finite_exr(path));
-                if (references.back().width() != reference.width() ||
-                    references.back().height() != reference.height())
-                    throw InputError(path, "size differs from --ref's");
-            }
-            reference = average_images(references);
-            noise = reference_noise(references);
-        }
-        if (width != 0 && (width != reference.width() || height != reference.height())) {
-            throw UsageError("convergence: --res " + std::to_string(width) + "x" +
-                             std::to_string(height) + " differs from the reference's " +
-                             std::to_string(reference.width()) + "x" +
-                             std::to_string(reference.height()));
-        }
-        loaded = std::make_unique<session::SceneSession>(scene_path, camera.choice,
-                                                         environment.choice, scene_file.options);
-        apply_scene_defaults(parser, loaded->scene(), &settings.tracer.max_depth, nullptr, nullptr);
-        apply_vpl_integrator_defaults(parser, *loaded, settings.tracer.max_depth, renderer_args);
-        if (ranks.root()) create_output_folder(out_dir);
+        check_device("convergence", a.device);
+        in.methods = checked_methods(a.ref_path, a.budget, a.methods_text);
+        in.reference = read_reference(a, &in.noise);
+        in.session = std::make_unique<session::SceneSession>(
+            a.scene_path, a.camera.choice, a.environment.choice, a.scene_file.options);
+        apply_scene_defaults(parser, in.session->scene(), &a.settings.tracer.max_depth, nullptr,
+                             nullptr);
+        apply_vpl_integrator_defaults(parser, *in.session, a.settings.tracer.max_depth, a.renderer);
+        if (ranks.root()) create_output_folder(a.out_dir);
     });
-    if (!parsed) return 0;
-    const session::SceneSession& session = *loaded;
-    // Rank 0 alone prints: progress, summary and the files written.
-    if (!ranks.root()) quiet = true;
+    return parsed;
+}
 
+// The run's parameters; settings and render_options get the VPL samplers' and the renderer's.
+ConvergenceRun configure_run(ConvergenceArgs& a, const ConvergenceInputs& in,
+                             render::RenderOptions& render_options, cluster::Cluster& ranks) {
+    const session::SceneSession& session = *in.session;
+    sampler::SamplerSettings& settings = a.settings;
     ConvergenceRun run;
     run.session = &session;
-    run.reference = &reference;
-    run.budget_seconds = budget;
+    run.reference = &in.reference;
+    run.budget_seconds = a.budget;
     run.max_depth = settings.tracer.max_depth;
     run.seed = settings.seed;
-    settings.width = reference.width();
-    settings.height = reference.height();
-    settings.clamp = renderer_args.clamp;
-    settings.vsl_radius = renderer_args.vsl();
-    render::RenderOptions render_options;
-    renderer_args.apply(render_options);
+    settings.width = in.reference.width();
+    settings.height = in.reference.height();
+    settings.clamp = a.renderer.clamp;
+    settings.vsl_radius = a.renderer.vsl();
+    a.renderer.apply(render_options);
     render_options.chains.max_depth = run.max_depth;
     render_options.interleave =
-        renderer_args.interleave_for(session.scene(), render_options.chains,
-                                     uint32_t(settings.width), uint32_t(settings.height));
-    render_options.batches_per_position = renderer_args.batches_per_position_for(session.scene());
+        a.renderer.interleave_for(session.scene(), render_options.chains, uint32_t(settings.width),
+                                  uint32_t(settings.height));
+    render_options.batches_per_position = a.renderer.batches_per_position_for(session.scene());
     settings.specular_chains = render_options.chains;  // the Metropolis target follows them too
-    run.quiet = quiet;
-    run.compensate = compensation_args.enabled();
-    run.compensation_passes = uint32_t(compensation_args.spp);
-    run.caustics = !no_caustics;
+    run.quiet = a.quiet;
+    run.compensate = a.compensation.enabled();
+    run.compensation_passes = uint32_t(a.compensation.spp);
+    run.caustics = !a.no_caustics;
     run.cluster = &ranks;
+    return run;
+}
 
+// Each method in turn, its points appended; the device and integrator are made for the first
+// VPL sampler. Stops early, with the points so far, on SIGINT/SIGTERM on any rank.
+std::vector<ConvergencePoint> run_methods(const ConvergenceArgs& a, const ConvergenceInputs& in,
+                                          const ConvergenceRun& run,
+                                          const render::RenderOptions& render_options,
+                                          cluster::Cluster& ranks) {
     std::vector<ConvergencePoint> all;
     std::unique_ptr<gpu::Context> context;
     std::unique_ptr<integrator::VplIntegrator> vpl_integrator;
-    for (const std::string& method : methods) {
+    for (const std::string& method : in.methods) {
         // SIGINT/SIGTERM on any rank (interrupt.h): the methods run so far are written.
         std::vector<double> stop(1, interrupted() ? 1.0 : 0.0);
         ranks.sum_all(stop);
@@ -273,35 +292,40 @@ int run_convergence(const Args& args) {
             if (!vpl_integrator) {
                 cluster::together(ranks, [&] {
                     gpu::ContextOptions co;
-                    co.device_index = device;
+                    co.device_index = a.device;
                     context = std::make_unique<gpu::Context>(co);
                 });
                 vpl_integrator = std::make_unique<integrator::VplIntegrator>(
-                    session.view(), context.get(),
-                    renderer_args.devices_for(context->device_info()), &ranks);
+                    in.session->view(), context.get(),
+                    a.renderer.devices_for(context->device_info()), &ranks);
             }
-            points = run_vpl_sampler(run, method, settings, *vpl_integrator, render_options);
+            points = run_vpl_sampler(run, method, a.settings, *vpl_integrator, render_options);
         }
         all.insert(all.end(), points.begin(), points.end());
     }
+    return all;
+}
 
-    // Rank 0 writes; the others wait for it, so that all exit with its status.
+// DIR/convergence.csv and the plot, written by rank 0 (the others wait for it, so that all exit
+// with its status), and the summary.
+void write_outputs(const ConvergenceArgs& a, const ConvergenceInputs& in,
+                   const std::vector<ConvergencePoint>& all, cluster::Cluster& ranks) {
     cluster::together(ranks, [&] {
         if (!ranks.root()) return;
-        const std::filesystem::path csv = std::filesystem::path(out_dir) / "convergence.csv";
+        const std::filesystem::path csv = std::filesystem::path(a.out_dir) / "convergence.csv";
         // Whole or not at all, every write checked (atomic_files.h).
         const std::string text = to_csv(all);
         write_files_atomically({csv.string()}, [&](size_t, const std::string& temp) {
             write_bytes(temp,
                         std::span(reinterpret_cast<const uint8_t*>(text.data()), text.size()));
         });
-        if (!quiet) print_summary(all, methods, noise);
-        if (!no_plot) {
-            const std::filesystem::path png = std::filesystem::path(out_dir) / "convergence.png";
+        if (!a.quiet) print_summary(all, in.methods, in.noise);
+        if (!a.no_plot) {
+            const std::filesystem::path png = std::filesystem::path(a.out_dir) / "convergence.png";
             const std::string command =
                 shell_quote(python_interpreter()) + " " + shell_quote(plot_script().string()) +
                 " " + shell_quote(csv.string()) + " " + shell_quote(png.string()) + " --title " +
-                shell_quote(std::filesystem::path(scene_path).stem().string());
+                shell_quote(std::filesystem::path(a.scene_path).stem().string());
             if (std::system(command.c_str()) != 0) {
                 std::fprintf(stderr,
                              "mvpl: warning: the plot was not made (%s failed; python3-matplotlib "
@@ -309,8 +333,32 @@ int run_convergence(const Args& args) {
                              plot_script().string().c_str(), csv.string().c_str());
             }
         }
-        if (!quiet) std::printf("convergence: wrote %s\n", csv.string().c_str());
+        if (!a.quiet) std::printf("convergence: wrote %s\n", csv.string().c_str());
     });
+}
+
+}  // namespace
+
+int run_convergence(const Args& args) {
+    cluster::Cluster& ranks = cluster::world();
+    // SIGINT, SIGTERM: the methods and points so far are written (engine/core/interrupt.h).
+    install_interrupt_handlers();
+    ConvergenceArgs a;
+    ArgParser parser(
+        "convergence",
+        "Error against run time: the reference path tracer and the VPL samplers,\n"
+        "each run progressively up to --budget seconds against --ref; writes\n"
+        "DIR/convergence.csv and DIR/convergence.png and prints, per VPL sampler, the\n"
+        "speed-up over the path tracer at equal relMSE and the bias floor.\n"
+        "Under mpirun, the ranks share each method's work and rank 0 writes.");
+    add_options(parser, a);
+    ConvergenceInputs in;
+    if (!parse_and_load(args, parser, a, in, ranks)) return 0;
+    // Rank 0 alone prints: progress, summary and the files written.
+    if (!ranks.root()) a.quiet = true;
+    render::RenderOptions render_options;
+    const ConvergenceRun run = configure_run(a, in, render_options, ranks);
+    write_outputs(a, in, run_methods(a, in, run, render_options, ranks), ranks);
     return 0;
 }
 

@@ -24,14 +24,90 @@ void add_examples(ArgParser& parser) {
         "120 frames without a user, the last one written to cbox.png");
 }
 
-}  // namespace
-
-int run_preview(const Args& args) {
+// What `mvpl preview` was asked: PreviewOptions' own fields, and what is checked or converted
+// before it gets them.
+struct PreviewArgs {
     preview::PreviewOptions o;
     int width = o.width, height = o.height;
     float budget = float(o.budget_ms);
     RendererArgs renderer;
-    bool no_hud = false, no_motion_scaling = false;
+    CompensationArgs compensation;
+    bool no_caustics = false, no_hud = false, no_motion_scaling = false;
+    CameraArgs camera;
+    EnvironmentArgs environment;
+    SceneFileArgs scene_file;
+};
+
+void add_options(ArgParser& parser, PreviewArgs& a) {
+    preview::PreviewOptions& o = a.o;
+    parser.add_positional("SCENE", &o.scene_path, "glTF 2.0 scene (.gltf or .glb)");
+    parser.add_resolution("--res", &a.width, &a.height, "initial window size");
+    parser.add_float("--budget-ms", &a.budget, "shading time per frame in milliseconds", "MS");
+    parser.add_uint64("--paths-per-frame", &o.paths_per_frame,
+                      "fixed sampler work (light paths / chain steps) per frame instead of "
+                      "--budget-ms");
+    parser.add_uint64("--vpls", &o.max_paths,
+                      "stop sampling after this many light paths / steps (0 = never)");
+    parser.add_uint64("--frames", &o.frames, "exit after N frames (0 = when closed)");
+    parser.add_string("--screenshot", &o.screenshot, "image written after the last frame", "FILE");
+    parser.add_string("--script", &o.script, "timed input events (format above)", "FILE");
+    parser.add_float("--exposure", &o.exposure, "exposure in stops");
+    parser.add_flag("--no-hud", &a.no_hud, "no text overlay");
+    parser.add_flag("--no-motion-scaling", &a.no_motion_scaling,
+                    "render at full resolution while the camera moves too");
+    parser.add_flag("--quiet", &o.quiet, "no summary line");
+    add_sampler_option(parser, o.sampler);
+    add_renderer_options(parser, a.renderer);  // C toggles clamping in the window
+    add_compensation_options(parser, a.compensation);
+    add_caustics_option(parser, a.no_caustics);
+    add_max_depth_option(parser, o.max_depth);
+    add_seed_option(parser, o.seed);
+    add_camera_options(parser, a.camera);
+    add_environment_options(parser, a.environment);
+    add_scene_file_options(parser, a.scene_file);
+    add_examples(parser);
+}
+
+// The window's options, after the checks of what the window cannot do.
+preview::PreviewOptions checked_options(const PreviewArgs& a) {
+    preview::PreviewOptions o = a.o;
+    const RendererArgs& renderer = a.renderer;
+    if (a.width < 16 || a.height < 16 || a.width > 8192 || a.height > 8192)
+        throw UsageError("preview: --res must be in 16..8192 on each side");
+    if (!(a.budget > 0.0f && a.budget <= 10000.0f))
+        throw UsageError("preview: --budget-ms must be in (0, 10000]");
+    // The window presents one device's accumulation and G-buffer (preview_app.h).
+    if (renderer.devices > 1) throw UsageError("preview: --devices must be 0 or 1");
+    if (!o.screenshot.empty()) {
+        if (o.frames == 0) throw UsageError("preview: --screenshot needs --frames N");
+        check_outputs({o.screenshot});
+    }
+    o.width = a.width;
+    o.height = a.height;
+    o.budget_ms = a.budget;
+    o.shadow_resolution = uint32_t(renderer.shadow_res);
+    o.batch = uint32_t(renderer.batch);
+    o.jitter = !renderer.no_jitter;
+    o.clamp = renderer.clamp;
+    renderer.apply(o.levers);
+    o.interleave_auto = renderer.interleave == 0;
+    o.interleave_min_pixels = RendererArgs::kInterleaveMinPixels;
+    o.batches_per_position_auto = renderer.batches_per_position == 0;
+    o.compensate = a.compensation.enabled();
+    o.compensation_passes = uint32_t(a.compensation.spp);
+    o.caustics = !a.no_caustics;
+    o.hud = !a.no_hud;
+    o.motion_scaling = !a.no_motion_scaling;
+    o.camera = a.camera.choice;
+    o.environment = a.environment.choice;
+    o.load = a.scene_file.options;
+    return o;
+}
+
+}  // namespace
+
+int run_preview(const Args& args) {
+    PreviewArgs a;
     ArgParser parser(
         "preview",
         "Opens a window that renders SCENE progressively with virtual point lights: each frame\n"
@@ -51,69 +127,9 @@ int run_preview(const Args& args) {
         "where FRAME is the index (from 0) of the frame at whose start the event happens.\n"
         "--frames N with --screenshot FILE renders N frames, writes the last (.png: the window's\n"
         "picture without the HUD; .exr: linear radiance) and exits.");
-    parser.add_positional("SCENE", &o.scene_path, "glTF 2.0 scene (.gltf or .glb)");
-    parser.add_resolution("--res", &width, &height, "initial window size");
-    parser.add_float("--budget-ms", &budget, "shading time per frame in milliseconds", "MS");
-    parser.add_uint64("--paths-per-frame", &o.paths_per_frame,
-                      "fixed sampler work (light paths / chain steps) per frame instead of "
-                      "--budget-ms");
-    parser.add_uint64("--vpls", &o.max_paths,
-                      "stop sampling after this many light paths / steps (0 = never)");
-    parser.add_uint64("--frames", &o.frames, "exit after N frames (0 = when closed)");
-    parser.add_string("--screenshot", &o.screenshot, "image written after the last frame", "FILE");
-    parser.add_string("--script", &o.script, "timed input events (format above)", "FILE");
-    parser.add_float("--exposure", &o.exposure, "exposure in stops");
-    parser.add_flag("--no-hud", &no_hud, "no text overlay");
-    parser.add_flag("--no-motion-scaling", &no_motion_scaling,
-                    "render at full resolution while the camera moves too");
-    parser.add_flag("--quiet", &o.quiet, "no summary line");
-    add_sampler_option(parser, o.sampler);
-    add_renderer_options(parser, renderer);  // C toggles clamping in the window
-    CompensationArgs compensation;
-    add_compensation_options(parser, compensation);
-    bool no_caustics = false;
-    add_caustics_option(parser, no_caustics);
-    add_max_depth_option(parser, o.max_depth);
-    add_seed_option(parser, o.seed);
-    CameraArgs camera;
-    add_camera_options(parser, camera);
-    EnvironmentArgs environment;
-    add_environment_options(parser, environment);
-    SceneFileArgs scene_file;
-    add_scene_file_options(parser, scene_file);
-    add_examples(parser);
+    add_options(parser, a);
     if (!parser.parse(args)) return 0;
-
-    if (width < 16 || height < 16 || width > 8192 || height > 8192)
-        throw UsageError("preview: --res must be in 16..8192 on each side");
-    if (!(budget > 0.0f && budget <= 10000.0f))
-        throw UsageError("preview: --budget-ms must be in (0, 10000]");
-    // The window presents one device's accumulation and G-buffer (preview_app.h).
-    if (renderer.devices > 1) throw UsageError("preview: --devices must be 0 or 1");
-    if (!o.screenshot.empty()) {
-        if (o.frames == 0) throw UsageError("preview: --screenshot needs --frames N");
-        check_outputs({o.screenshot});
-    }
-    o.width = width;
-    o.height = height;
-    o.budget_ms = budget;
-    o.shadow_resolution = uint32_t(renderer.shadow_res);
-    o.batch = uint32_t(renderer.batch);
-    o.jitter = !renderer.no_jitter;
-    o.clamp = renderer.clamp;
-    renderer.apply(o.levers);
-    o.interleave_auto = renderer.interleave == 0;
-    o.interleave_min_pixels = RendererArgs::kInterleaveMinPixels;
-    o.batches_per_position_auto = renderer.batches_per_position == 0;
-    o.compensate = compensation.enabled();
-    o.compensation_passes = uint32_t(compensation.spp);
-    o.caustics = !no_caustics;
-    o.hud = !no_hud;
-    o.motion_scaling = !no_motion_scaling;
-    o.camera = camera.choice;
-    o.environment = environment.choice;
-    o.load = scene_file.options;
-    return preview::run_preview(o);
+    return preview::run_preview(checked_options(a));
 }
 
 }  // namespace mvpl::cli

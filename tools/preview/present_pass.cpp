@@ -110,7 +110,101 @@ struct PresentPass::Impl {
           linear_target(linear),
           pipeline(c, gpu::compile_embedded_shader("preview/present.comp"), present_layout(),
                    "preview/present.comp") {}
+
+    // The display image at the frame's size and, for a capture, a readback buffer that holds it.
+    void fit(uint32_t width, uint32_t height, bool capture);
+    // Points the set's five bindings at the images.
+    void bind(const gpu::Image& accumulation, const gpu::Image& emission);
+    // One pass of present.comp over the display image, with the HUD or without.
+    void dispatch(VkCommandBuffer cmd, Push push, bool with_hud) const;
+    // The picture without the HUD copied into the readback buffer, then the HUD drawn over it.
+    void capture(VkCommandBuffer cmd, const Push& push, bool with_hud);
+    // The display image blitted into the swapchain image, which is left ready to present.
+    void blit(VkCommandBuffer cmd, const gpu::SwapchainFrame& frame) const;
 };
+
+void PresentPass::Impl::fit(uint32_t width, uint32_t height, bool capture) {
+    if (!display.valid() || display.width() != width || display.height() != height) {
+        gpu::ImageDesc desc;
+        desc.width = width;
+        desc.height = height;
+        desc.format = gpu::Format::rgba8_unorm;
+        desc.usage = gpu::ImageUsage::storage;
+        display = gpu::Image(*context, desc, "preview display");
+    }
+    if (capture && (!readback.valid() || readback.size() < uint64_t(width) * height * 4)) {
+        readback = gpu::Buffer(*context, uint64_t(width) * height * 4, gpu::BufferUsage::none,
+                               gpu::MemoryLocation::readback, "preview screenshot");
+    }
+}
+
+void PresentPass::Impl::bind(const gpu::Image& accumulation, const gpu::Image& emission) {
+    const std::array<const gpu::Image*, 5> images{&accumulation, &emission, &display, &hud, &cpu};
+    std::array<VkDescriptorImageInfo, 5> infos{};
+    std::array<VkWriteDescriptorSet, 5> writes{};
+    for (size_t i = 0; i < images.size(); ++i) {
+        infos[i].imageView = images[i]->view();
+        infos[i].imageLayout = VK_IMAGE_LAYOUT_GENERAL;
+        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+        writes[i].dstSet = set;
+        writes[i].dstBinding = uint32_t(i);
+        writes[i].descriptorCount = 1;
+        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
+        writes[i].pImageInfo = &infos[i];
+    }
+    vkUpdateDescriptorSets(context->device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+}
+
+void PresentPass::Impl::dispatch(VkCommandBuffer cmd, Push push, bool with_hud) const {
+    push.hud_width = with_hud ? hud_width : 0;
+    push.hud_height = with_hud ? hud_height : 0;
+    push.hud_x = hud_x;
+    push.hud_y = hud_y;
+    vkCmdPushConstants(cmd, pipeline.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0, sizeof push,
+                       &push);
+    vkCmdDispatch(cmd, (push.width + kGroup - 1) / kGroup, (push.height + kGroup - 1) / kGroup, 1);
+}
+
+void PresentPass::Impl::capture(VkCommandBuffer cmd, const Push& push, bool with_hud) {
+    dispatch(cmd, push, false);
+    to_transfer_source(cmd, display.handle());
+    VkBufferImageCopy region{};
+    region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.imageExtent = {push.width, push.height, 1};
+    vkCmdCopyImageToBuffer(cmd, display.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+                           readback.handle(), 1, &region);
+    memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                   VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
+    captured_width = push.width;
+    captured_height = push.height;
+    if (with_hud) {
+        // The copy read what the HUD pass overwrites.
+        to_general(cmd, display.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
+                   VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
+        dispatch(cmd, push, true);
+        to_transfer_source(cmd, display.handle());
+    }
+}
+
+void PresentPass::Impl::blit(VkCommandBuffer cmd, const gpu::SwapchainFrame& frame) const {
+    // The acquire semaphore is waited for at the transfer stage (Swapchain::end_frame).
+    image_barrier(cmd, frame.image, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE,
+                  VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
+                  VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
+    VkImageBlit region{};
+    region.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.srcOffsets[1] = {int32_t(display.width()), int32_t(display.height()), 1};
+    region.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
+    region.dstOffsets[1] = {int32_t(frame.width), int32_t(frame.height), 1};
+    vkCmdBlitImage(cmd, display.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, frame.image,
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &region, VK_FILTER_NEAREST);
+    image_barrier(cmd, frame.image, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
+                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
+                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
+    // Back to GENERAL, the layout gpu::Image keeps (the next frame's barrier orders the rest).
+    to_general(cmd, display.handle(), VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
+               VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+}
 
 PresentPass::PresentPass(gpu::Context& context, bool linear_target)
     : m_impl(std::make_unique<Impl>(context, linear_target)) {
@@ -194,37 +288,11 @@ void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& acc
     // The display image has the window's size; the accumulation may be smaller (camera moving).
     const uint32_t width = frame.width;
     const uint32_t height = frame.height;
-    if (!m.display.valid() || m.display.width() != width || m.display.height() != height) {
-        gpu::ImageDesc desc;
-        desc.width = width;
-        desc.height = height;
-        desc.format = gpu::Format::rgba8_unorm;
-        desc.usage = gpu::ImageUsage::storage;
-        m.display = gpu::Image(*m.context, desc, "preview display");
-    }
-    if (capture && (!m.readback.valid() || m.readback.size() < uint64_t(width) * height * 4)) {
-        m.readback = gpu::Buffer(*m.context, uint64_t(width) * height * 4, gpu::BufferUsage::none,
-                                 gpu::MemoryLocation::readback, "preview screenshot");
-    }
-
+    m.fit(width, height, capture);
     // The frame before has finished (Swapchain::end_frame waits), so the set is free to update.
     const bool cpu = m.cpu_active && m.cpu.width() == accumulation.width() &&
                      m.cpu.height() == accumulation.height();
-    const std::array<const gpu::Image*, 5> images{&accumulation, &emission, &m.display, &m.hud,
-                                                  &m.cpu};
-    std::array<VkDescriptorImageInfo, 5> infos{};
-    std::array<VkWriteDescriptorSet, 5> writes{};
-    for (size_t i = 0; i < images.size(); ++i) {
-        infos[i].imageView = images[i]->view();
-        infos[i].imageLayout = VK_IMAGE_LAYOUT_GENERAL;
-        writes[i].sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
-        writes[i].dstSet = m.set;
-        writes[i].dstBinding = uint32_t(i);
-        writes[i].descriptorCount = 1;
-        writes[i].descriptorType = VK_DESCRIPTOR_TYPE_STORAGE_IMAGE;
-        writes[i].pImageInfo = &infos[i];
-    }
-    vkUpdateDescriptorSets(m.context->device(), uint32_t(writes.size()), writes.data(), 0, nullptr);
+    m.bind(accumulation, emission);
 
     const VkCommandBuffer cmd = frame.cmd;
     // The renderer's submissions (and the last frame's blit, which read the display image)
@@ -244,57 +312,14 @@ void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& acc
     push.source_height = accumulation.height();
     push.linear_target = m.linear_target ? 1u : 0u;
     push.cpu_image = cpu ? 1u : 0u;
-    const auto dispatch = [&](bool hud) {
-        push.hud_width = hud ? m.hud_width : 0;
-        push.hud_height = hud ? m.hud_height : 0;
-        push.hud_x = m.hud_x;
-        push.hud_y = m.hud_y;
-        vkCmdPushConstants(cmd, m.pipeline.pipeline_layout(), VK_SHADER_STAGE_COMPUTE_BIT, 0,
-                           sizeof push, &push);
-        vkCmdDispatch(cmd, (width + kGroup - 1) / kGroup, (height + kGroup - 1) / kGroup, 1);
-    };
     const bool hud = params.hud && m.hud_width > 0;
     if (capture) {
-        dispatch(false);
-        to_transfer_source(cmd, m.display.handle());
-        VkBufferImageCopy region{};
-        region.imageSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-        region.imageExtent = {width, height, 1};
-        vkCmdCopyImageToBuffer(cmd, m.display.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
-                               m.readback.handle(), 1, &region);
-        memory_barrier(cmd, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                       VK_PIPELINE_STAGE_2_HOST_BIT, VK_ACCESS_2_HOST_READ_BIT);
-        m.captured_width = width;
-        m.captured_height = height;
-        if (hud) {
-            // The copy read what the HUD pass overwrites.
-            to_general(cmd, m.display.handle(), VK_PIPELINE_STAGE_2_COMPUTE_SHADER_BIT,
-                       VK_ACCESS_2_SHADER_STORAGE_WRITE_BIT);
-            dispatch(true);
-            to_transfer_source(cmd, m.display.handle());
-        }
+        m.capture(cmd, push, hud);
     } else {
-        dispatch(hud);
+        m.dispatch(cmd, push, hud);
         to_transfer_source(cmd, m.display.handle());
     }
-
-    // The acquire semaphore is waited for at the transfer stage (Swapchain::end_frame).
-    image_barrier(cmd, frame.image, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_NONE,
-                  VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT,
-                  VK_IMAGE_LAYOUT_UNDEFINED, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL);
-    VkImageBlit blit{};
-    blit.srcSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    blit.srcOffsets[1] = {int32_t(width), int32_t(height), 1};
-    blit.dstSubresource = {VK_IMAGE_ASPECT_COLOR_BIT, 0, 0, 1};
-    blit.dstOffsets[1] = {int32_t(frame.width), int32_t(frame.height), 1};
-    vkCmdBlitImage(cmd, m.display.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, frame.image,
-                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, 1, &blit, VK_FILTER_NEAREST);
-    image_barrier(cmd, frame.image, VK_PIPELINE_STAGE_2_ALL_TRANSFER_BIT,
-                  VK_ACCESS_2_TRANSFER_WRITE_BIT, VK_PIPELINE_STAGE_2_NONE, VK_ACCESS_2_NONE,
-                  VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_PRESENT_SRC_KHR);
-    // Back to GENERAL, the layout gpu::Image keeps (the next frame's barrier orders the rest).
-    to_general(cmd, m.display.handle(), VK_PIPELINE_STAGE_2_ALL_COMMANDS_BIT,
-               VK_ACCESS_2_MEMORY_READ_BIT | VK_ACCESS_2_MEMORY_WRITE_BIT);
+    m.blit(cmd, frame);
 }
 
 std::vector<uint8_t> PresentPass::captured(uint32_t& width, uint32_t& height) const {
