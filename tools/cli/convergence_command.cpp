@@ -171,6 +171,8 @@ int run_convergence(const Args& args) {
     add_renderer_options(parser, renderer_args);
     add_compensation_options(parser, compensation_args);
     add_caustics_option(parser, no_caustics);
+    ManyLightsArgs many_lights;
+    add_many_lights_options(parser, many_lights);
     add_max_depth_option(parser, settings.tracer.max_depth);
     add_seed_option(parser, settings.seed);
     CameraArgs camera;
@@ -245,6 +247,7 @@ int run_convergence(const Args& args) {
     run.compensate = compensation_args.enabled();
     run.compensation_passes = uint32_t(compensation_args.spp);
     run.caustics = !no_caustics;
+    run.many_lights = many_lights.options();
     run.cluster = &ranks;
 
     std::vector<ConvergencePoint> all;

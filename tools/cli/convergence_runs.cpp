@@ -133,6 +133,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     e.compensate = run.compensate;
     e.compensation_passes = run.compensation_passes;
     e.caustics = run.caustics;
+    e.many_lights = run.many_lights;
     integrator::VplIntegrator integrator({&s.scene(), &s.accel(), &s.lights(), &s.camera()}, e,
                                          &renderer, ranks.size() > 1 ? &ranks : nullptr,
                                          integrator::Pacing::OpenEnded);

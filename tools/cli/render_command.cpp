@@ -43,6 +43,7 @@ struct RenderArgs {
     bool qmc = false, random_paths = false, oracle = false, quiet = false;
     CompensationArgs compensation;
     bool no_caustics = false;
+    ManyLightsArgs many_lights;
     std::string dump_shaders;
     bool no_shader_cache = false;
     float time_budget = 0.0f;
@@ -80,6 +81,7 @@ void add_options(ArgParser& parser, RenderArgs& a) {
     add_renderer_options(parser, a.renderer);
     add_compensation_options(parser, a.compensation);
     add_caustics_option(parser, a.no_caustics);
+    add_many_lights_options(parser, a.many_lights);
     add_max_depth_option(parser, a.settings.tracer.max_depth);
     add_seed_option(parser, a.settings.seed);
     add_camera_options(parser, a.camera);
@@ -137,6 +139,7 @@ RenderJob make_job(RenderArgs& a, const session::SceneSession& session) {
     e.compensation_passes = uint32_t(a.compensation.spp);
     // Paired with the chains: what they continue leaves no VPL, the caustic tracer carries it.
     e.caustics = !a.no_caustics;
+    e.many_lights = a.many_lights.options();
     return job;
 }
 

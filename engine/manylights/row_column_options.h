@@ -1,0 +1,29 @@
+#pragma once
+// Matrix row-column sampling (Hašan, Pellacini, Bala 2007, "Matrix row-column sampling for the
+// many-light problem"): a pool of N VPLs shaded through C weighted cluster representatives chosen
+// from an R × N reduced matrix of their contributions to R camera-visible points
+// (row_column_sampler.h). The options and their defaults, written once here.
+#include <cstdint>
+
+namespace mvpl::manylights {
+
+struct RowColumnOptions {
+    // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default:
+    // docs/results.md, "Row-column sampling", found it slower than shading every VPL on
+    // lavapipe with the reduced matrix on the CPU.
+    uint32_t pool = 0;
+    // R: camera rays on a stratified grid over the image, one jittered ray a cell.
+    uint32_t rows = 256;
+    // C: clusters (and so representatives shaded) per full pool; a shorter pool gets its share.
+    uint32_t clusters = 512;
+    // The share of a representative's probability drawn in proportion to VPL power instead of
+    // the reduced column norm, so that a VPL that lights pixels no row sees keeps a probability
+    // that does not vanish with its norm on the rows.
+    float defensive_share = 0.1f;
+    // Dimensions of the sketch the clustering measures columns in (reduced_matrix.h).
+    uint32_t sketch_dims = 16;
+
+    bool enabled() const { return pool > 0; }
+};
+
+}  // namespace mvpl::manylights
