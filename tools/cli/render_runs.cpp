@@ -21,6 +21,10 @@ namespace {
 // that a Metropolis chain merges its repeats over several steps, short enough that the last
 // chunk overshoots the budget by little.
 constexpr double kChunkSeconds = 0.5;
+// The same with row-column sampling (--pool): a pool of 8192 VPLs is about 0.7 s of reduced matrix
+// on two cores at 256 rows (docs/results.md, "Row-column sampling"); the last chunk is cut to the
+// budget all the same.
+constexpr double kPoolChunkSeconds = 2.0;
 
 // Light paths or chain steps per chunk of a fixed-size render: whole blocks of the Monte Carlo
 // tracer's 256 paths (so that the VPLs are those of one call), two of them so that both cores
@@ -110,8 +114,10 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     cluster::Cluster& ranks = job.cluster ? *job.cluster : cluster::single_process();
     // A chunk's batches are shared out among the renderer's devices (render::split_into_runs),
     // each drawing the G-buffers of the positions its run touches: a chunk per device, rank 0's.
+    // With row-column sampling, chunks of kPoolChunkSeconds, so that they hold whole pools.
+    const double target = job.estimate.many_lights.enabled() ? kPoolChunkSeconds : kChunkSeconds;
     std::vector<double> chunk_seconds(
-        1, ranks.root() ? kChunkSeconds * (job.renderer ? job.renderer->devices() : 1) : 0.0);
+        1, ranks.root() ? target * (job.renderer ? job.renderer->devices() : 1) : 0.0);
     ranks.sum_all(chunk_seconds);
     auto elapsed = [&] {
         std::vector<double> t(1, ranks.root() ? budget.seconds() : 0.0);
