@@ -199,7 +199,7 @@ void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
     parser.add_int("--pool", &o.pool,
                    "matrix row-column sampling (Hašan et al. 2007): shade each pool of N VPLs "
                    "through --clusters weighted representatives chosen from their light on "
-                   "--rows camera-visible points; 0 (the default): every VPL shaded");
+                   "--rows camera-visible points; 0: every VPL shaded");
     parser.add_int("--rows", &o.rows, "camera-visible points of the reduced matrix");
     parser.add_int("--clusters", &o.clusters, "representatives shaded per pool");
     parser.add_check([&parser, &o] {
