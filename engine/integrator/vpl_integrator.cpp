@@ -28,6 +28,8 @@ VplIntegrator::VplIntegrator(const SceneView& view, const Estimate& estimate,
       m_pacing(pacing) {
     if (shared() && !renderer)
         throw UsageError("render: --oracle runs on one process, not under mpirun");
+    if (shared() && estimate.many_lights.enabled())
+        throw UsageError("render: --pool runs on one process, not under mpirun");
     cluster::together(m_ranks, [&] {
         if (m_renderer) m_renderer->begin(*view.camera, m_estimate.render);
         m_cpu = std::make_unique<CpuEstimators>(view, m_estimate, m_ranks.rank(), m_ranks.size());
@@ -48,7 +50,6 @@ VplIntegrator::VplIntegrator(const SceneView& view, const Estimate& estimate,
     m_gather.quiet = true;
     if (!m_renderer) m_sum = Image(m_gather.width, m_gather.height);
     if (m_estimate.many_lights.enabled()) {
-        if (shared()) throw UsageError("render: --pool runs on one process, not under mpirun");
         manylights::RowColumnContext c = row_column_context(m_estimate);
         c.scene = view.scene;
         c.accel = view.accel;
