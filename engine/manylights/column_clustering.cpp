@@ -188,6 +188,7 @@ double cluster_cost(const ColumnSketches& s, const std::vector<uint32_t>& column
 }
 
 std::vector<Cluster> cluster_columns(const ColumnSketches& s, uint32_t clusters, uint64_t seed) {
+    clusters = std::max(clusters, 1u);
     const size_t n = s.norms.size();
     std::vector<Cluster> out;
     if (clusters >= n) {
