@@ -52,4 +52,15 @@ reference::CausticOptions caustic_options(const Estimate& e) {
     return k;
 }
 
+manylights::RowColumnContext row_column_context(const Estimate& e) {
+    manylights::RowColumnContext c;
+    c.rows.width = int(e.render.width);
+    c.rows.height = int(e.render.height);
+    c.rows.chains = e.render.chains;
+    c.clamp = e.render.clamp;
+    c.vsl_radius = e.render.vsl_radius;
+    c.seed = e.sampling.seed;
+    return c;
+}
+
 }  // namespace mvpl::integrator

@@ -7,6 +7,7 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/manylights/row_column_sampler.h"
 #include "engine/reference/caustic_tracer.h"
 #include "engine/reference/clamp_compensation.h"
 #include "engine/reference/vpl_gather.h"
@@ -29,6 +30,9 @@ struct Estimate {
     // Caustics (reference/caustic_tracer.h), paced as the compensation, where the scene has
     // vertices that leave no VPL; the light tracer then leaves no VPL on the chains' class.
     bool caustics = true;
+    // Matrix row-column sampling (manylights/row_column_sampler.h): each pool of the stream's
+    // VPLs shaded through weighted cluster representatives; off unless many_lights.pool > 0.
+    manylights::RowColumnOptions many_lights;
 };
 
 // The sampler's settings with the image's size, clamp, virtual spheres and chains.
@@ -40,5 +44,8 @@ reference::CompensationOptions compensation_options(const Estimate& e);
 // The caustic tracer's: the chains' class, and the compensation's share of near vertices when
 // it runs beside.
 reference::CausticOptions caustic_options(const Estimate& e);
+// Row-column sampling's rows and matrix: the image, clamp, spheres, chains and seed (the scene,
+// BVH and camera are the caller's to set).
+manylights::RowColumnContext row_column_context(const Estimate& e);
 
 }  // namespace mvpl::integrator

@@ -33,6 +33,9 @@ VplIntegrator::VplIntegrator(const SceneView& view, gpu::Context* context, uint3
 
 void VplIntegrator::begin(const SceneView& view, const Estimate& estimate, Pacing pacing,
                           std::unique_ptr<sampler::VplStream> stream) {
+    // Every rank has the same estimate, so every rank refuses it alike.
+    if (shared() && estimate.many_lights.enabled())
+        throw UsageError("render: --pool runs on one process, not under mpirun");
     m_view = view;
     m_estimate = estimate;
     m_pacing = pacing;
@@ -62,6 +65,14 @@ void VplIntegrator::begin(const SceneView& view, const Estimate& estimate, Pacin
     m_gather.max_depth = 0;  // VPL light only: the emitted radiance is added at the end
     m_gather.quiet = true;
     m_sum = m_renderer ? Image() : Image(m_gather.width, m_gather.height);
+    m_many_lights.reset();
+    if (m_estimate.many_lights.enabled()) {
+        manylights::RowColumnContext c = row_column_context(m_estimate);
+        c.scene = view.scene;
+        c.accel = view.accel;
+        c.camera = view.camera;
+        m_many_lights = std::make_unique<manylights::RowColumnSampler>(c, m_estimate.many_lights);
+    }
 }
 
 VplIntegrator::~VplIntegrator() = default;
@@ -75,6 +86,10 @@ void VplIntegrator::advance(uint64_t work) {
     m_chunk.clear();
     Timer sampling;
     m_stream->next(work, m_chunk);  // over ranks: an agreement point inside
+    if (m_many_lights) {  // each pool's weighted cluster representatives instead of the pool
+        m_many_lights->reduce(m_chunk);
+        m_stats.many_lights = m_many_lights->stats();
+    }
     m_stats.sampling_seconds += sampling.seconds();
     Timer shading;
     cluster::together(m_ranks, [&] {
@@ -82,15 +97,16 @@ void VplIntegrator::advance(uint64_t work) {
             m_renderer->accumulate(m_chunk, m_stream->last_index());
         } else if (!m_chunk.empty()) {
             // Shaded at the sub-pixel positions the GPU gives them: their indices since the start.
-            m_gather.first_vpl = m_stats.vpls;
+            m_gather.first_vpl = m_stats.shaded;
             add_image(m_sum,
                       reference::gather_vpls(*m_view.scene, *m_view.accel, {m_chunk}, m_gather));
         }
     });
     m_stats.shading_seconds += shading.seconds();
     m_stats.vpls = m_stream->vpls_total();
+    m_stats.shaded += m_chunk.size();
     m_stats.units = m_stream->work_done();
-    m_cpu->pace(m_stats.vpls, m_pacing);
+    m_cpu->pace(m_many_lights ? m_stats.shaded : m_stats.vpls, m_pacing);
 }
 
 // One process, VPL light: scale · Σ contributions + emission (the GPU's resolve, or the oracle's
@@ -99,7 +115,7 @@ Image VplIntegrator::vpl_image() {
     if (m_renderer) return m_renderer->resolve(m_stream->scale());
     reference::GatherOptions emission = gather_options(m_estimate);
     emission.quiet = true;
-    emission.first_vpl = m_stats.vpls;
+    emission.first_vpl = m_stats.shaded;
     Image image = reference::gather_vpls(*m_view.scene, *m_view.accel, {}, emission);
     add_image(image, m_sum, float(m_stream->scale()));
     return image;

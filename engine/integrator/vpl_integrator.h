@@ -27,6 +27,9 @@ namespace mvpl::integrator {
 struct IntegratorStats {
     uint64_t units = 0;  // light paths (mc) or chain steps (metropolis)
     size_t vpls = 0;     // by every rank
+    // By this process: with row-column sampling the representatives, fewer than `vpls`.
+    size_t shaded = 0;
+    manylights::RowColumnStats many_lights;  // pools, rows and their seconds (in sampling)
     double sampling_seconds = 0.0;
     double shading_seconds = 0.0;
     uint32_t compensation_passes = 0;
@@ -94,6 +97,7 @@ private:
     Image m_sum;                        // the oracle's Σ contributions
     std::vector<light::Vpl> m_chunk;
     std::unique_ptr<CpuEstimators> m_cpu;
+    std::unique_ptr<manylights::RowColumnSampler> m_many_lights;  // null: every VPL shaded
 };
 
 }  // namespace mvpl::integrator

@@ -150,6 +150,7 @@ struct ConvergenceArgs {
     RendererArgs renderer;
     CompensationArgs compensation;
     bool no_caustics = false, quiet = false, no_plot = false;
+    ManyLightsArgs many_lights;
     CameraArgs camera;
     EnvironmentArgs environment;
     SceneFileArgs scene_file;
@@ -176,6 +177,7 @@ void add_options(ArgParser& parser, ConvergenceArgs& a) {
     add_renderer_options(parser, a.renderer);
     add_compensation_options(parser, a.compensation);
     add_caustics_option(parser, a.no_caustics);
+    add_many_lights_options(parser, a.many_lights);
     add_max_depth_option(parser, a.settings.tracer.max_depth);
     add_seed_option(parser, a.settings.seed);
     add_camera_options(parser, a.camera);
@@ -267,6 +269,7 @@ ConvergenceRun configure_run(ConvergenceArgs& a, const ConvergenceInputs& in,
     run.compensate = a.compensation.enabled();
     run.compensation_passes = uint32_t(a.compensation.spp);
     run.caustics = !a.no_caustics;
+    run.many_lights = a.many_lights.options();
     run.cluster = &ranks;
     return run;
 }

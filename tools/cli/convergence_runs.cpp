@@ -133,6 +133,7 @@ std::vector<ConvergencePoint> run_vpl_sampler(const ConvergenceRun& run, const s
     e.compensate = run.compensate;
     e.compensation_passes = run.compensation_passes;
     e.caustics = run.caustics;
+    e.many_lights = run.many_lights;
     integrator.begin(s.view(), e, integrator::Pacing::OpenEnded);
     const sampler::VplStream& stream = integrator.stream();
     std::vector<ConvergencePoint> points;

@@ -13,6 +13,7 @@
 #include "engine/core/image.h"
 #include "engine/integrator/vpl_integrator.h"
 #include "engine/light/path_depth.h"
+#include "engine/manylights/row_column_options.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/sampler_factory.h"
 #include "tools/cli/convergence_analysis.h"
@@ -34,6 +35,8 @@ struct ConvergenceRun {
     // And caustics (reference/caustic_tracer.h), paced as the compensation, with the chains' class
     // of the run's render options (the light tracer then leaves no VPL there).
     bool caustics = false;
+    // Matrix row-column sampling for the VPL methods (engine/manylights); off by default.
+    manylights::RowColumnOptions many_lights;
     // The ranks that share each chunk (every rank runs the same calls); null: this process alone.
     // The points' seconds are rank 0's wall time, and only rank 0 gets points (others: none).
     cluster::Cluster* cluster = nullptr;

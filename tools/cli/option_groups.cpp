@@ -187,6 +187,29 @@ void add_caustics_option(ArgParser& parser, bool& no_caustics) {
                     "and light through glass is lost");
 }
 
+manylights::RowColumnOptions ManyLightsArgs::options() const {
+    manylights::RowColumnOptions o;
+    o.pool = uint32_t(pool);
+    o.rows = uint32_t(rows);
+    o.clusters = uint32_t(clusters);
+    return o;
+}
+
+void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
+    parser.begin_group("Many lights");
+    parser.add_int("--pool", &o.pool,
+                   "matrix row-column sampling (Hašan et al. 2007): shade each pool of N VPLs "
+                   "through --clusters weighted representatives chosen from their light on "
+                   "--rows camera-visible points; 0: every VPL shaded");
+    parser.add_int("--rows", &o.rows, "camera-visible points of the reduced matrix");
+    parser.add_int("--clusters", &o.clusters, "representatives shaded per pool");
+    parser.add_check([&parser, &o] {
+        if (o.pool < 0 || o.pool > (1 << 20)) out_of_range(parser, "--pool", "0..2^20");
+        if (o.rows < 1 || o.rows > 65536) out_of_range(parser, "--rows", "1..65536");
+        if (o.clusters < 1 || o.clusters > (1 << 20)) out_of_range(parser, "--clusters", "1..2^20");
+    });
+}
+
 void add_sampler_option(ArgParser& parser, std::string& name) {
     parser.begin_group("Sampler");
     std::string choices;

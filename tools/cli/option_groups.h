@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/gpu/device_info.h"
+#include "engine/manylights/row_column_options.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/sampler_factory.h"
 #include "engine/scene/camera_choice.h"
@@ -86,6 +87,17 @@ void add_compensation_options(ArgParser& parser, CompensationArgs& args);
 // --no-caustics: no caustic tracer (engine/reference/caustic_tracer.h) beside the GPU; the light
 // tracer then leaves VPLs on near-specular surfaces again.
 void add_caustics_option(ArgParser& parser, bool& no_caustics);
+
+// --pool, --rows, --clusters: matrix row-column sampling (engine/manylights), off unless
+// --pool N is given; the defaults are RowColumnOptions'.
+struct ManyLightsArgs {
+    int pool = int(manylights::RowColumnOptions{}.pool);
+    int rows = int(manylights::RowColumnOptions{}.rows);
+    int clusters = int(manylights::RowColumnOptions{}.clusters);
+
+    manylights::RowColumnOptions options() const;
+};
+void add_many_lights_options(ArgParser& parser, ManyLightsArgs& args);
 
 // --sampler: a name of sampler::sampler_names().
 void add_sampler_option(ArgParser& parser, std::string& name);

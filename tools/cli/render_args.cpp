@@ -39,6 +39,7 @@ void add_render_options(ArgParser& parser, RenderArgs& a) {
     add_renderer_options(parser, a.renderer);
     add_compensation_options(parser, a.compensation);
     add_caustics_option(parser, a.no_caustics);
+    add_many_lights_options(parser, a.many_lights);
     add_max_depth_option(parser, a.settings.tracer.max_depth);
     add_seed_option(parser, a.settings.seed);
     add_camera_options(parser, a.camera);
@@ -98,6 +99,7 @@ integrator::Estimate render_estimate(const ArgParser& parser, RenderArgs& a,
     e.compensation_passes = uint32_t(a.compensation.spp);
     // Paired with the chains: what they continue leaves no VPL, the caustic tracer carries it.
     e.caustics = !a.no_caustics;
+    e.many_lights = a.many_lights.options();
     return e;
 }
 

@@ -31,6 +31,7 @@ struct RenderArgs {
     int device = -1;
     bool qmc = false, random_paths = false, oracle = false, quiet = false;
     CompensationArgs compensation;
+    ManyLightsArgs many_lights;
     bool no_caustics = false;
     std::string dump_shaders;
     bool no_shader_cache = false;

@@ -10,6 +10,10 @@ namespace mvpl::cli {
 // that a Metropolis chain merges its repeats over several steps, short enough that the last
 // chunk overshoots the budget by little.
 constexpr double kChunkSeconds = 0.5;
+// The same with row-column sampling (--pool): a pool of 8192 VPLs is about 0.35 s of reduced matrix
+// on two cores at 256 rows (docs/results.md, "Row-column sampling"); the last chunk is cut to the
+// budget all the same.
+constexpr double kPoolChunkSeconds = 2.0;
 
 // Light paths or chain steps per chunk of a fixed-size render: whole blocks of the Monte Carlo
 // tracer's 256 paths (so that the VPLs are those of one call), two of them so that both cores

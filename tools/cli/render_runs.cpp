@@ -60,7 +60,9 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
     // Monte Carlo stream's blocks are aligned to path indices, and a chunk is a whole number of
     // them), summed in another order.
     for (uint64_t done = 0; !run.unlit() && done < units && !any_rank_interrupted(job);) {
-        const uint64_t work = std::min(kStreamChunkUnits, units - done);
+        // With row-column sampling, a chunk of at least a pool's units, so that pools are full.
+        const uint64_t chunk = std::max<uint64_t>(kStreamChunkUnits, job.estimate.many_lights.pool);
+        const uint64_t work = std::min(chunk, units - done);
         run.advance(work);
         done += work;
         progress.set_status(run.stream().statistics());
@@ -84,10 +86,11 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     cluster::Cluster& ranks = job.cluster ? *job.cluster : cluster::single_process();
     // A chunk's batches are shared out among the renderer's devices (render::split_into_runs),
     // each drawing the G-buffers of the positions its run touches: a chunk per device, rank 0's.
+    // With row-column sampling, chunks of kPoolChunkSeconds, so that they hold whole pools.
+    const double target = job.estimate.many_lights.enabled() ? kPoolChunkSeconds : kChunkSeconds;
     std::vector<double> chunk_seconds(
         1, ranks.root()
-               ? kChunkSeconds *
-                     (job.integrator->renderer() ? job.integrator->renderer()->devices() : 1)
+               ? target * (job.integrator->renderer() ? job.integrator->renderer()->devices() : 1)
                : 0.0);
     ranks.sum_all(chunk_seconds);
     auto elapsed = [&] {
@@ -123,6 +126,17 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
         pass_times += "; compensation " + std::to_string(r.stats.compensation_passes) + " spp";
     if (r.stats.caustic_passes > 0)
         pass_times += "; caustics " + std::to_string(r.stats.caustic_passes) + " passes";
+    if (const manylights::RowColumnStats& m = r.stats.many_lights; m.pools > 0) {
+        char buf[200];
+        std::snprintf(buf, sizeof buf,
+                      "; row-column sampling: %llu pools, %llu VPLs → %llu shaded, %.0f rows a "
+                      "pool, matrix %.2f s, clustering %.2f s",
+                      static_cast<unsigned long long>(m.pools),
+                      static_cast<unsigned long long>(m.columns),
+                      static_cast<unsigned long long>(m.representatives),
+                      double(m.rows) / double(m.pools), m.matrix_seconds, m.cluster_seconds);
+        pass_times += buf;
+    }
     if (job.cluster) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "; %d ranks, images summed in %.1f ms (%.1f MB a rank)",

@@ -1,0 +1,38 @@
+#pragma once
+// Clustering the columns of the reduced matrix (Hašan et al. 2007): C clusters whose
+// representatives estimate the pool's sum with little error on the rows. A cluster K, shaded
+// through one column j drawn with probability n_j / Σ_K n (n = ‖ρ‖), estimates Σ_K ρ with the
+// error E‖X − Σ_K ρ‖² = (Σ_K n)² − ‖Σ_K ρ‖² = ½ Σ_{i,j ∈ K} n_i n_j ‖ρ̂_i − ρ̂_j‖² (ρ̂ = ρ/n): the
+// paper's cluster cost, which both stages reduce, measured on the columns' sketches
+// (reduced_matrix.h; directions ρ̂ from the sketch, norms exact).
+//
+// 1. Sampling clustering: C/2 centres drawn with replacement in proportion to
+//    α_j = Σ_i n_i n_j ‖ρ̂_i − ρ̂_j‖² = n_j (2 Σ n − 2 ρ̂_j · Σ n ρ̂), which favours columns far from
+//    the rest, and every column joined to the centre nearest in direction.
+// 2. Top-down splitting: the cluster of largest cost split along a random line at the
+//    point of least total cost, until C clusters (or every cost is 0).
+//
+// Columns with norm 0 (no row sees their light) get clusters of their own, in proportion to
+// their count, cut in pool order; their representatives are drawn by power
+// (representatives.h), so that a VPL that lights only pixels no row sees still contributes in
+// expectation. With C ≥ N every column is a cluster of its own.
+#include <cstdint>
+#include <vector>
+
+#include "engine/manylights/reduced_matrix.h"
+
+namespace mvpl::manylights {
+
+struct Cluster {
+    std::vector<uint32_t> columns;
+    bool seen = true;  // false: columns of norm 0, drawn by power
+};
+
+// Deterministic for the same sketches, count and seed.
+std::vector<Cluster> cluster_columns(const ColumnSketches& sketches, uint32_t clusters,
+                                     uint64_t seed);
+
+// The cost above, from the norms and directions of a cluster's columns (tests, reports).
+double cluster_cost(const ColumnSketches& sketches, const std::vector<uint32_t>& columns);
+
+}  // namespace mvpl::manylights

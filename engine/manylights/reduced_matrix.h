@@ -1,0 +1,40 @@
+#pragma once
+// The reduced matrix of a pool (Hašan et al. 2007): entry (r, j) is VPL j's contribution to
+// row r — light::vpl_contribution, the CPU oracle's own code (BSDFs, clamp, virtual spheres,
+// Embree visibility), times the row's chain throughput — RGB, so a column ρ_j has 3R entries.
+// Only what the clustering needs is kept of it: each column's norm ‖ρ_j‖ and a count sketch of
+// ρ_j in D dimensions (Charikar, Chen, Farach-Colton 2002: entry k added with a random sign into
+// bucket h(k)), whose inner products estimate the columns' without bias. R × N × 3 floats would be
+// 400 MB at R = 256, N = 131 072; the sketch is N × D.
+#include <cstdint>
+#include <span>
+#include <vector>
+
+#include "engine/light/vpl.h"
+#include "engine/manylights/row_set.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl::manylights {
+
+// What is fixed per pool for evaluating columns.
+struct MatrixContext {
+    const trace::Accel* accel = nullptr;
+    std::span<const Row> rows;
+    float d_min2 = 0.0f;  // (clamp · scene diagonal)²
+    float vsl_r2 = 0.0f;  // (virtual sphere radius)²
+};
+
+// Column j: the 3R entries (r, g, b of row 0, then row 1, …) of `vpl`'s contributions.
+void reduced_column(const MatrixContext& context, const light::Vpl& vpl, std::span<float> out);
+
+struct ColumnSketches {
+    uint32_t dims = 0;
+    std::vector<float> norms;   // per column, ‖ρ_j‖ over its 3R entries
+    std::vector<float> sketch;  // column j at [j · dims, (j + 1) · dims)
+};
+
+// Every column's norm and sketch, in parallel over columns; the same whatever the thread count.
+ColumnSketches sketch_columns(const MatrixContext& context, std::span<const light::Vpl> vpls,
+                              uint32_t dims, uint64_t seed);
+
+}  // namespace mvpl::manylights

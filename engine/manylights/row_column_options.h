@@ -1,0 +1,30 @@
+#pragma once
+// Matrix row-column sampling (Hašan, Pellacini, Bala 2007, "Matrix row-column sampling for the
+// many-light problem"): a pool of N VPLs shaded through C weighted cluster representatives chosen
+// from an R × N reduced matrix of their contributions to R camera-visible points
+// (row_column_sampler.h). The options and their defaults, written once here.
+#include <cstdint>
+
+namespace mvpl::manylights {
+
+struct RowColumnOptions {
+    // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: on the
+    // Cornell box at 256² N = 8192, R = 256, C = 512 cut relMSE 1.75× per pixel and 3.8× on 8×8
+    // block means at 5 s and 1.2–1.7× at 15 s, but on the two rooms it gained nothing and left
+    // a blotch in one run of five (docs/results.md, "Row-column sampling"); one process only.
+    uint32_t pool = 0;
+    // R: camera rays on a stratified grid over the image, one jittered ray a cell.
+    uint32_t rows = 256;
+    // C: clusters (and so representatives shaded) per full pool; a shorter pool gets its share.
+    uint32_t clusters = 512;
+    // The share of a representative's probability drawn in proportion to VPL power instead of
+    // the reduced column norm, so that a VPL that lights pixels no row sees keeps a probability
+    // that does not vanish with its norm on the rows.
+    float defensive_share = 0.1f;
+    // Dimensions of the sketch the clustering measures columns in (reduced_matrix.h).
+    uint32_t sketch_dims = 16;
+
+    bool enabled() const { return pool > 0; }
+};
+
+}  // namespace mvpl::manylights

@@ -1,0 +1,37 @@
+#pragma once
+// The rows of the reduced matrix (Hašan et al. 2007): R points the camera sees, one jittered
+// camera ray per cell of a grid over the image with the image's aspect, so that the rows spread
+// over the image as its pixels do. Where the renderer continues a glossy pixel through a specular
+// chain, the row is the chain's rough end, weighted by the chain's throughput and lit only by the
+// VPLs that max_depth lets light it, as the renderer shades it (light/specular_chain.h).
+#include <cstdint>
+#include <vector>
+
+#include "engine/core/color.h"
+#include "engine/light/chain_options.h"
+#include "engine/light/vpl_contribution.h"
+#include "engine/scene/scene.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl::manylights {
+
+struct Row {
+    light::Receiver receiver;
+    Rgb throughput{1.0f};  // the chain's (1 without a chain)
+    uint32_t max_vpl_length = UINT32_MAX;
+};
+
+struct RowSetOptions {
+    int width = 256;  // the image the rows spread over
+    int height = 256;
+    int rows = 256;  // cells of the grid; rays that find nothing to light leave no row
+    light::ChainOptions chains;
+};
+
+// The rows of one pool: the jitter inside the cells and the chains' samples are drawn from
+// `seed` and `pool` alone.
+std::vector<Row> make_rows(const scene::Scene& scene, const trace::Accel& accel,
+                           const scene::Camera& camera, const RowSetOptions& options, uint64_t seed,
+                           uint64_t pool);
+
+}  // namespace mvpl::manylights

@@ -1,0 +1,280 @@
+// Matrix row-column sampling (engine/manylights) against the CPU oracle: the representatives'
+// image is the pool's in expectation (per block, within a bound from the passes' own spread),
+// every VPL with power keeps a probability above 0, the same seed gives the same clusters, and
+// with a cluster per VPL the image is the pool's to the bit.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <vector>
+
+#include "engine/integrator/vpl_integrator.h"
+#include "engine/light/light_sampler.h"
+#include "engine/manylights/column_clustering.h"
+#include "engine/manylights/reduced_matrix.h"
+#include "engine/manylights/representatives.h"
+#include "engine/manylights/row_column_sampler.h"
+#include "engine/reference/vpl_gather.h"
+#include "engine/sampler/monte_carlo_stream.h"
+#include "engine/scene/scene_loader.h"
+#include "engine/trace/accel.h"
+
+namespace mvpl {
+namespace {
+
+constexpr int kRes = 16;
+constexpr int kBlock = 4;  // blocks of kBlock² pixels: (kRes / kBlock)² of them
+
+struct Cornell {
+    scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
+    trace::Accel accel{scene};
+    light::LightSampler lights{scene};
+};
+const Cornell& cornell() {
+    static const Cornell c;
+    return c;
+}
+
+// The first `n` VPLs of the Monte Carlo stream (all VPLs of each path).
+std::vector<light::Vpl> pool_of(size_t n, uint64_t seed) {
+    const Cornell& c = cornell();
+    sampler::MonteCarloOptions o;
+    o.seed = seed;
+    sampler::MonteCarloStream stream(c.scene, c.accel, c.lights, o);
+    std::vector<light::Vpl> v;
+    while (v.size() < n)
+        stream.next(64, v);
+    v.resize(n);
+    return v;
+}
+
+// reduce() cuts pools of `pool` VPLs.
+manylights::RowColumnSampler sampler_with(uint32_t rows, uint32_t clusters, uint64_t seed,
+                                          uint32_t pool = 4096) {
+    const Cornell& c = cornell();
+    manylights::RowColumnContext context;
+    context.scene = &c.scene;
+    context.accel = &c.accel;
+    context.camera = &c.scene.camera;
+    context.rows.width = context.rows.height = kRes;
+    context.clamp = light::kDefaultClamp;
+    context.vsl_radius = light::kDefaultVslRadius;
+    context.seed = seed;
+    manylights::RowColumnOptions o;
+    o.pool = pool;
+    o.rows = rows;
+    o.clusters = clusters;
+    return manylights::RowColumnSampler(context, o);
+}
+
+Image oracle(const std::vector<light::Vpl>& vpls) {
+    reference::GatherOptions g;
+    g.width = g.height = kRes;
+    g.max_depth = 0;            // VPL light only
+    g.subpixel.jitter = false;  // every VPL at the pixel centres
+    const Cornell& c = cornell();
+    return reference::gather_vpls(c.scene, c.accel, {vpls, 1.0}, g);
+}
+
+// Mean luminance of each kBlock² block, then of the whole image.
+std::vector<double> blocks(const Image& image) {
+    const int n = kRes / kBlock;
+    std::vector<double> b(size_t(n * n) + 1, 0.0);
+    for (int y = 0; y < kRes; ++y) {
+        for (int x = 0; x < kRes; ++x) {
+            const double l = luminance(image.at(x, y));
+            b[size_t((y / kBlock) * n + x / kBlock)] += l / double(kBlock * kBlock);
+            b.back() += l / double(kRes * kRes);
+        }
+    }
+    return b;
+}
+
+// Over `passes` draws (seeds 1 …), each block's mean of the representatives' image equals the
+// pool's within 5 standard errors of that mean (P(|t| > 5) ≈ 10⁻⁶ a block at 100+ degrees of
+// freedom), and the bound is not so loose that it would pass anything: the mean is the pool's
+// within 10 % on the whole image.
+void expect_unbiased(uint32_t rows, uint32_t clusters, int passes) {
+    const std::vector<light::Vpl> pool = pool_of(256, 7);
+    const std::vector<double> full = blocks(oracle(pool));
+    std::vector<std::vector<double>> draws;
+    for (int p = 0; p < passes; ++p) {
+        manylights::RowColumnSampler s = sampler_with(rows, clusters, 1 + uint64_t(p));
+        const std::vector<light::Vpl> reps = s.representatives(pool, 0, clusters);
+        ASSERT_LE(reps.size(), size_t(clusters) + 1);
+        draws.push_back(blocks(oracle(reps)));
+    }
+    for (size_t k = 0; k < full.size(); ++k) {
+        double mean = 0.0, var = 0.0;
+        for (const auto& d : draws)
+            mean += d[k] / passes;
+        for (const auto& d : draws)
+            var += (d[k] - mean) * (d[k] - mean) / (passes - 1);
+        const double se = std::sqrt(var / passes);
+        EXPECT_NEAR(mean, full[k], 5.0 * se + 1e-6 * full[k]) << "block " << k;
+        if (k + 1 == full.size()) {
+            std::printf("R %u, C %u: whole image %.5f ± %.5f, pool %.5f\n", rows, clusters, mean,
+                        se, full[k]);
+            EXPECT_LT(se, 0.1 * full[k]);
+        }
+    }
+}
+
+TEST(RowColumn, UnbiasedOverDraws) {
+    expect_unbiased(32, 32, 160);
+}
+
+// Two rows see few VPLs: most columns have norm 0 and are drawn by power alone; the pixels no
+// row sees keep their expectation.
+TEST(RowColumn, UnbiasedWithRowsThatMissMostLight) {
+    expect_unbiased(2, 16, 160);
+}
+
+TEST(RowColumn, EveryVplWithPowerCanBeDrawn) {
+    const Cornell& c = cornell();
+    const std::vector<light::Vpl> pool = pool_of(256, 3);
+    for (uint32_t rows : {1u, 2u, 32u}) {
+        const std::vector<manylights::Row> r = manylights::make_rows(
+            c.scene, c.accel, c.scene.camera, {kRes, kRes, int(rows), {}}, 5, 0);
+        const float d_min = light::kDefaultClamp * c.scene.bounds().diagonal();
+        const manylights::MatrixContext mc{&c.accel, r, d_min * d_min, 0.0f};
+        const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 9);
+        const auto clusters = manylights::cluster_columns(s, 16, 9);
+        size_t columns = 0, unseen = 0;
+        for (const manylights::Cluster& k : clusters) {
+            double sum = 0.0;
+            for (size_t i = 0; i < k.columns.size(); ++i) {
+                const double p = manylights::selection_probability(k, i, s.norms, pool, 0.1f);
+                EXPECT_GT(p, 0.0) << "column " << k.columns[i];
+                sum += p;
+                unseen += s.norms[k.columns[i]] > 0.0f ? 0 : 1;
+            }
+            EXPECT_NEAR(sum, 1.0, 1e-9);
+            columns += k.columns.size();
+        }
+        EXPECT_EQ(columns, pool.size());  // a partition
+        EXPECT_LE(clusters.size(), 17u);
+        if (rows <= 2) {
+            EXPECT_GT(unseen, 0u) << "the case of columns no row sees";
+        }
+    }
+}
+
+bool same_vpls(const std::vector<light::Vpl>& a, const std::vector<light::Vpl>& b) {
+    if (a.size() != b.size()) return false;
+    for (size_t i = 0; i < a.size(); ++i) {
+        if (a[i].position != b[i].position || a[i].power != b[i].power) return false;
+    }
+    return true;
+}
+
+TEST(RowColumn, SameSeedSameClustersAndRepresentatives) {
+    const std::vector<light::Vpl> pool = pool_of(512, 11);
+    auto draw = [&](uint64_t seed) {
+        manylights::RowColumnSampler s = sampler_with(32, 40, seed);
+        std::vector<light::Vpl> v = pool;
+        s.reduce(v);  // a pool of the default size: all 512 at once
+        return v;
+    };
+    const std::vector<light::Vpl> a = draw(4), b = draw(4), c = draw(5);
+    EXPECT_TRUE(same_vpls(a, b));
+    EXPECT_FALSE(same_vpls(a, c));
+    // The clusters themselves, from the same sketches.
+    const Cornell& k = cornell();
+    const std::vector<manylights::Row> r =
+        manylights::make_rows(k.scene, k.accel, k.scene.camera, {kRes, kRes, 32, {}}, 4, 0);
+    const manylights::MatrixContext mc{&k.accel, r, 0.01f, 0.0f};
+    const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 4);
+    const auto x = manylights::cluster_columns(s, 40, 4), y = manylights::cluster_columns(s, 40, 4);
+    ASSERT_EQ(x.size(), y.size());
+    for (size_t i = 0; i < x.size(); ++i)
+        EXPECT_EQ(x[i].columns, y[i].columns);
+}
+
+// With at least as many clusters as columns every VPL is its own representative, unscaled: the
+// pool's image to the bit, through the clustering and through the sampler.
+TEST(RowColumn, AClusterPerVplIsThePool) {
+    const Cornell& c = cornell();
+    const std::vector<light::Vpl> pool = pool_of(96, 13);
+    const std::vector<manylights::Row> r =
+        manylights::make_rows(c.scene, c.accel, c.scene.camera, {kRes, kRes, 16, {}}, 2, 0);
+    const manylights::MatrixContext mc{&c.accel, r, 0.01f, 0.0f};
+    const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 2);
+    Rng rng(1, 0);
+    std::vector<light::Vpl> reps;
+    manylights::append_representatives(manylights::cluster_columns(s, 96, 2), s.norms, pool, 0.1f,
+                                       rng, reps);
+    ASSERT_TRUE(same_vpls(reps, pool));
+    manylights::RowColumnSampler rc = sampler_with(16, 96, 3, 96);
+    std::vector<light::Vpl> v = pool;
+    rc.reduce(v);
+    ASSERT_TRUE(same_vpls(v, pool));
+    const Image a = oracle(pool), b = oracle(reps);
+    for (size_t i = 0; i < a.pixels().size(); ++i)
+        ASSERT_EQ(a.pixels()[i], b.pixels()[i]) << i;
+}
+
+// The two stages lower the cluster cost (column_clustering.h) the representatives' error on the
+// rows is: more clusters, less cost, and far below one cluster or clusters cut in pool order.
+TEST(RowColumn, ClusteringLowersTheCost) {
+    const Cornell& c = cornell();
+    const std::vector<light::Vpl> pool = pool_of(1024, 17);
+    const std::vector<manylights::Row> r =
+        manylights::make_rows(c.scene, c.accel, c.scene.camera, {kRes, kRes, 64, {}}, 6, 0);
+    const manylights::MatrixContext mc{&c.accel, r, 0.01f, 0.0f};
+    const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 6);
+    auto total = [&](const std::vector<manylights::Cluster>& clusters) {
+        double t = 0.0;
+        for (const auto& k : clusters)
+            t += k.seen ? manylights::cluster_cost(s, k.columns) : 0.0;
+        return t;
+    };
+    std::vector<manylights::Cluster> in_order(64);
+    for (uint32_t j = 0; j < pool.size(); ++j)
+        in_order[j * 64 / pool.size()].columns.push_back(j);
+    const double one = total({manylights::Cluster{in_order[0].columns, true}});
+    const double c16 = total(manylights::cluster_columns(s, 16, 1));
+    const double c64 = total(manylights::cluster_columns(s, 64, 1));
+    std::printf("cost: pool-order 64 %.4g, clustered 16 %.4g, 64 %.4g\n", total(in_order), c16,
+                c64);
+    EXPECT_LT(c64, c16);
+    EXPECT_LT(c64, 0.5 * total(in_order));
+    EXPECT_GT(one, 0.0);
+}
+
+// The integrator's hook: with a cluster per VPL the oracle image is the one without row-column
+// sampling; with fewer it shades fewer VPLs than the stream gave.
+TEST(RowColumn, IntegratorHook) {
+    const Cornell& c = cornell();
+    integrator::Estimate e;
+    e.render.width = e.render.height = kRes;
+    e.compensate = false;
+    e.caustics = false;
+    e.sampling.seed = 3;
+    auto run = [&](uint32_t pool, uint32_t clusters, integrator::IntegratorStats* stats) {
+        integrator::Estimate x = e;
+        x.many_lights.pool = pool;
+        x.many_lights.rows = 16;
+        x.many_lights.clusters = clusters;
+        const integrator::SceneView view{&c.scene, &c.accel, &c.lights, &c.scene.camera};
+        integrator::VplIntegrator it(view, nullptr, 1, nullptr);
+        it.begin(view, x, integrator::Pacing::Fixed);
+        it.advance(64);
+        it.advance(64);
+        Image image = it.finish();
+        if (stats) *stats = it.stats();
+        return image;
+    };
+    integrator::IntegratorStats stats;
+    const Image plain = run(0, 1, nullptr), same = run(64, 64, nullptr);
+    for (size_t i = 0; i < plain.pixels().size(); ++i)
+        ASSERT_EQ(plain.pixels()[i], same.pixels()[i]) << i;
+    run(128, 16, &stats);
+    EXPECT_GT(stats.vpls, 128u);
+    EXPECT_LE(stats.shaded, 4 * 17u);  // two chunks of ≥ 128 VPLs, ≤ 2 pools each
+    EXPECT_LT(stats.shaded, stats.vpls);
+}
+
+}  // namespace
+}  // namespace mvpl
