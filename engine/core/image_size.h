@@ -8,5 +8,8 @@ namespace mvpl {
 
 inline constexpr uint32_t kDefaultImageWidth = 256;
 inline constexpr uint32_t kDefaultImageHeight = 256;
+// The side of the image throughput is measured and previewed at when none is given (`mvpl bench
+// --res`, the preview's first window): 512², the size docs/results.md quotes VPL/s at.
+inline constexpr int kThroughputImageSide = 512;
 
 }  // namespace mvpl

@@ -7,6 +7,9 @@
 
 namespace mvpl::manylights {
 
+// R's default: see RowColumnOptions::rows.
+inline constexpr uint32_t kDefaultRows = 256;
+
 struct RowColumnOptions {
     // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: on the
     // Cornell box at 256² N = 8192, R = 256, C = 512 cut relMSE 1.75× per pixel and 3.8× on 8×8
@@ -14,7 +17,7 @@ struct RowColumnOptions {
     // a blotch in one run of five (docs/results.md, "Row-column sampling"); one process only.
     uint32_t pool = 0;
     // R: camera rays on a stratified grid over the image, one jittered ray a cell.
-    uint32_t rows = 256;
+    uint32_t rows = kDefaultRows;
     // C: clusters (and so representatives shaded) per full pool; a shorter pool gets its share.
     uint32_t clusters = 512;
     // The share of a representative's probability drawn in proportion to VPL power instead of

@@ -8,8 +8,10 @@
 #include <vector>
 
 #include "engine/core/color.h"
+#include "engine/core/image_size.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/vpl_contribution.h"
+#include "engine/manylights/row_column_options.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
@@ -22,9 +24,10 @@ struct Row {
 };
 
 struct RowSetOptions {
-    int width = 256;  // the image the rows spread over
-    int height = 256;
-    int rows = 256;  // cells of the grid; rays that find nothing to light leave no row
+    int width = int(kDefaultImageWidth);  // the image the rows spread over
+    int height = int(kDefaultImageHeight);
+    int rows =
+        int(kDefaultRows);  // cells of the grid; rays that find nothing to light leave no row
     light::ChainOptions chains;
 };
 

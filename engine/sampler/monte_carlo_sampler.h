@@ -25,8 +25,11 @@ namespace mvpl::sampler {
 
 enum class VplsPerPath { All, One };
 
+// Light paths a render traces when asked for no number (`mvpl render --vpls`).
+inline constexpr uint64_t kDefaultPaths = 1024;
+
 struct MonteCarloOptions {
-    uint64_t paths = 1024;  // N
+    uint64_t paths = kDefaultPaths;  // N
     uint64_t seed = 0;
     bool qmc = false;
     int qmc_dimensions = kEmissionDimensions + 2 * kBounceDimensions;

@@ -5,14 +5,16 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/image_size.h"
+
 namespace mvpl::cli {
 
 // One render configuration of the benchmark.
 struct BenchConfig {
-    int width = 512;
-    int height = 512;
-    int shadow_resolution = 256;
-    int batch = 32;
+    int width = kThroughputImageSide;
+    int height = kThroughputImageSide;
+    int shadow_resolution = 0;  // the renderer's --shadow-res and --batch (bench's configure())
+    int batch = 0;
     bool shadow_culling = true;    // render::RenderOptions::shadow_culling
     bool shadow_proxy = true;      // render::RenderOptions::shadow_proxy
     bool shadow_lod = true;        // render::RenderOptions::shadow_lod

@@ -8,6 +8,7 @@
 
 #include "engine/core/image_size.h"
 #include "engine/integrator/estimate.h"
+#include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/scene/scene.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/option_groups.h"
@@ -22,7 +23,7 @@ struct RenderArgs {
     SceneFileArgs scene_file;
     std::string sampler_name = "mc";
     std::string per_path;  // empty: each sampler's default
-    uint64_t paths = 1024;
+    uint64_t paths = sampler::kDefaultPaths;
     int width = int(kDefaultImageWidth), height = int(kDefaultImageHeight);
     RendererArgs renderer;
     std::vector<std::string> outputs;

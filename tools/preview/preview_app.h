@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/core/image_size.h"
 #include "engine/light/path_depth.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/camera_choice.h"
@@ -22,8 +23,8 @@ struct PreviewOptions {
     scene::LoadOptions load;               // -D, -a
     scene::EnvironmentChoice environment;  // --env-color, --env-scale, --no-default-light
     std::string sampler = "mc";
-    int width = 512;  // initial window size
-    int height = 512;
+    int width = kThroughputImageSide;  // initial window size
+    int height = kThroughputImageSide;
     double budget_ms = 50.0;       // rendering time per frame (when paths_per_frame is 0)
     uint64_t paths_per_frame = 0;  // fixed sampler work per frame instead of a time budget
     uint64_t max_paths = 0;        // stop sampling after this many units (0: never)
