@@ -19,6 +19,13 @@ py::array_t<float> to_array(const Image& image) {
     return array;
 }
 
+py::array_t<float> to_array(const ChannelImage& layer) {
+    py::array_t<float> array(
+        {py::ssize_t(layer.height), py::ssize_t(layer.width), py::ssize_t(layer.channels.size())});
+    std::memcpy(array.mutable_data(), layer.values.data(), layer.values.size() * sizeof(float));
+    return array;
+}
+
 Image to_image(const py::object& source, const char* what) {
     if (py::isinstance<py::str>(source)) return read_finite_exr(source.cast<std::string>());
     const auto array =

@@ -44,23 +44,28 @@ std::vector<std::string> load_tokens(const py::object& assets, const py::kwargs&
     return tokens;
 }
 
-py::array_t<float> render(const SceneHandle& scene, const py::object& progress,
-                          const py::object& aovs, const py::kwargs& options) {
+// aovs: names ("albedo", …) or one comma-separated string, as `--aov`.
+py::object render(const SceneHandle& scene, const py::object& progress, const py::object& aovs,
+                  const py::kwargs& options) {
     std::vector<std::string> tokens = keyword_tokens(options);
-    // The AOV layers (issue 34, part 2) go to the render as `--aov NAMES`; the image and a dict
-    // of their arrays come back once the render takes that option (until then it refuses it).
     if (!aovs.is_none()) {
-        py::kwargs aov_option;
-        aov_option["aov"] = aovs;
-        const std::vector<std::string> aov_tokens = keyword_tokens(aov_option);
-        tokens.insert(tokens.end(), aov_tokens.begin(), aov_tokens.end());
+        std::string list = py::isinstance<py::str>(aovs) ? aovs.cast<std::string>() : "";
+        if (!py::isinstance<py::str>(aovs)) {
+            for (const py::handle name : aovs)
+                list += (list.empty() ? "" : ",") + py::str(name).cast<std::string>();
+        }
+        tokens.insert(tokens.end(), {"--aov", list});
     }
-    const mvpl::Image image = render_vpls(scene, tokens, [&progress](double done) {
+    const RenderResult result = render_vpls(scene, tokens, [&progress](double done) {
         // Ctrl-C (Python's SIGINT handler only sets a flag) ends the render between chunks.
         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         if (!progress.is_none()) progress(done);
     });
-    return to_array(image);
+    if (aovs.is_none()) return to_array(result.image);
+    py::dict layers;
+    for (const mvpl::ChannelImage& layer : result.aovs)
+        layers[py::str(layer.name)] = to_array(layer);
+    return py::make_tuple(to_array(result.image), layers);
 }
 
 py::dict compare(const py::object& image, const py::object& reference) {
@@ -93,7 +98,9 @@ PYBIND11_MODULE(mvpl, m) {
     m.def("render", &render, py::arg("scene"), py::kw_only(), py::arg("progress") = py::none(),
           py::arg("aovs") = py::none(),
           "Renders with virtual point lights on the GPU: a float32 array height x width x 3, "
-          "the image `mvpl render` writes for the same options. Keywords are its options, e.g. "
+          "the image `mvpl render` writes for the same options; with aovs=('albedo', 'normal', "
+          "'depth', 'position') (any of them), the image and a dict of height x width x C "
+          "arrays. Keywords are its options, e.g. "
           "vpls=4096, time_budget=10, sampler='metropolis', res=(640, 480), seed=1, "
           "no_caustics=True. progress: called between chunks with the share done (0..1). "
           "Ctrl-C interrupts between chunks.");

@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <memory>
 
+#include "engine/aov/aov_images.h"
+#include "engine/aov/aov_kind.h"
 #include "engine/core/error.h"
 #include "engine/core/timer.h"
 #include "engine/gpu/context.h"
@@ -56,8 +58,8 @@ void run_chunks(integrator::VplIntegrator& run, const cli::RenderArgs& a, uint32
 
 }  // namespace
 
-Image render_vpls(const SceneHandle& scene, const std::vector<std::string>& tokens,
-                  const ChunkHook& between_chunks) {
+RenderResult render_vpls(const SceneHandle& scene, const std::vector<std::string>& tokens,
+                         const ChunkHook& between_chunks) {
     cli::RenderArgs a;
     cli::ArgParser parser("render", "");
     cli::add_render_options(parser, a);
@@ -86,9 +88,14 @@ Image render_vpls(const SceneHandle& scene, const std::vector<std::string>& toke
         const py::gil_scoped_acquire locked;
         run_chunks(run, a, devices, clock, between_chunks);
     }
-    Image image = run.finish();
-    s.warn_if_black(image);
-    return image;
+    RenderResult result{run.finish(), {}};
+    s.warn_if_black(result.image);
+    // As `mvpl render` writes them (no EXR to name: --aov alone asks for them here).
+    if (parser.given("--aov")) {
+        result.aovs = aov::render_aovs(s.view(), estimate, run.stats().vpls,
+                                       aov::parse_aov_list(a.aovs, "render: --aov"));
+    }
+    return result;
 }
 
 }  // namespace mvpl::python

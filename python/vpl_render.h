@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/exr_file.h"
 #include "engine/core/image.h"
 #include "python/scene_handle.h"
 
@@ -16,9 +17,15 @@ namespace mvpl::python {
 // already set in Python: KeyboardInterrupt, or the callback's own) to end the render.
 using ChunkHook = std::function<void(double done)>;
 
-// The image `mvpl render SCENE TOKENS…` would write. Throws UsageError or InputError with the
-// command line's message for bad options.
-Image render_vpls(const SceneHandle& scene, const std::vector<std::string>& tokens,
-                  const ChunkHook& between_chunks);
+// What a render gives: the image, and the AOVs `--aov` asked for (engine/aov), in its order.
+struct RenderResult {
+    Image image;
+    std::vector<ChannelImage> aovs;
+};
+
+// The image `mvpl render SCENE TOKENS…` would write, and the AOVs its EXR would hold. Throws
+// UsageError or InputError with the command line's message for bad options.
+RenderResult render_vpls(const SceneHandle& scene, const std::vector<std::string>& tokens,
+                         const ChunkHook& between_chunks);
 
 }  // namespace mvpl::python

@@ -64,6 +64,29 @@ class ModuleTest(unittest.TestCase):
         other = mvpl.render(self.scene, **dict(KEYWORDS, seed=8))
         self.assertGreater(mvpl.compare(other, self.cli_exr)["RMSE"], 0.0)
 
+    def test_aovs_come_as_a_dict_beside_the_same_image(self):
+        image, layers = mvpl.render(self.scene, aovs=("albedo", "normal", "depth", "position"),
+                                    **KEYWORDS)
+        self.assertEqual(mvpl.compare(image, self.cli_exr)["RMSE"], 0.0)
+        self.assertEqual(set(layers), {"albedo", "normal", "depth", "position"})
+        for name, channels in (("albedo", 3), ("normal", 3), ("depth", 1), ("position", 3)):
+            self.assertEqual(layers[name].shape, (32, 32, channels), name)
+            self.assertEqual(layers[name].dtype, np.float32, name)
+        # The centre sees the box's back wall; a pixel that sees nothing reports 0 in every AOV
+        # (misses count 0 in the average); albedos lie in [0, 1] and normals, averages of unit
+        # ones, are no longer than 1.
+        self.assertGreater(float(layers["depth"][16, 16, 0]), 0.0)
+        missed = layers["depth"][:, :, 0] == 0.0
+        self.assertTrue(np.all(layers["albedo"][missed] == 0.0))
+        self.assertTrue(np.all(layers["depth"] >= 0.0))
+        self.assertTrue(np.all((layers["albedo"] >= 0.0) & (layers["albedo"] <= 1.0)))
+        self.assertTrue(np.all(np.linalg.norm(layers["normal"], axis=2) <= 1.0 + 1e-5))
+        # One comma-separated string is the same request; a bad name is the CLI's error.
+        _, again = mvpl.render(self.scene, aovs="depth", **KEYWORDS)
+        np.testing.assert_array_equal(again["depth"], layers["depth"])
+        with self.assertRaises(ValueError):
+            mvpl.render(self.scene, aovs=("albedo", "shine"), **KEYWORDS)
+
     def test_compare_is_compare_json(self):
         other = os.path.join(self.folder.name, "other.exr")
         self.assertEqual(run_mvpl("render", SCENE, *RENDER[:-1], "8", "--quiet", "-o",
