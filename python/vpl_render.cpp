@@ -67,6 +67,10 @@ RenderResult render_vpls(const SceneHandle& scene, const std::vector<std::string
     line.insert(line.end(), tokens.begin(), tokens.end());
     if (!parser.parse(line)) throw UsageError("render: the options are `mvpl render --help`'s");
     if (!a.oracle) cli::check_device("render", a.device);
+    if (parser.given("--write-every") || parser.given("-o"))
+        throw UsageError(
+            "render: mvpl.render returns arrays and writes no file (no -o, no "
+            "--write-every)");
     const py::gil_scoped_release unlocked;
     const std::shared_ptr<const session::SceneSession> session =
         scene.session_for(parser, a.camera.choice, a.environment.choice);

@@ -1,7 +1,8 @@
 // Runs that survive Ctrl-C (engine/core/interrupt.h): SIGINT or SIGTERM during `mvpl render` or
 // `mvpl convergence` finishes the chunk in flight, writes what has converged and exits 130 (143);
-// a second signal exits at once and leaves no partial file. And progress as plain lines when
-// stderr is not a terminal (engine/core/progress.h).
+// a second signal exits at once and leaves no partial file. Outputs rewritten as a long render
+// goes (--write-every). And progress as plain lines when stderr is not a terminal
+// (engine/core/progress.h).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -159,6 +160,36 @@ TEST_F(Interrupt, ReferenceStopsAtOnce) {
     kill(m_pid, SIGINT);
     EXPECT_EQ(wait_exit(5.0), 130) << err();
     EXPECT_FALSE(fs::exists(m_dir / "r.exr"));
+}
+
+// --write-every: the outputs rewritten between chunks (here after every chunk but the last of
+// three: 1 536 paths in chunks of 512), and the final image the one without it, to the bit (the
+// checkpoints read the estimate and change nothing).
+TEST(WriteEvery, RewritesTheOutputsBetweenChunksAndLeavesTheImageAsItWas) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("mvpl_write_every_" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    const std::string common = "render " + shell_quote(kScene) + " --res 16x16 --vpls 1536 -o ";
+    const auto plain = mvpl::test::run_mvpl_gpu(common + shell_quote((dir / "a.exr").string()));
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    const auto every = mvpl::test::run_mvpl_gpu(common + shell_quote((dir / "b.exr").string()) +
+                                                " --write-every 1e-6");
+    ASSERT_EQ(every.exit_code, 0) << every.err;
+    size_t count = 0;
+    for (size_t at = every.out.find("so far"); at != std::string::npos;
+         at = every.out.find("so far", at + 1))
+        ++count;
+    EXPECT_EQ(count, 2u) << every.out;
+    EXPECT_EQ(plain.out.find("so far"), std::string::npos) << plain.out;
+    const mvpl::Image a = mvpl::read_exr((dir / "a.exr").string());
+    const mvpl::Image b = mvpl::read_exr((dir / "b.exr").string());
+    ASSERT_EQ(a.pixels().size(), b.pixels().size());
+    for (size_t i = 0; i < a.pixels().size(); ++i)
+        ASSERT_EQ(a.pixels()[i], b.pixels()[i]) << i;
+    mvpl::test::expect_one_line_error(
+        mvpl::test::run_mvpl(common + shell_quote((dir / "c.exr").string()) + " --write-every -1"),
+        "--write-every");
+    fs::remove_all(dir);
 }
 
 // Not a terminal: a plain line about every MVPL_PROGRESS_SECONDS; none with --quiet.

@@ -37,6 +37,7 @@ struct RenderArgs {
     std::string dump_shaders;
     bool no_shader_cache = false;
     float time_budget = 0.0f;
+    float write_every = 0.0f;  // --write-every SEC (0: only at the end)
     sampler::SamplerSettings settings;
 };
 

@@ -109,6 +109,15 @@ int run_render(const Args& args) {
     RenderJob job = make_job(parser, a, *session);
     job.integrator = integrator.get();
     if (ranks.size() > 1) job.cluster = &ranks;
+    job.write_every = double(a.write_every);
+    job.checkpoint = [&](const Image& image, uint64_t vpls) {
+        if (!ranks.root()) return;
+        write_images(image, a.outputs, a.exposure);
+        if (!a.quiet)
+            std::printf("render: wrote the image of %llu VPLs so far\n",
+                        static_cast<unsigned long long>(vpls));
+        std::fflush(stdout);
+    };
 
     const RenderOutcome result =
         a.time_budget > 0.0f ? render_for(job, double(a.time_budget)) : render_once(job, a.paths);

@@ -41,6 +41,32 @@ bool any_rank_interrupted(const RenderJob& job) {
     return flag[0] > 0.0;
 }
 
+// Rank 0's answer for every rank (image() is collective: all must agree to call it).
+bool root_decides(const RenderJob& job, bool answer) {
+    if (!job.cluster) return answer;
+    std::vector<double> v(1, job.cluster->root() && answer ? 1.0 : 0.0);
+    job.cluster->sum_all(v);
+    return v[0] > 0.0;
+}
+
+// --write-every: the estimate so far handed to the job's checkpoint between chunks, once its
+// seconds have passed since the last one.
+class Checkpoints {
+public:
+    explicit Checkpoints(const RenderJob& job) : m_job(job) {}
+    void after_chunk(integrator::VplIntegrator& run, bool last) {
+        if (m_job.write_every <= 0.0 || last) return;  // the last one is the final write
+        if (!root_decides(m_job, m_since.seconds() >= m_job.write_every)) return;
+        const Image image = run.image();
+        if (m_job.checkpoint && !image.pixels().empty()) m_job.checkpoint(image, run.stats().vpls);
+        m_since.reset();
+    }
+
+private:
+    const RenderJob& m_job;
+    Timer m_since;
+};
+
 RenderOutcome outcome_of(integrator::VplIntegrator& run) {
     RenderOutcome result;
     result.image = run.finish();
@@ -56,6 +82,7 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
     integrator::VplIntegrator& run = begin(job, integrator::Pacing::Fixed);
     warn_if_unlit(job, run);
     Progress progress("render", int64_t(std::min<uint64_t>(units, INT64_MAX)), job.quiet);
+    Checkpoints checkpoints(job);
     // Chunk by chunk, so that memory does not grow with `units`: the same VPLs as at once (the
     // Monte Carlo stream's blocks are aligned to path indices, and a chunk is a whole number of
     // them), summed in another order.
@@ -65,6 +92,7 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
         const uint64_t work = std::min(chunk, units - done);
         run.advance(work);
         done += work;
+        checkpoints.after_chunk(run, done >= units);
         progress.set_status(run.stream().statistics());
         progress.advance(int64_t(work));
     }
@@ -80,6 +108,7 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     const int64_t tenths = int64_t(std::ceil(seconds * 10.0));
     int64_t shown = 0;
     Progress progress("render", tenths, job.quiet);
+    Checkpoints checkpoints(job);
     const uint64_t first = uint64_t(job.estimate.render.batch);
     // Over ranks, rank 0's clock decides for all, so that they stop together and agree on each
     // chunk's size (every rank traces its share of it).
@@ -101,6 +130,7 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     for (double t = elapsed(); !run.unlit() && t < seconds && !any_rank_interrupted(job);
          t = elapsed()) {
         run.advance(next_chunk(run.stream().work_done(), t, seconds - t, first, chunk_seconds[0]));
+        checkpoints.after_chunk(run, false);
         progress.set_status(run.stream().statistics());
         const int64_t now = std::min(tenths, int64_t(budget.seconds() * 10.0));
         progress.advance(now - shown);

@@ -2,6 +2,7 @@
 // The two loops of `mvpl render` over the VPL integrator (engine/integrator/vpl_integrator.h): a
 // fixed amount of sampler work, and chunks until a time budget is spent.
 #include <cstdint>
+#include <functional>
 #include <string>
 
 #include "engine/cluster/cluster.h"
@@ -23,6 +24,11 @@ struct RenderJob {
     // sums the images and alone gets the outcome's image. Null: this process alone. The
     // integrator was made for the same ranks.
     cluster::Cluster* cluster = nullptr;
+    // --write-every: between chunks, once `write_every` seconds (0: never) have passed since the
+    // last time, the estimate so far goes to `checkpoint` on rank 0 (which rewrites the outputs),
+    // so that a long render's files follow it. The estimate is not changed by it.
+    double write_every = 0.0;
+    std::function<void(const Image& image, uint64_t vpls)> checkpoint;
 };
 
 // What a render produced, for the summary line.
