@@ -1,6 +1,6 @@
 #pragma once
-// A CPU image that is added to the VPL image — clamping compensation (reference::ClampCompensation,
-// issue 13) or caustics (reference::CausticTracer, issue 15) — on a thread of its own, so that its
+// A CPU image that is added to the VPL image — clamping compensation (ClampCompensation,
+// issue 13) or caustics (CausticTracer, issue 15) — on a thread of its own, so that its
 // passes run while the GPU shades VPL batches rather than after them. The thread runs the passes
 // it is allowed and then waits: the render raises the allowance as it shades VPLs, so that the
 // CPU's samples keep pace with the VPLs instead of taking the CPU from them.

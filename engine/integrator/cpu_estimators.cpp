@@ -5,22 +5,21 @@ namespace mvpl::integrator {
 CpuEstimators::CpuEstimators(const SceneView& v, const Estimate& estimate, int rank, int ranks)
     : m_fixed_passes(estimate.compensation_passes), m_rank(rank), m_ranks(ranks) {
     if (estimate.compensate) {
-        reference::CompensationOptions options = compensation_options(estimate);
+        CompensationOptions options = compensation_options(estimate);
         options.camera = v.camera;
         options.first_pass = uint32_t(rank);
         options.pass_stride = uint32_t(ranks);
         auto compensation =
-            std::make_unique<reference::ClampCompensation>(*v.scene, *v.accel, *v.lights, options);
+            std::make_unique<ClampCompensation>(*v.scene, *v.accel, *v.lights, options);
         if (compensation->active())
             m_compensation = std::make_unique<CpuEstimatorThread>(std::move(compensation));
     }
     if (estimate.caustics) {
-        reference::CausticOptions options = caustic_options(estimate);
+        CausticOptions options = caustic_options(estimate);
         options.camera = v.camera;
         options.first_pass = uint32_t(rank);
         options.pass_stride = uint32_t(ranks);
-        auto caustics =
-            std::make_unique<reference::CausticTracer>(*v.scene, *v.accel, *v.lights, options);
+        auto caustics = std::make_unique<CausticTracer>(*v.scene, *v.accel, *v.lights, options);
         if (caustics->active())
             m_caustics = std::make_unique<CpuEstimatorThread>(std::move(caustics));
     }
@@ -29,8 +28,7 @@ CpuEstimators::CpuEstimators(const SceneView& v, const Estimate& estimate, int r
 
 bool caustics_needed(const SceneView& v, const Estimate& estimate) {
     return estimate.caustics &&
-           reference::CausticTracer(*v.scene, *v.accel, *v.lights, caustic_options(estimate))
-               .active();
+           CausticTracer(*v.scene, *v.accel, *v.lights, caustic_options(estimate)).active();
 }
 
 void CpuEstimators::pace(uint64_t vpls, Pacing pacing) {

@@ -26,8 +26,8 @@ reference::GatherOptions gather_options(const Estimate& e) {
     return g;
 }
 
-reference::CompensationOptions compensation_options(const Estimate& e) {
-    reference::CompensationOptions c;
+CompensationOptions compensation_options(const Estimate& e) {
+    CompensationOptions c;
     c.width = int(e.render.width);
     c.height = int(e.render.height);
     c.clamp = e.render.clamp;
@@ -39,8 +39,8 @@ reference::CompensationOptions compensation_options(const Estimate& e) {
     return c;
 }
 
-reference::CausticOptions caustic_options(const Estimate& e) {
-    reference::CausticOptions k;
+CausticOptions caustic_options(const Estimate& e) {
+    CausticOptions k;
     k.width = int(e.render.width);
     k.height = int(e.render.height);
     k.max_depth = e.sampling.tracer.max_depth;

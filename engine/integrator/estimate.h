@@ -7,9 +7,9 @@
 #include <cstdint>
 #include <string>
 
+#include "engine/integrator/caustic_tracer.h"
+#include "engine/integrator/clamp_compensation.h"
 #include "engine/manylights/row_column_sampler.h"
-#include "engine/reference/caustic_tracer.h"
-#include "engine/reference/clamp_compensation.h"
 #include "engine/reference/vpl_gather.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/sampler_factory.h"
@@ -22,12 +22,12 @@ struct Estimate {
     // width, height, clamp, vsl_radius and specular_chains are set from `render` (sampler()).
     sampler::SamplerSettings sampling;
     render::RenderOptions render;
-    // Clamping compensation (reference/clamp_compensation.h) on a CPU thread beside the shading:
+    // Clamping compensation (integrator/clamp_compensation.h) on a CPU thread beside the shading:
     // `compensation_passes` samples per pixel, or 0: paced by the VPLs shaded
     // (cpu_estimator_thread.h).
     bool compensate = true;
     uint32_t compensation_passes = 0;
-    // Caustics (reference/caustic_tracer.h), paced as the compensation, where the scene has
+    // Caustics (integrator/caustic_tracer.h), paced as the compensation, where the scene has
     // vertices that leave no VPL; the light tracer then leaves no VPL on the chains' class.
     bool caustics = true;
     // Matrix row-column sampling (manylights/row_column_sampler.h): each pool of the stream's
@@ -40,10 +40,10 @@ sampler::SamplerSettings sampler_settings(const Estimate& e);
 // The CPU oracle's options: the GPU's sub-pixel positions, chains and interleaving.
 reference::GatherOptions gather_options(const Estimate& e);
 // The compensation's: compensated where the VPLs light, at the chains' rough ends.
-reference::CompensationOptions compensation_options(const Estimate& e);
+CompensationOptions compensation_options(const Estimate& e);
 // The caustic tracer's: the chains' class, and the compensation's share of near vertices when
 // it runs beside.
-reference::CausticOptions caustic_options(const Estimate& e);
+CausticOptions caustic_options(const Estimate& e);
 // Row-column sampling's rows and matrix: the image, clamp, spheres, chains and seed (the scene,
 // BVH and camera are the caller's to set).
 manylights::RowColumnContext row_column_context(const Estimate& e);

@@ -10,7 +10,7 @@
 //
 // VPLs + chains: chain(y_1…y_{m−1}), not chain(y_m), y_m seen from above (the receiver), and
 //   y_{m+1} the light or a vpl vertex that reflects towards y_m (towards the side it was lit on).
-// Caustic tracer (reference/caustic_tracer.h): not chain(y_1), y_1 seen from above, and y_2 a
+// Caustic tracer (integrator/caustic_tracer.h): not chain(y_1), y_1 seen from above, and y_2 a
 //   surface vertex that is not vpl or that transmits towards y_1 — exactly the paths with a
 //   receiver at y_1 that the first estimator misses.
 // Neither: chain(y_1) and y_{m+1} a surface vertex that is not vpl or transmits (a caustic seen

@@ -49,7 +49,7 @@ public:
     // (1 − metallic)·w_d·base/π (all of f for a Lambertian closure); eval minus this is the
     // microfacet reflection and transmission. It does not depend on the roughness, so a widened
     // closure (light/virtual_sphere.h) has the same diffuse lobe. Clamping lobe by lobe
-    // (light/vpl_contribution.h) and its compensation (reference/clamp_compensation.h) use it.
+    // (light/vpl_contribution.h) and its compensation (integrator/clamp_compensation.h) use it.
     Rgb eval_diffuse(const Vec3& wo, const Vec3& wi) const;
     // The diffuse lobe alone as a BSDF of its own, sampled with its cosine density: pdf_diffuse
     // is that density (0 where the lobe is absent), sample_diffuse's weight is

@@ -38,7 +38,7 @@ struct RenderStats {
 // What the first vertex a ray meets may scatter: all of its BSDF, or its diffuse lobe alone
 // (material::Bsdf::eval_diffuse; its emission still counts) for the radiance that leaves it
 // through that lobe, which the lobe-wise clamp's compensation needs
-// (reference/clamp_compensation.h). Deeper vertices always scatter through the whole BSDF.
+// (integrator/clamp_compensation.h). Deeper vertices always scatter through the whole BSDF.
 enum class FirstVertex { AllLobes, DiffuseLobe };
 
 // Called once per camera sample with its pixel, its index in the pixel and its film point

@@ -35,7 +35,7 @@ struct LightTracerOptions {
     // Russian roulette once the camera-to-light path through the next VPL would have at least
     // this many segments (the path tracer's rr_depth, counted the same way).
     int rr_depth = light::kDefaultRrDepth;
-    // With the caustic tracer (reference/caustic_tracer.h): vertices of the chains' class leave
+    // With the caustic tracer (integrator/caustic_tracer.h): vertices of the chains' class leave
     // no VPL (light/path_partition.h, leaves_vpl), the caustic tracer carries their light.
     // Disabled (the default): a VPL on every vertex lit on its shading side.
     light::ChainOptions specular;

@@ -1,7 +1,7 @@
 #include "engine/scene/ply_format.h"
 
-#include <bit>
 #include <algorithm>
+#include <bit>
 #include <cctype>
 #include <cstdlib>
 #include <cstring>

@@ -32,7 +32,7 @@ struct ConvergenceRun {
     // compensation_passes samples per pixel, or 0: paced by the VPLs shaded.
     bool compensate = false;
     uint32_t compensation_passes = 0;
-    // And caustics (reference/caustic_tracer.h), paced as the compensation, with the chains' class
+    // And caustics (integrator/caustic_tracer.h), paced as the compensation, with the chains' class
     // of the run's render options (the light tracer then leaves no VPL there).
     bool caustics = false;
     // Matrix row-column sampling for the VPL methods (engine/manylights); off by default.

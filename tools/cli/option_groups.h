@@ -73,7 +73,7 @@ struct RendererArgs {
 void add_renderer_options(ArgParser& parser, RendererArgs& args);
 
 // --compensate (the default), --no-compensate, --compensation-spp: clamping compensation
-// (engine/reference/clamp_compensation.h) on a CPU thread beside the GPU.
+// (engine/integrator/clamp_compensation.h) on a CPU thread beside the GPU.
 struct CompensationArgs {
     bool compensate = false;
     bool no_compensate = false;
@@ -84,7 +84,7 @@ struct CompensationArgs {
 };
 void add_compensation_options(ArgParser& parser, CompensationArgs& args);
 
-// --no-caustics: no caustic tracer (engine/reference/caustic_tracer.h) beside the GPU; the light
+// --no-caustics: no caustic tracer (engine/integrator/caustic_tracer.h) beside the GPU; the light
 // tracer then leaves VPLs on near-specular surfaces again.
 void add_caustics_option(ArgParser& parser, bool& no_caustics);
 

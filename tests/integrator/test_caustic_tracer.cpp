@@ -1,4 +1,4 @@
-// The caustic tracer (issue 15; engine/reference/caustic_tracer.h): light that reaches a diffuse
+// The caustic tracer (issue 15; engine/integrator/caustic_tracer.h): light that reaches a diffuse
 // floor through a smooth glass pane, which no VPL carries (VPLs reflect only, and the glass casts
 // an opaque shadow), found by light tracing; VPL image + caustics matches the path tracer, the VPL
 // image alone is dark there; a diffuse-only scene traces nothing.
@@ -10,20 +10,25 @@
 #include <optional>
 #include <vector>
 
+#include "engine/integrator/caustic_tracer.h"
+#include "engine/integrator/clamp_compensation.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
-#include "engine/reference/caustic_tracer.h"
-#include "engine/reference/clamp_compensation.h"
 #include "engine/reference/path_tracer.h"
 #include "engine/reference/vpl_gather.h"
 #include "engine/sampler/monte_carlo_sampler.h"
 #include "engine/scene/camera.h"
 #include "engine/trace/accel.h"
-#include "tests/reference/caustic_scenes.h"
+#include "tests/integrator/caustic_scenes.h"
 #include "tests/support/sample_statistics.h"
 
-namespace mvpl::reference {
+namespace mvpl::integrator {
 namespace {
+
+using reference::gather_vpls;
+using reference::GatherOptions;
+using reference::PathTracer;
+using reference::PathTracerOptions;
 
 constexpr int kSize = 24;
 constexpr int kMaxDepth = 3;
@@ -339,4 +344,4 @@ TEST(CausticTracer, ADiffuseSceneTracesNoRays) {
 }
 
 }  // namespace
-}  // namespace mvpl::reference
+}  // namespace mvpl::integrator

@@ -1,4 +1,4 @@
-#include "engine/reference/caustic_tracer.h"
+#include "engine/integrator/caustic_tracer.h"
 
 #include <algorithm>
 #include <cmath>
@@ -16,7 +16,9 @@
 #include "engine/trace/ray.h"
 #include "engine/trace/shading_point.h"
 
-namespace mvpl::reference {
+namespace mvpl::integrator {
+
+using reference::PassMean;  // engine/reference/pass_mean.h
 
 namespace {
 
@@ -317,4 +319,4 @@ Image CausticTracer::image(uint32_t* passes) const {
     return m_impl->mean.mean(passes);
 }
 
-}  // namespace mvpl::reference
+}  // namespace mvpl::integrator

@@ -1,4 +1,4 @@
-#include "engine/reference/clamp_compensation.h"
+#include "engine/integrator/clamp_compensation.h"
 
 #include <algorithm>
 #include <cmath>
@@ -14,7 +14,10 @@
 #include "engine/scene/camera.h"
 #include "engine/trace/ray.h"
 
-namespace mvpl::reference {
+namespace mvpl::integrator {
+
+using reference::PassMean;  // engine/reference/pass_mean.h
+using reference::PathTracer;
 
 struct ClampCompensation::Impl {
     const scene::Scene& scene;
@@ -116,9 +119,9 @@ struct ClampCompensation::Impl {
         ray.tmax = d_min;
         const std::optional<trace::Hit> hit = accel.intersect(ray);
         if (!hit) return out;
-        const Rgb L =
-            path_tracer.radiance(ray, rng, depth, std::max(1, options.rr_depth - 1), false,
-                                 by_lobe ? FirstVertex::DiffuseLobe : FirstVertex::AllLobes);
+        const Rgb L = path_tracer.radiance(
+            ray, rng, depth, std::max(1, options.rr_depth - 1), false,
+            by_lobe ? reference::FirstVertex::DiffuseLobe : reference::FirstVertex::AllLobes);
         return out + bs->weight * L * missing(hit->t);
     }
 
@@ -167,4 +170,4 @@ Image ClampCompensation::image(uint32_t* passes) const {
     return m_impl->mean.mean(passes);
 }
 
-}  // namespace mvpl::reference
+}  // namespace mvpl::integrator

@@ -14,7 +14,7 @@
 // path's remaining depth; emission at y included). A ray is bounded by d_min, so a sample that
 // finds nothing nearer costs one short ray. Point and spot lights nearer than d_min, which no BSDF
 // sample can hit, are compensated by evaluating them: I · (1/d² − 1/d_min²) with exact visibility.
-// Clamped VPL image + C is unbiased, whatever the clamp (tests/reference/test_clamp_compensation).
+// Clamped VPL image + C is unbiased, whatever the clamp (tests/integrator/test_clamp_compensation).
 //
 // With virtual spherical lights (vsl_radius > 0) the VPL estimate clamps lobe by lobe
 // (light/vpl_contribution.h): only the product of the receiver's diffuse lobe f_D and the VPL's
@@ -41,7 +41,7 @@
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
-namespace mvpl::reference {
+namespace mvpl::integrator {
 
 struct CompensationOptions {
     int width = int(kDefaultImageWidth);
@@ -90,4 +90,4 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
-}  // namespace mvpl::reference
+}  // namespace mvpl::integrator

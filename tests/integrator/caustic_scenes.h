@@ -3,7 +3,7 @@
 // off a near-mirror.
 #include "engine/scene/scene.h"
 
-namespace mvpl::reference {
+namespace mvpl::integrator {
 
 // The pane scene's sizes: the pane halfway up, its half width, the area light's half width.
 inline constexpr float kPaneY = 0.5f;
@@ -27,4 +27,4 @@ scene::Scene make_pane_scene(bool glass = true);
 // at x = −1 sees the floor in front of the mirror before the mirror's plane x = 0.8.
 scene::Scene make_mirror_scene();
 
-}  // namespace mvpl::reference
+}  // namespace mvpl::integrator

@@ -54,7 +54,7 @@
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
-namespace mvpl::reference {
+namespace mvpl::integrator {
 
 struct CausticOptions {
     int width = int(kDefaultImageWidth);
@@ -103,4 +103,4 @@ private:
     std::unique_ptr<Impl> m_impl;
 };
 
-}  // namespace mvpl::reference
+}  // namespace mvpl::integrator

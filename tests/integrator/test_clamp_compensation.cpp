@@ -1,4 +1,4 @@
-// Clamping compensation (issue 13, item 4; engine/reference/clamp_compensation.h): the clamped VPL
+// Clamping compensation (issue 13, item 4; engine/integrator/clamp_compensation.h): the clamped VPL
 // estimate plus the compensation is unbiased, i.e. equals the unclamped estimate in the mean,
 // while the clamped estimate alone is measurably dark. Paired per run: the same VPLs gathered with
 // and without the clamp, so that the VPLs' own noise mostly cancels from the differences.
@@ -8,9 +8,9 @@
 #include <cstdio>
 #include <vector>
 
+#include "engine/integrator/clamp_compensation.h"
 #include "engine/light/chain_options.h"
 #include "engine/light/light_sampler.h"
-#include "engine/reference/clamp_compensation.h"
 #include "engine/reference/vpl_gather.h"
 #include "engine/sampler/monte_carlo_stream.h"
 #include "engine/scene/scene_loader.h"
@@ -49,8 +49,8 @@ PairedRegions gather_paired(const scene::Scene& scene, const trace::Accel& accel
 // The compensation image's regions after `passes` passes.
 std::vector<double> compensation_regions(const scene::Scene& scene, const trace::Accel& accel,
                                          const light::LightSampler& lights,
-                                         const reference::CompensationOptions& c, int passes) {
-    reference::ClampCompensation compensation(scene, accel, lights, c);
+                                         const integrator::CompensationOptions& c, int passes) {
+    integrator::ClampCompensation compensation(scene, accel, lights, c);
     for (int p = 0; p < passes; ++p)
         compensation.add_pass();
     EXPECT_EQ(compensation.passes(), uint32_t(passes));
@@ -80,7 +80,7 @@ TEST(ClampCompensation, ClampedLightPlusCompensationIsUnbiased) {
     for (int r = 0; r < kRuns; ++r) {
         const auto [unclamped, clamped] =
             gather_paired(scene, accel, lights, g, 3000 + uint64_t(r), kPaths, kClamp);
-        reference::CompensationOptions c;
+        integrator::CompensationOptions c;
         c.width = c.height = kRes;
         c.clamp = kClamp;
         c.max_depth = 6;
@@ -149,7 +149,7 @@ TEST(ClampCompensation, LobeWiseClampPlusLobeWiseCompensationIsUnbiased) {
     for (int r = 0; r < kRuns; ++r) {
         const auto [unclamped, clamped] =
             gather_paired(scene, accel, lights, g, 5000 + uint64_t(r), kPaths, kClamp);
-        reference::CompensationOptions c;
+        integrator::CompensationOptions c;
         c.width = c.height = kRes;
         c.clamp = kClamp;
         c.max_depth = 6;
@@ -198,13 +198,13 @@ TEST(ClampCompensation, LambertianScenesAreCompensatedAsBefore) {
     const scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
     const trace::Accel accel(scene);
     const light::LightSampler lights(scene);
-    reference::CompensationOptions c;
+    integrator::CompensationOptions c;
     c.width = c.height = 16;
     c.clamp = 0.2f;
     c.vsl_radius = light::kDefaultVslRadius;
-    reference::ClampCompensation by_lobe(scene, accel, lights, c);
+    integrator::ClampCompensation by_lobe(scene, accel, lights, c);
     c.vsl_radius = 0.0f;
-    reference::ClampCompensation full(scene, accel, lights, c);
+    integrator::ClampCompensation full(scene, accel, lights, c);
     for (int p = 0; p < 4; ++p) {
         by_lobe.add_pass();
         full.add_pass();
@@ -223,15 +223,15 @@ TEST(ClampCompensation, NothingToCompensateWithoutClampOrIndirectPaths) {
     const scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/cornell-box/cbox.gltf");
     const trace::Accel accel(scene);
     const light::LightSampler lights(scene);
-    reference::CompensationOptions c;
+    integrator::CompensationOptions c;
     c.width = c.height = 8;
     c.clamp = 0.0f;
-    EXPECT_FALSE(reference::ClampCompensation(scene, accel, lights, c).active());
+    EXPECT_FALSE(integrator::ClampCompensation(scene, accel, lights, c).active());
     c.clamp = 0.05f;
     c.max_depth = 1;
-    EXPECT_FALSE(reference::ClampCompensation(scene, accel, lights, c).active());
+    EXPECT_FALSE(integrator::ClampCompensation(scene, accel, lights, c).active());
     c.max_depth = 2;  // direct light: emitter VPLs are clamped too
-    EXPECT_TRUE(reference::ClampCompensation(scene, accel, lights, c).active());
+    EXPECT_TRUE(integrator::ClampCompensation(scene, accel, lights, c).active());
 }
 
 // Issue 15's chains: a pixel whose first vertex is a mirror is lit by the VPLs at the rough end
@@ -258,7 +258,7 @@ TEST(ClampCompensation, ChainedPixelsAreCompensatedAtTheChainsEnd) {
         g.chain_seed = 7000 + uint64_t(r);
         const auto [unclamped, clamped] =
             gather_paired(scene, accel, lights, g, 7000 + uint64_t(r), kPaths, kClamp);
-        reference::CompensationOptions c;
+        integrator::CompensationOptions c;
         c.width = c.height = kRes;
         c.clamp = kClamp;
         c.vsl_radius = 0.0f;

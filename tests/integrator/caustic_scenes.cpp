@@ -1,8 +1,8 @@
-#include "tests/reference/caustic_scenes.h"
+#include "tests/integrator/caustic_scenes.h"
 
 #include "tests/support/scene_builder.h"
 
-namespace mvpl::reference {
+namespace mvpl::integrator {
 
 scene::Scene make_pane_scene(bool glass) {
     scene::Scene s;
@@ -51,4 +51,4 @@ scene::Scene make_mirror_scene() {
     return s;
 }
 
-}  // namespace mvpl::reference
+}  // namespace mvpl::integrator
