@@ -106,7 +106,7 @@ void VplIntegrator::advance(uint64_t work) {
     m_stats.vpls = m_stream->vpls_total();
     m_stats.shaded += m_chunk.size();
     m_stats.units = m_stream->work_done();
-    m_cpu->pace(m_many_lights ? m_stats.shaded : m_stats.vpls, m_pacing);
+    m_cpu->pace(paced_vpls(), m_pacing);
 }
 
 // One process, VPL light: scale · Σ contributions + emission (the GPU's resolve, or the oracle's
@@ -160,7 +160,7 @@ Image VplIntegrator::finish_cpu(Pacing pacing) {
 
 // Each estimator's image added on its own, in this order: the same sums, to the bit, whoever asks.
 void VplIntegrator::add_cpu_finished(Image& sum, Pacing pacing) {
-    m_cpu->pace(m_stats.vpls, pacing);
+    m_cpu->pace(paced_vpls(), pacing);
     // Interrupted (interrupt.h): the passes done, not those allowed.
     const bool wait = pacing == Pacing::Fixed && !interrupted();
     if (CpuEstimatorThread* t = m_cpu->compensation_thread()) {

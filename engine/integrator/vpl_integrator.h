@@ -82,6 +82,9 @@ public:
 
 private:
     bool shared() const { return m_ranks.size() > 1; }
+    // The VPLs that pace the CPU estimators: those shaded (row-column sampling's
+    // representatives, not its pools).
+    uint64_t paced_vpls() const { return m_many_lights ? m_stats.shaded : m_stats.vpls; }
     Image vpl_image();
     void add_cpu_finished(Image& sum, Pacing pacing);
     Image shared_image(bool finishing);
