@@ -130,6 +130,39 @@ void CommandList::copy_image_to_buffer(const Image& src, Buffer& dst, uint32_t b
                VK_ACCESS_2_NONE, kAnyAccess);
 }
 
+void CommandList::copy_image_layers(const Image& src, Image& dst,
+                                    std::span<const LayerCopy> copies) {
+    if (copies.empty()) return;
+    if (&src == &dst || src.width() != dst.width() || src.height() != dst.height() ||
+        src.format() != dst.format()) {
+        throw GpuError("copy_image_layers from '" + src.name() + "' to '" + dst.name() +
+                       "': distinct images of one size and format");
+    }
+    std::vector<VkImageCopy> regions;
+    regions.reserve(copies.size());
+    for (const LayerCopy& c : copies) {
+        const VkImageSubresourceRange from = layer_range(src, c.src_layer, c.count);
+        const VkImageSubresourceRange to = layer_range(dst, c.dst_layer, c.count);
+        VkImageCopy region{};
+        region.srcSubresource = {from.aspectMask, 0, from.baseArrayLayer, from.layerCount};
+        region.dstSubresource = {to.aspectMask, 0, to.baseArrayLayer, to.layerCount};
+        region.extent = {src.width(), src.height(), 1};
+        regions.push_back(region);
+    }
+    const VkImageSubresourceRange all_src = layer_range(src, 0, 0);
+    const VkImageSubresourceRange all_dst = layer_range(dst, 0, 0);
+    transition(m_cmd, src, all_src, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL,
+               VK_ACCESS_2_MEMORY_WRITE_BIT, VK_ACCESS_2_TRANSFER_READ_BIT);
+    transition(m_cmd, dst, all_dst, VK_IMAGE_LAYOUT_GENERAL, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL,
+               VK_ACCESS_2_MEMORY_WRITE_BIT, VK_ACCESS_2_TRANSFER_WRITE_BIT);
+    vkCmdCopyImage(m_cmd, src.handle(), VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, dst.handle(),
+                   VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, uint32_t(regions.size()), regions.data());
+    transition(m_cmd, src, all_src, VK_IMAGE_LAYOUT_TRANSFER_SRC_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+               VK_ACCESS_2_NONE, kAnyAccess);
+    transition(m_cmd, dst, all_dst, VK_IMAGE_LAYOUT_TRANSFER_DST_OPTIMAL, VK_IMAGE_LAYOUT_GENERAL,
+               VK_ACCESS_2_TRANSFER_WRITE_BIT, kAnyAccess);
+}
+
 void CommandList::clear_color(Image& image, const std::array<float, 4>& rgba, uint32_t base_layer,
                               uint32_t layer_count) {
     if (is_depth(image.format()))

@@ -39,6 +39,13 @@ public:
                               uint32_t layer_count);
     void copy_image_to_buffer(const Image& src, Buffer& dst, uint32_t base_layer,
                               uint32_t layer_count);
+    // Layer ranges of src into layer ranges of dst (same size and format, distinct images).
+    struct LayerCopy {
+        uint32_t src_layer = 0;
+        uint32_t dst_layer = 0;
+        uint32_t count = 1;
+    };
+    void copy_image_layers(const Image& src, Image& dst, std::span<const LayerCopy> copies);
     // Fills layers [base_layer, +layer_count) of a colour image (layer_count 0: to the end).
     void clear_color(Image& image, const std::array<float, 4>& rgba, uint32_t base_layer = 0,
                      uint32_t layer_count = 0);

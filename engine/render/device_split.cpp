@@ -30,7 +30,7 @@ std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
 }
 
 // Every field of RenderTimings is summed below: a new one must be added there too.
-static_assert(sizeof(RenderTimings) == 14 * 8, "add_timings: sum the new field of RenderTimings");
+static_assert(sizeof(RenderTimings) == 15 * 8, "add_timings: sum the new field of RenderTimings");
 
 void add_timings(RenderTimings& sum, const RenderTimings& t) {
     sum.g_buffer_ms += t.g_buffer_ms;
@@ -47,6 +47,7 @@ void add_timings(RenderTimings& sum, const RenderTimings& t) {
     sum.g_buffers += t.g_buffers;
     sum.chain_ms += t.chain_ms;
     sum.chain_rays += t.chain_rays;
+    sum.kept_cubes += t.kept_cubes;
 }
 
 void run_on_devices(uint32_t devices, const std::function<void(uint32_t)>& work) {

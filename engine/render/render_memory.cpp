@@ -31,6 +31,8 @@ MemoryEstimate estimate_memory(const RenderOptions& o) {
     e.device_bytes = g_buffer + pixels * kD32f + 2 * pixels * kRgba32f + cubes +
                      texels * kD32f * 6 + ortho + texels * kD32f;
     e.largest_image = std::max({g_buffer, cubes, ortho});
+    // Kept cubes (kept_shadow_maps.h) at most their budget, in pools of a batch's cubes.
+    e.device_bytes += o.kept_shadow_bytes;
     // The accumulation and the emission sum read back as RGBA32F, then the linear RGB image.
     e.host_bytes = pixels * (2 * kRgba32f + 12);
     if (o.chains.enabled()) {

@@ -140,6 +140,10 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
           gpu::compile_embedded_shader("render/shadow.frag"),
           shadow_layout(sizeof(OrthoPush), false), "directional shadow (front faces)")),
       m_near(kNearFraction * std::max(geometry.bounds().diagonal(), 1e-30f)) {
+    if (options.kept_bytes > 0) {
+        m_kept = std::make_unique<KeptShadowMaps>(context, options.resolution, options.max_batch,
+                                                  options.kept_bytes);
+    }
     std::vector<bool> masked(geometry.graphs().size(), false);
     for (size_t i = 0; i < masked.size(); ++i)
         masked[i] = geometry.graphs()[i].alpha_tested();
@@ -230,6 +234,24 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
         throw gpu::GpuError("shadow pass: a batch of " + std::to_string(batch.size()) +
                             " VPLs for " + std::to_string(max_batch()) + " cubes");
     }
+    if (!m_kept) {
+        record_maps(cmd, batch, skip);
+        return;
+    }
+    // The previous batch's shading has read the cubes (accumulate() waits for each batch).
+    const std::vector<bool> restored = m_kept->restore(cmd, batch, skip, m_cubes);
+    std::vector<bool> draw_skip(batch.size()), drawn(batch.size());
+    for (size_t i = 0; i < batch.size(); ++i) {
+        draw_skip[i] = restored[i] || (!skip.empty() && skip[i]);
+        drawn[i] = !draw_skip[i];
+    }
+    record_maps(cmd, batch, draw_skip);
+    cmd.barrier();
+    m_kept->keep(cmd, batch, drawn, m_cubes);
+}
+
+void ShadowPass::record_maps(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
+                             const std::vector<bool>& skip) {
     bool depth_in_use = false;
     bool ortho_depth_in_use = false;
     if (m_masked_pipeline) {

@@ -60,6 +60,9 @@ struct RenderOptions {
     // Area and Surface VPLs draw only the part of each cube face that their lit hemisphere can
     // reach (hemicube.h); false: whole faces (the A/B of mvpl bench --sweep).
     bool hemicube = true;
+    // Device memory for shadow cubes kept from one begin() to the next and copied back when the
+    // same VPL is shaded again (kept_shadow_maps.h: the preview after a camera move); 0: none.
+    uint64_t kept_shadow_bytes = 0;
     // Area and Surface VPLs whose lit half-space holds no point of the view are neither drawn
     // nor shaded (vpl_culling.h; the image is the same to the bit); false: every VPL.
     bool vpl_culling = true;
@@ -117,6 +120,7 @@ struct RenderTimings {
     // Host time tracing specular chains (in wall_ms on one device; summed over several).
     double chain_ms = 0.0;
     uint64_t chain_rays = 0;
+    uint64_t kept_cubes = 0;  // shadow cubes copied back instead of drawn (kept_shadow_bytes)
 };
 
 class VplRenderer {

@@ -112,7 +112,8 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
     if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
         o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
         o.shadow_proxy != built_for.shadow_proxy || o.shadow_lod != built_for.shadow_lod ||
-        o.backface_culling != built_for.backface_culling || o.hemicube != built_for.hemicube) {
+        o.backface_culling != built_for.backface_culling || o.hemicube != built_for.hemicube ||
+        o.kept_shadow_bytes != built_for.kept_shadow_bytes) {
         ShadowPassOptions so;
         so.resolution = o.shadow_resolution;
         so.max_batch = o.batch;
@@ -121,6 +122,7 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
         so.lod = o.shadow_lod;
         so.front_faces = o.backface_culling;
         so.hemicube = o.hemicube;
+        so.kept_bytes = o.kept_shadow_bytes;
         shadow = std::make_unique<ShadowPass>(*context, geometry, *clusters, so);
         shading.reset();
     }
@@ -160,6 +162,7 @@ void VplRenderer::Impl::start(const scene::Camera& camera, const RenderOptions& 
             background_image(m.geometry.environment(), camera, options.width, options.height));
     }
     m.timings = RenderTimings{};
+    m.shadow->new_estimate();
     m.shaded = 0;
     m.drawn.clear();
     gpu::GpuTimer timer(*m.context, 1);
@@ -227,6 +230,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
     const uint64_t drawn_before = m.shadow->triangles_drawn();
     const uint64_t front_before = m.shadow->front_only_triangles();
     const uint64_t texels_before = m.shadow->texels_drawn();
+    const uint64_t kept_before = m.shadow->kept() ? m.shadow->kept()->restored() : 0;
     std::vector<light::Vpl> kept;
     std::vector<bool> skip;
     for (size_t si = 0; si < slices.size(); ++si) {
@@ -237,6 +241,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
         std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
         slice = m.cull(slice, kept, skip);
         m.shading->upload(slice, m.geometry.bounds());
+        m.shadow->reserve_kept(slice.size());
         if (m.interleave) {
             batch.interleave = options.interleave;
             batch.vpl_offset = index.empty() ? shaded_before + s.first : index[s.first];
@@ -272,6 +277,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
     m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
     m.timings.shadow_front_only_triangles += m.shadow->front_only_triangles() - front_before;
     m.timings.shadow_texels += m.shadow->texels_drawn() - texels_before;
+    if (m.shadow->kept()) m.timings.kept_cubes += m.shadow->kept()->restored() - kept_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
 }
 

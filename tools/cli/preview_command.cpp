@@ -33,6 +33,7 @@ struct PreviewArgs {
     RendererArgs renderer;
     CompensationArgs compensation;
     bool no_caustics = false, no_hud = false, no_motion_scaling = false;
+    uint64_t kept_mib = o.kept_shadow_bytes >> 20;
     CameraArgs camera;
     EnvironmentArgs environment;
     SceneFileArgs scene_file;
@@ -55,6 +56,9 @@ void add_options(ArgParser& parser, PreviewArgs& a) {
     parser.add_flag("--no-hud", &a.no_hud, "no text overlay");
     parser.add_flag("--no-motion-scaling", &a.no_motion_scaling,
                     "render at full resolution while the camera moves too");
+    parser.add_uint64("--kept-maps", &a.kept_mib,
+                      "device memory in MiB for shadow cubes kept across camera moves (0 = none)",
+                      "MIB");
     parser.add_flag("--quiet", &o.quiet, "no summary line");
     add_sampler_option(parser, o.sampler);
     add_renderer_options(parser, a.renderer);  // C toggles clamping in the window
@@ -98,6 +102,9 @@ preview::PreviewOptions checked_options(const PreviewArgs& a) {
     o.caustics = !a.no_caustics;
     o.hud = !a.no_hud;
     o.motion_scaling = !a.no_motion_scaling;
+    if (a.kept_mib > (uint64_t(1) << 24))
+        throw UsageError("preview: --kept-maps must be at most 16 TiB");
+    o.kept_shadow_bytes = a.kept_mib << 20;
     o.camera = a.camera.choice;
     o.environment = a.environment.choice;
     o.load = a.scene_file.options;

@@ -10,6 +10,7 @@
 
 #include "engine/core/image_size.h"
 #include "engine/light/path_depth.h"
+#include "engine/render/kept_shadow_maps.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/environment_choice.h"
@@ -55,6 +56,8 @@ struct PreviewOptions {
     bool compensate = true;
     uint32_t compensation_passes = 0;
     bool caustics = true;
+    // Device memory for shadow cubes kept across camera moves (render/kept_shadow_maps.h).
+    uint64_t kept_shadow_bytes = render::kDefaultKeptBytes;
     bool hud = true;
     // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
     bool motion_scaling = true;

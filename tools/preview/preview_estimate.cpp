@@ -17,6 +17,7 @@ render::RenderOptions preview_render_options(const PreviewOptions& options,
     ro.jitter = options.jitter;
     ro.subpixel_rotation = subpixel_rotation(options.seed);  // as `mvpl render --seed`
     ro.clamp = clamp;
+    ro.kept_shadow_bytes = options.kept_shadow_bytes;
     ro.chains.max_depth = options.max_depth;
     ro.chain_seed = options.seed;
     if (options.interleave_auto && (light::scene_may_chain(scene, ro.chains) ||
