@@ -208,6 +208,10 @@ uint32_t VplRenderer::devices() const {
     return m_impl->devices();
 }
 
+const KeptShadowMaps* VplRenderer::kept_shadow_maps() const {
+    return m_impl->shadow ? m_impl->shadow->kept() : nullptr;
+}
+
 uint64_t VplRenderer::peak_device_bytes() const {
     uint64_t bytes = m_impl->context->allocator().peak_bytes();
     for (const Impl::Partner& p : m_impl->partners)

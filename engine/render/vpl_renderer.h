@@ -32,6 +32,8 @@ class Accel;
 
 namespace mvpl::render {
 
+class KeptShadowMaps;
+
 struct RenderOptions {
     uint32_t width = kDefaultImageWidth;
     uint32_t height = kDefaultImageHeight;
@@ -184,6 +186,8 @@ public:
     const gpu::Image& g_buffer() const;
     gpu::Context& context() const;
     uint32_t devices() const;
+    // Device 0's kept shadow cubes (RenderOptions::kept_shadow_bytes), null without them.
+    const KeptShadowMaps* kept_shadow_maps() const;
     // The most device memory allocated at once, summed over the devices (MemoryAllocator).
     uint64_t peak_device_bytes() const;
 

@@ -34,6 +34,7 @@ struct PreviewArgs {
     CompensationArgs compensation;
     bool no_caustics = false, no_hud = false, no_motion_scaling = false;
     uint64_t kept_mib = o.kept_shadow_bytes >> 20;
+    float catch_up = float(o.catch_up_seconds);
     CameraArgs camera;
     EnvironmentArgs environment;
     SceneFileArgs scene_file;
@@ -59,6 +60,11 @@ void add_options(ArgParser& parser, PreviewArgs& a) {
     parser.add_uint64("--kept-maps", &a.kept_mib,
                       "device memory in MiB for shadow cubes kept across camera moves (0 = none)",
                       "MIB");
+    parser.add_float("--catch-up", &a.catch_up,
+                     "the first frame at rest after a move shades the recorded VPLs until it "
+                     "holds 90 % of the picture's before the move, for at most SEC seconds (0 = "
+                     "the frame budget)",
+                     "SEC");
     parser.add_flag("--quiet", &o.quiet, "no summary line");
     add_sampler_option(parser, o.sampler);
     add_renderer_options(parser, a.renderer);  // C toggles clamping in the window
@@ -105,6 +111,9 @@ preview::PreviewOptions checked_options(const PreviewArgs& a) {
     if (a.kept_mib > (uint64_t(1) << 24))
         throw UsageError("preview: --kept-maps must be at most 16 TiB");
     o.kept_shadow_bytes = a.kept_mib << 20;
+    if (!(a.catch_up >= 0.0f && a.catch_up <= 60.0f))
+        throw UsageError("preview: --catch-up must be in [0, 60] seconds");
+    o.catch_up_seconds = a.catch_up;
     o.camera = a.camera.choice;
     o.environment = a.environment.choice;
     o.load = a.scene_file.options;

@@ -20,6 +20,7 @@
 #include "engine/sampler/sampler_factory.h"
 #include "tools/preview/camera_controller.h"
 #include "tools/preview/hud.h"
+#include "tools/preview/move_recovery.h"
 #include "tools/preview/present_pass.h"
 #include "tools/preview/preview_estimate.h"
 #include "tools/preview/preview_stats.h"
@@ -96,9 +97,12 @@ private:
     // Starts a new sum for the window's framebuffer, at 1/divisor of its size.
     void restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving);
     void render_work();
+    // The first frame at rest after a move: the recorded VPLs up to m_catch_up.
+    void catch_up();
     void update_cpu_image(bool force);
     void update_hud(bool force);
     void save(const std::string& path, bool png_from_display);
+    void print_kept_maps() const;
 
     PreviewOptions m_options;
     session::SceneSession m_session;
@@ -141,6 +145,10 @@ private:
     double m_ms_per_unit = 0.0;  // measured shading time per sampler unit (EMA)
     uint32_t m_screenshots = 0;
     PreviewStats m_stats;
+    MoveRecovery m_recovery;
+    uint64_t m_resting_vpls = 0;  // in the sum of the last frame at rest
+    uint64_t m_catch_up = 0;      // VPLs the next frame shades before presenting
+    bool m_was_moving = false;    // the previous frame restarted the sum
     Timer m_hud_timer;
     bool m_hud_dirty = true;
 };
@@ -266,7 +274,20 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     m_hud_dirty = true;
 }
 
+void PreviewApp::catch_up() {
+    const Timer timer;
+    const uint64_t target = std::min(m_catch_up, m_replay->vpls_recorded());
+    m_catch_up = 0;
+    while (m_replay->vpls_total() < target && timer.seconds() < m_options.catch_up_seconds) {
+        const uint64_t vpls = m_integrator.stats().vpls;
+        m_integrator.advance(kMaxUnitsPerCall);
+        m_scale = m_replay->scale();
+        m_stats.add_vpls(size_t(m_integrator.stats().vpls - vpls));
+    }
+}
+
 void PreviewApp::render_work() {
+    if (m_catch_up > 0) catch_up();
     const Timer timer;
     const bool fixed = m_options.paths_per_frame > 0;
     for (bool first = true;; first = false) {
@@ -328,6 +349,17 @@ void PreviewApp::save(const std::string& path, bool png_from_display) {
     if (!m_options.quiet) std::printf("preview: wrote %s\n", path.c_str());
 }
 
+void PreviewApp::print_kept_maps() const {
+    const render::KeptShadowMaps* kept = m_integrator.renderer()->kept_shadow_maps();
+    if (!kept) return;
+    std::printf(
+        "preview: kept shadow cubes: %u of at most %u (%.0f MiB budget); %llu copied back "
+        "instead of drawn; beyond the budget, cubes of VPLs not shaded since the last "
+        "restart are evicted first\n",
+        kept->size(), kept->capacity(), double(m_options.kept_shadow_bytes) / (1 << 20),
+        (unsigned long long)kept->restored());
+}
+
 int PreviewApp::run(const Timer& start) {
     Timer frame_timer;
     for (uint64_t frame = 0; m_options.frames == 0 || frame < m_options.frames; ++frame) {
@@ -349,6 +381,10 @@ int PreviewApp::run(const Timer& start) {
         const bool refine = !moving && m_motion_sum;
         const Timer phase;
         if (moving || refine) restart(width, height, moving ? m_motion_divisor : 1, moving);
+        if (!moving && m_was_moving && m_options.catch_up_seconds > 0.0)
+            m_catch_up =
+                uint64_t(std::ceil(MoveRecovery::kRecoveredShare * double(m_resting_vpls)));
+        m_was_moving = moving;
         const double restarted = phase.seconds();
         render_work();
         const double shaded = phase.seconds();
@@ -372,6 +408,9 @@ int PreviewApp::run(const Timer& start) {
             m_present.record(sc, renderer.accumulation(), renderer.emission(), params, capture);
             m_swapchain.end_frame();
             const double seconds = frame_timer.seconds();
+            m_recovery.frame(moving, m_replay->vpls_total(), start.seconds() - seconds,
+                             start.seconds());
+            if (!moving && !m_motion_sum) m_resting_vpls = m_replay->vpls_total();
             // The first frame is the first image (reported on its own), not a camera move.
             const bool moved = moving && frame > 0;
             m_stats.frame_presented(seconds, start.seconds(), moved);
@@ -398,7 +437,12 @@ int PreviewApp::run(const Timer& start) {
     }
     for (const std::string& message : m_context.validation_messages())
         std::fprintf(stderr, "mvpl: validation: %s\n", message.c_str());
-    if (!m_options.quiet) std::printf("%s\n", m_stats.summary().c_str());
+    if (!m_options.quiet) {
+        std::printf("%s\n", m_stats.summary().c_str());
+        const std::string recovery = m_recovery.summary();
+        if (!recovery.empty()) std::printf("preview: %s\n", recovery.c_str());
+        print_kept_maps();
+    }
     return 0;
 }
 

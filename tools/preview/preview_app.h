@@ -58,6 +58,10 @@ struct PreviewOptions {
     bool caustics = true;
     // Device memory for shadow cubes kept across camera moves (render/kept_shadow_maps.h).
     uint64_t kept_shadow_bytes = render::kDefaultKeptBytes;
+    // The first frame at rest after a move shades the recorded VPLs, in whole batches, until
+    // it holds 90 % of what the resting picture held before the move, for at most this many
+    // seconds (0: the frame budget as any other frame).
+    double catch_up_seconds = 2.0;
     bool hud = true;
     // Render at a reduced resolution while the camera moves (adapted to keep 10 fps).
     bool motion_scaling = true;

@@ -55,6 +55,8 @@ public:
     uint64_t work_done() const override { return m_work; }
     std::string statistics() const override { return m_history.statistics(); }
     uint64_t vpls_total() const override { return m_history.segment_begin(m_replayed); }
+    // VPLs the history holds: replayed without sampling (their cubes possibly kept).
+    uint64_t vpls_recorded() const { return m_history.vpls().size(); }
     // Every segment replayed and the sampler asked no more: the picture has converged.
     bool converged() const { return m_history.exhausted() && m_replayed == m_history.segments(); }
 
