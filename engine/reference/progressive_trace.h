@@ -1,6 +1,6 @@
 #pragma once
 // A reference traced in chunks of whole samples per pixel, so that its caller can act between
-// them: stop on Ctrl-C with the image so far (`mvpl reference`, mvpl.reference), rewrite its
+// them: end on Ctrl-C with the image so far (`mvpl reference`, mvpl.reference), rewrite its
 // outputs (--write-every), report progress. The chunks change nothing in the image
 // (path_film.h): they are sized by the clock.
 #include <functional>

@@ -58,7 +58,7 @@ void print_summary(const reference::PathTracerOptions& options, int spp,
 
 int run_reference(const Args& args) {
     ReferenceArgs a;
-    // SIGINT, SIGTERM: stop after the chunk in flight and write the samples so far; a second
+    // SIGINT, SIGTERM: end after the chunk in flight and write the samples so far; a second
     // signal exits at once (engine/core/interrupt.h).
     install_interrupt_handlers();
     ArgParser parser(
