@@ -1,6 +1,6 @@
 // The reference traced in chunks (engine/reference/progressive_trace.h, path_film.h): for the
 // same samples per pixel, the image of one pass to the bit, against an independent per-pixel loop
-// written here as the path tracer has always summed (one generator a pixel seeded
+// written here as the path tracer sums (one generator a pixel seeded
 // (mix_bits(seed), pixel), the samples in order, summed in double); a gate that says no ends it
 // between chunks with the samples so far; chunk sizes from the clock.
 #include <gtest/gtest.h>
