@@ -44,9 +44,9 @@ std::vector<std::string> load_tokens(const py::object& assets, const py::kwargs&
     return tokens;
 }
 
-// aovs: names ("albedo", …) or one comma-separated string, as `--aov`.
-py::object render(const SceneHandle& scene, const py::object& progress, const py::object& aovs,
-                  const py::kwargs& options) {
+// The keywords as command-line tokens, with aovs (names ("albedo", …) or one comma-separated
+// string) as `--aov`.
+std::vector<std::string> render_tokens(const py::object& aovs, const py::kwargs& options) {
     std::vector<std::string> tokens = keyword_tokens(options);
     if (!aovs.is_none()) {
         std::string list = py::isinstance<py::str>(aovs) ? aovs.cast<std::string>() : "";
@@ -56,16 +56,35 @@ py::object render(const SceneHandle& scene, const py::object& progress, const py
         }
         tokens.insert(tokens.end(), {"--aov", list});
     }
-    const RenderResult result = render_vpls(scene, tokens, [&progress](double done) {
-        // Ctrl-C (Python's SIGINT handler only sets a flag) ends the render between chunks.
+    return tokens;
+}
+
+// Between chunks, with the GIL: Ctrl-C (Python's SIGINT handler only sets a flag) raises
+// KeyboardInterrupt, then the progress callback, if any, gets the share done.
+ChunkHook between_chunks(const py::object& progress) {
+    return [&progress](double done) {
         if (PyErr_CheckSignals() != 0) throw py::error_already_set();
         if (!progress.is_none()) progress(done);
-    });
+    };
+}
+
+// The image, or with aovs the image and a dict of the AOV arrays.
+py::object arrays(const RenderResult& result, const py::object& aovs) {
     if (aovs.is_none()) return to_array(result.image);
     py::dict layers;
     for (const mvpl::ChannelImage& layer : result.aovs)
         layers[py::str(layer.name)] = to_array(layer);
     return py::make_tuple(to_array(result.image), layers);
+}
+
+py::object render(const SceneHandle& scene, const py::object& progress, const py::object& aovs,
+                  const py::kwargs& options) {
+    return arrays(render_vpls(scene, render_tokens(aovs, options), between_chunks(progress)), aovs);
+}
+
+py::object reference(const SceneHandle& scene, const py::object& progress, const py::object& aovs,
+                     const py::kwargs& options) {
+    return arrays(path_trace(scene, render_tokens(aovs, options), between_chunks(progress)), aovs);
 }
 
 py::dict compare(const py::object& image, const py::object& reference) {
@@ -104,14 +123,13 @@ PYBIND11_MODULE(mvpl, m) {
           "vpls=4096, time_budget=10, sampler='metropolis', res=(640, 480), seed=1, "
           "no_caustics=True. progress: called between chunks with the share done (0..1). "
           "Ctrl-C interrupts between chunks.");
-    m.def(
-        "reference",
-        [](const SceneHandle& scene, const py::kwargs& options) {
-            return to_array(path_trace(scene, keyword_tokens(options)));
-        },
-        py::arg("scene"),
-        "Renders with the CPU reference path tracer: a float32 array height x width x 3, as "
-        "`mvpl reference` writes it. Keywords are its options, e.g. spp=256, max_depth=6.");
+    m.def("reference", &reference, py::arg("scene"), py::kw_only(),
+          py::arg("progress") = py::none(), py::arg("aovs") = py::none(),
+          "Renders with the CPU reference path tracer: a float32 array height x width x 3, as "
+          "`mvpl reference` writes it (with aovs, the image and a dict of AOV arrays, as "
+          "render). Keywords are its options, e.g. spp=256, max_depth=6. progress: called "
+          "between chunks of samples per pixel with the share done (0..1). Ctrl-C interrupts "
+          "between chunks (about half a second each).");
     m.def("compare", &compare, py::arg("image"), py::arg("reference"),
           "The error of `image` against `reference` (arrays height x width x 3 or EXR paths): the "
           "dict of `mvpl compare --json` (relMSE, RMSE, mean_abs, mean_ratio, rel_err_p999, "

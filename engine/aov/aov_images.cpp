@@ -66,8 +66,8 @@ reference::CameraSampleHook ReferenceAovs::hook() {
     };
 }
 
-std::vector<ChannelImage> ReferenceAovs::images() const {
-    return m_film.images(std::min<uint64_t>(uint64_t(m_options.spp), kMaxAovPositions));
+std::vector<ChannelImage> ReferenceAovs::images(int spp) const {
+    return m_film.images(std::min<uint64_t>(uint64_t(std::max(spp, 0)), kMaxAovPositions));
 }
 
 }  // namespace mvpl::aov

@@ -48,7 +48,9 @@ public:
     ReferenceAovs(const scene::Scene& scene, const trace::Accel& accel,
                   const reference::PathTracerOptions& options, std::vector<AovRequest> aovs);
     reference::CameraSampleHook hook();
-    std::vector<ChannelImage> images() const;
+    // The AOVs once every pixel has had `spp` samples (fewer than options.spp when the
+    // reference was interrupted).
+    std::vector<ChannelImage> images(int spp) const;
 
 private:
     reference::PathTracerOptions m_options;

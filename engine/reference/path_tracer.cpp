@@ -136,30 +136,41 @@ Rgb PathTracer::radiance(const trace::Ray& camera_ray, Rng& rng, int max_depth, 
 }
 
 uint64_t PathTracer::host_bytes(const PathTracerOptions& options) {
-    // The linear RGB film, then the 8-bit sRGB copy and its encoding for a .png output
-    // (write_images); an .exr is written from the film itself.
-    return uint64_t(options.width) * uint64_t(options.height) * (sizeof(Rgb) + 2 * 3);
+    // The film (every pixel's generator and sums), the linear RGB image, then the 8-bit sRGB
+    // copy and its encoding for a .png output (write_images); an .exr is written from the image.
+    return uint64_t(options.width) * uint64_t(options.height) *
+           (PathFilm::kBytesPerPixel + sizeof(Rgb) + 2 * 3);
 }
 
 Image PathTracer::render(const PathTracerOptions& options, RenderStats* stats,
                          const CameraSampleHook& on_sample) const {
-    Image image(options.width, options.height);
+    PathFilm film(options.width, options.height, options.seed);
+    Progress progress("reference", int64_t(options.height) * options.spp, options.quiet);
+    RenderStats total;
+    advance(film, options.spp, options, &total, on_sample, &progress);
+    progress.finish();
+    if (stats) *stats = total;
+    return film.image();
+}
+
+void PathTracer::advance(PathFilm& film, int spp, const PathTracerOptions& options,
+                         RenderStats* stats, const CameraSampleHook& on_sample,
+                         Progress* progress) const {
     const uint64_t rays_before = m_accel.ray_count();
     std::atomic<uint64_t> nonfinite{0};
     Timer timer;
-    Progress progress("reference", options.height, options.quiet);
-    const uint64_t seed = mix_bits(options.seed);
+    const int first = film.spp();
     parallel_for(options.height, 1, [&](int64_t y0, int64_t y1) {
         for (int64_t y = y0; y < y1; ++y) {
             for (int x = 0; x < options.width; ++x) {
-                const uint64_t pixel = uint64_t(y) * uint64_t(options.width) + uint64_t(x);
-                Rng rng(seed, pixel);
-                DVec3 sum(0.0);
-                for (int s = 0; s < options.spp; ++s) {
-                    const Vec2 film = Vec2(float(x), float(y)) + next_2d(rng);
-                    if (on_sample) on_sample(x, int(y), s, film);
+                const size_t pixel = size_t(y) * size_t(options.width) + size_t(x);
+                Rng& rng = film.rng(pixel);
+                DVec3& sum = film.sum(pixel);
+                for (int s = first; s < first + spp; ++s) {
+                    const Vec2 film_point = Vec2(float(x), float(y)) + next_2d(rng);
+                    if (on_sample) on_sample(x, int(y), s, film_point);
                     const scene::CameraRay cr = scene::generate_camera_ray(
-                        m_scene.camera, options.width, options.height, film);
+                        m_scene.camera, options.width, options.height, film_point);
                     const Rgb L = radiance(trace::Ray{cr.origin, cr.direction}, rng,
                                            options.max_depth, options.rr_depth);
                     if (is_finite(L)) {
@@ -168,19 +179,17 @@ Image PathTracer::render(const PathTracerOptions& options, RenderStats* stats,
                         nonfinite.fetch_add(1, std::memory_order_relaxed);
                     }
                 }
-                image.at(x, int(y)) = Rgb(sum / double(std::max(options.spp, 1)));
             }
-            progress.advance();
+            if (progress) progress->advance(spp);
         }
     });
-    progress.finish();
+    film.add_spp(spp);
     if (stats) {
-        stats->seconds = timer.seconds();
-        stats->rays = m_accel.ray_count() - rays_before;
-        stats->paths = uint64_t(options.width) * options.height * options.spp;
-        stats->nonfinite_samples = nonfinite.load();
+        stats->seconds += timer.seconds();
+        stats->rays += m_accel.ray_count() - rays_before;
+        stats->paths += uint64_t(options.width) * uint64_t(options.height) * uint64_t(spp);
+        stats->nonfinite_samples += nonfinite.load();
     }
-    return image;
 }
 
 }  // namespace mvpl::reference

@@ -7,9 +7,11 @@
 
 #include "engine/core/image.h"
 #include "engine/core/image_size.h"
+#include "engine/core/progress.h"
 #include "engine/core/rng.h"
 #include "engine/light/light_sampler.h"
 #include "engine/light/path_depth.h"
+#include "engine/reference/path_film.h"
 #include "engine/scene/scene.h"
 #include "engine/trace/accel.h"
 
@@ -28,6 +30,7 @@ struct PathTracerOptions {
     bool quiet = false;
 };
 
+// Summed over the calls that filled a film (PathTracer::advance).
 struct RenderStats {
     double seconds = 0.0;
     uint64_t rays = 0;
@@ -54,6 +57,11 @@ public:
     // Box-filtered image, deterministic for a seed whatever the thread count.
     Image render(const PathTracerOptions& options, RenderStats* stats = nullptr,
                  const CameraSampleHook& on_sample = {}) const;
+    // `spp` more samples in every pixel of `film` (options.width × options.height, seeded with
+    // options.seed), added to `stats`; `progress`, if given, advances by `spp` per row. Films
+    // advanced to the same count hold the same sums whatever the chunks (path_film.h).
+    void advance(PathFilm& film, int spp, const PathTracerOptions& options, RenderStats* stats,
+                 const CameraSampleHook& on_sample = {}, Progress* progress = nullptr) const;
     // Host bytes a render with `options` holds at its peak, written out included: checked
     // against host_memory_bytes() before rendering (host_memory.h).
     static uint64_t host_bytes(const PathTracerOptions& options);

@@ -250,7 +250,7 @@ TEST(AovImages, TheReferenceReportsThePlaneOverItsSamples) {
             }
         }
     }
-    const std::vector<ChannelImage> images = film.images();
+    const std::vector<ChannelImage> images = film.images(o.spp);
     for (int y = 0; y < kHeight; ++y) {
         for (int x = 0; x < kWidth; ++x)
             expect_pixel(images, x, y, want[size_t(y) * kWidth + x], kExact, kExactGeometry);

@@ -1,7 +1,7 @@
-// Runs that survive Ctrl-C (engine/core/interrupt.h): SIGINT or SIGTERM during `mvpl render` or
-// `mvpl convergence` finishes the chunk in flight, writes what has converged and exits 130 (143);
-// a second signal exits at once and leaves no partial file. Outputs rewritten as a long render
-// goes (--write-every). And progress as plain lines when stderr is not a terminal
+// Runs that survive Ctrl-C (engine/core/interrupt.h): SIGINT or SIGTERM during `mvpl render`,
+// `mvpl reference` or `mvpl convergence` finishes the chunk in flight, writes what has converged
+// and exits 130 (143); a second signal exits at once and leaves no partial file. Outputs rewritten
+// as a long render goes (--write-every). And progress as plain lines when stderr is not a terminal
 // (engine/core/progress.h).
 #include <gtest/gtest.h>
 #include <sys/wait.h>
@@ -15,6 +15,7 @@
 #include <string>
 #include <thread>
 
+#include "engine/core/exr_file.h"
 #include "engine/core/image.h"
 #include "tests/cli/run_command.h"
 
@@ -153,13 +154,63 @@ TEST_F(Interrupt, ConvergenceWritesThePointsSoFar) {
     EXPECT_EQ(csv.find("metropolis,"), std::string::npos) << csv;  // never started
 }
 
-// A command that does not poll keeps the signal's default: it ends at once.
-TEST_F(Interrupt, ReferenceStopsAtOnce) {
-    start("reference " + shell_quote(kScene) + " --res 64x64 --spp 2000 -o r.exr");
+// `mvpl reference --spp N` into `name` in `dir`: the uninterrupted run an interrupted one is
+// checked against.
+mvpl::Image reference_image(const fs::path& dir, const std::string& args, int spp,
+                            const std::string& name) {
+    const auto run = mvpl::test::run_mvpl("reference " + args + " --spp " + std::to_string(spp) +
+                                          " --quiet -o " + shell_quote((dir / name).string()));
+    EXPECT_EQ(run.exit_code, 0) << run.err;
+    return mvpl::read_exr((dir / name).string());
+}
+
+// The reference's samples so far: the EXR says how many (mvpl/spp), holds its AOVs, and is the
+// image of an uninterrupted run of that many samples to the bit (each pixel's samples are a
+// prefix of its stream, engine/reference/path_film.h), so the tolerance on its mean is zero.
+TEST_F(Interrupt, SigintEndsAReferenceWithTheSamplesSoFar) {
+    const std::string args = shell_quote(kScene) + " --res 16x16";
+    start("reference " + args + " --spp 100000000 -o r.exr -o r.png --aov albedo");
     ASSERT_TRUE(wait_for_progress("reference: ")) << err();
     kill(m_pid, SIGINT);
-    EXPECT_EQ(wait_exit(5.0), 130) << err();
+    EXPECT_EQ(wait_exit(60.0), 130) << err();
+    expect_lit_image(m_dir / "r.exr");
+    EXPECT_TRUE(fs::exists(m_dir / "r.png"));
+    EXPECT_EQ(temporaries(), 0);
+    EXPECT_NE(out().find("; interrupted"), std::string::npos) << out();
+    EXPECT_EQ(err().find('\r'), std::string::npos);  // plain progress lines, no bar
+    const mvpl::ExrContents exr = mvpl::read_exr_file((m_dir / "r.exr").string());
+    ASSERT_NE(exr.channel("albedo.R"), nullptr);
+    const int spp = std::stoi(exr.attribute("mvpl/spp"));
+    ASSERT_GE(spp, 1);
+    ASSERT_LT(spp, 100000000);
+    EXPECT_NE(out().find(" " + std::to_string(spp) + " spp"), std::string::npos) << out();
+    const mvpl::Image got = mvpl::read_exr((m_dir / "r.exr").string());
+    const mvpl::Image want = reference_image(m_dir, args, spp, "want.exr");
+    ASSERT_EQ(got.pixels().size(), want.pixels().size());
+    for (size_t i = 0; i < got.pixels().size(); ++i)
+        ASSERT_EQ(got.pixels()[i], want.pixels()[i]) << i;
+}
+
+TEST_F(Interrupt, SigtermEndsAReference) {
+    start("reference " + shell_quote(kScene) + " --res 16x16 --spp 100000000 -o r.exr");
+    ASSERT_TRUE(wait_for_progress("reference: ")) << err();
+    kill(m_pid, SIGTERM);
+    EXPECT_EQ(wait_exit(60.0), 143) << err();
+    expect_lit_image(m_dir / "r.exr");
+    EXPECT_EQ(temporaries(), 0);
+}
+
+// 1024² at one sample per chunk (a chunk is at least one sample per pixel): the chunk in flight
+// lasts seconds, well past the second signal.
+TEST_F(Interrupt, ASecondSignalEndsAReferenceWithoutAPartialFile) {
+    start("reference " + shell_quote(kScene) + " --res 1024x1024 --spp 1000 -o r.exr");
+    ASSERT_TRUE(wait_for_progress("reference: ")) << err();
+    kill(m_pid, SIGINT);
+    std::this_thread::sleep_for(std::chrono::milliseconds(30));
+    kill(m_pid, SIGINT);
+    EXPECT_EQ(wait_exit(10.0), 130) << err();
     EXPECT_FALSE(fs::exists(m_dir / "r.exr"));
+    EXPECT_EQ(temporaries(), 0);
 }
 
 // --write-every: the outputs rewritten between chunks (here after every chunk but the last of
@@ -189,6 +240,34 @@ TEST(WriteEvery, RewritesTheOutputsBetweenChunksAndLeavesTheImageAsItWas) {
     mvpl::test::expect_one_line_error(
         mvpl::test::run_mvpl(common + shell_quote((dir / "c.exr").string()) + " --write-every -1"),
         "--write-every");
+    fs::remove_all(dir);
+}
+
+// The same for the reference: the first chunk is one sample, so 64 make at least two chunks and
+// a checkpoint of fewer samples; the final image is the one without checkpoints, to the bit.
+TEST(WriteEvery, RewritesTheReferenceBetweenChunksAndLeavesTheImageAsItWas) {
+    const fs::path dir =
+        fs::temp_directory_path() / ("mvpl_write_every_ref_" + std::to_string(getpid()));
+    fs::create_directories(dir);
+    const std::string common = "reference " + shell_quote(kScene) + " --res 16x16 --spp 64 -o ";
+    const auto plain = mvpl::test::run_mvpl(common + shell_quote((dir / "a.exr").string()));
+    ASSERT_EQ(plain.exit_code, 0) << plain.err;
+    const auto every = mvpl::test::run_mvpl(common + shell_quote((dir / "b.exr").string()) +
+                                            " --write-every 1e-6");
+    ASSERT_EQ(every.exit_code, 0) << every.err;
+    const size_t at = every.out.find("reference: wrote the image of ");
+    ASSERT_NE(at, std::string::npos) << every.out;
+    EXPECT_LT(std::stoi(every.out.substr(at + 30)), 64) << every.out;
+    EXPECT_EQ(plain.out.find("so far"), std::string::npos) << plain.out;
+    const mvpl::Image a = mvpl::read_exr((dir / "a.exr").string());
+    const mvpl::Image b = mvpl::read_exr((dir / "b.exr").string());
+    ASSERT_EQ(a.pixels().size(), b.pixels().size());
+    for (size_t i = 0; i < a.pixels().size(); ++i)
+        ASSERT_EQ(a.pixels()[i], b.pixels()[i]) << i;
+    EXPECT_EQ(mvpl::read_exr_file((dir / "b.exr").string()).attribute("mvpl/spp"), "64");
+    mvpl::test::expect_one_line_error(
+        mvpl::test::run_mvpl(common + shell_quote((dir / "c.exr").string()) + " --write-every -1"),
+        "reference: --write-every");
     fs::remove_all(dir);
 }
 

@@ -1,7 +1,7 @@
 """The installed Python module against the installed `mvpl` (issue 34): the same image as `mvpl
 render` for the same scene, seed and VPLs, arrays of the right shape and dtype, bad input raising
 ValueError with the command line's one line, compare() equal to `mvpl compare --json`, Ctrl-C and
-a failing progress callback ending a render.
+a failing progress callback ending a render or a reference.
 
 usage: PYTHONPATH=PREFIX/lib/python3.X/dist-packages python3 test_module.py MVPL_EXE ASSETS_DIR
 """
@@ -11,6 +11,8 @@ import signal
 import subprocess
 import sys
 import tempfile
+import threading
+import time
 import unittest
 
 import numpy as np
@@ -101,6 +103,36 @@ class ModuleTest(unittest.TestCase):
         self.assertEqual(image.shape, (6, 8, 3))
         self.assertEqual(image.dtype, np.float32)
         self.assertGreater(float(image.mean()), 0.0)
+
+    def test_reference_equals_the_command_line(self):
+        # Traced in chunks sized by the clock, in both: the image does not depend on them.
+        exr = os.path.join(self.folder.name, "reference.exr")
+        args = ["--res", "16x16", "--spp", "48", "--seed", "3"]
+        self.assertEqual(run_mvpl("reference", SCENE, *args, "--quiet", "-o", exr).returncode, 0)
+        shares = []
+        image, layers = mvpl.reference(self.scene, res=(16, 16), spp=48, seed=3,
+                                       aovs=("albedo", "depth"), progress=shares.append)
+        self.assertEqual(mvpl.compare(image, exr)["RMSE"], 0.0)
+        self.assertGreater(mvpl.compare(mvpl.reference(self.scene, res=(16, 16), spp=48, seed=4),
+                                        exr)["RMSE"], 0.0)
+        self.assertEqual(shares[-1], 1.0)
+        self.assertEqual(shares, sorted(shares))
+        self.assertEqual(layers["albedo"].shape, (16, 16, 3))
+        self.assertEqual(layers["depth"].shape, (16, 16, 1))
+        self.assertGreater(float(layers["depth"][8, 8, 0]), 0.0)
+        with self.assertRaises(ValueError):
+            mvpl.reference(self.scene, write_every=1)
+
+    def test_ctrl_c_ends_a_reference_after_the_chunk_in_flight(self):
+        # A real SIGINT while the tracer runs with the GIL released: KeyboardInterrupt once the
+        # chunk in flight (about half a second) is done, where the whole would take hours.
+        timer = threading.Timer(0.5, os.kill, (os.getpid(), signal.SIGINT))
+        start = time.monotonic()
+        timer.start()
+        with self.assertRaises(KeyboardInterrupt):
+            mvpl.reference(self.scene, res=(8, 8), spp=10**9)
+        timer.join()
+        self.assertLess(time.monotonic() - start, 30.0)
 
     def test_bad_input_raises_the_command_lines_line(self):
         cases = [

@@ -287,6 +287,17 @@ void add_seed_option(ArgParser& parser, uint64_t& seed) {
     parser.add_uint64("--seed", &seed, "random seed; the same seed gives the same result");
 }
 
+void add_write_every_option(ArgParser& parser, float& seconds, const std::string& command) {
+    parser.add_float("--write-every", &seconds,
+                     "rewrite every -o with the image so far every SEC seconds, between chunks "
+                     "(0: only at the end)",
+                     "SEC");
+    parser.add_check([&seconds, command] {
+        if (!(seconds >= 0.0f && seconds <= 1e6f))
+            throw UsageError(command + ": --write-every must be in [0, 1e6] seconds");
+    });
+}
+
 void add_camera_options(ArgParser& parser, CameraArgs& args) {
     parser.begin_group("Camera");
     parser.add_int("--camera", &args.camera,

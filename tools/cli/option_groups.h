@@ -113,6 +113,9 @@ void add_max_depth_option(ArgParser& parser, int& max_depth);
 void add_device_option(ArgParser& parser, int& device, const std::string& help,
                        const std::string& value_name = "N");
 void add_seed_option(ArgParser& parser, uint64_t& seed);
+// --write-every SEC (render, reference): rewrite the outputs between chunks (checkpoints.h); its
+// check's message names `command`.
+void add_write_every_option(ArgParser& parser, float& seconds, const std::string& command);
 
 // --camera N, --look-at EX,EY,EZ,TX,TY,TZ[,UX,UY,UZ], --fov DEG: which camera to render from.
 struct CameraArgs {

@@ -11,6 +11,7 @@ void add_reference_options(ArgParser& parser, ReferenceArgs& a) {
     parser.add_int("--spp", &a.options.spp, "samples per pixel");
     parser.add_resolution("--res", &a.options.width, &a.options.height, "image size");
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png", "FILE");
+    add_write_every_option(parser, a.write_every, "reference");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
     add_aov_option(parser, &a.aov_list, &a.outputs);
     parser.add_int("--threads", &a.threads, "worker threads (0 = all cores)");

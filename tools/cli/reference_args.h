@@ -17,6 +17,7 @@ struct ReferenceArgs {
     std::vector<std::string> outputs;
     std::string aov_list;  // --aov (exr_outputs.h)
     float exposure = 0.0f;
+    float write_every = 0.0f;  // --write-every SEC (0: only at the end)
     int threads = 0;
     CameraArgs camera;
     EnvironmentArgs environment;

@@ -15,10 +15,7 @@ void add_render_options(ArgParser& parser, RenderArgs& a) {
     parser.add_float("--time-budget", &a.time_budget,
                      "seconds of sampling + shading: render as many VPLs as fit (overrides --vpls)",
                      "SEC");
-    parser.add_float("--write-every", &a.write_every,
-                     "rewrite every -o with the image so far every SEC seconds, between chunks "
-                     "(0: only at the end)",
-                     "SEC");
+    add_write_every_option(parser, a.write_every, "render");
     parser.add_flag("--qmc", &a.qmc,
                     "mc: Halton primary samples, randomly shifted by the seed (the default)");
     parser.add_flag("--random-paths", &a.random_paths,
@@ -65,8 +62,6 @@ void add_render_options(ArgParser& parser, RenderArgs& a) {
             throw UsageError("render: --vpl-per-path must be all or one");
         if (a.paths < 1 || a.paths > (uint64_t(1) << 32))
             throw UsageError("render: --vpls must be in 1..2^32");
-        if (!(a.write_every >= 0.0f && a.write_every <= 1e6f))
-            throw UsageError("render: --write-every must be in [0, 1e6] seconds");
         if (!(a.time_budget >= 0.0f && a.time_budget <= 1e6f))
             throw UsageError("render: --time-budget must be in [0, 1e6] seconds");
     });

@@ -12,6 +12,7 @@
 #include "engine/core/interrupt.h"
 #include "engine/core/progress.h"
 #include "engine/core/timer.h"
+#include "tools/cli/checkpoints.h"
 #include "tools/cli/render_chunks.h"
 
 namespace mvpl::cli {
@@ -49,23 +50,17 @@ bool root_decides(const RenderJob& job, bool answer) {
     return v[0] > 0.0;
 }
 
-// --write-every: the estimate so far handed to the job's checkpoint between chunks, once its
-// seconds have passed since the last one.
-class Checkpoints {
-public:
-    explicit Checkpoints(const RenderJob& job) : m_job(job) {}
-    void after_chunk(integrator::VplIntegrator& run, bool last) {
-        if (m_job.write_every <= 0.0 || last) return;  // the last one is the final write
-        if (!root_decides(m_job, m_since.seconds() >= m_job.write_every)) return;
-        const Image image = run.image();
-        if (m_job.checkpoint && !image.pixels().empty()) m_job.checkpoint(image, run.stats().vpls);
-        m_since.reset();
-    }
+// --write-every (checkpoints.h): rank 0's clock decides for every rank, since image() is
+// collective.
+Checkpoints make_checkpoints(const RenderJob& job) {
+    return Checkpoints(job.write_every, [&job](bool due) { return root_decides(job, due); });
+}
 
-private:
-    const RenderJob& m_job;
-    Timer m_since;
-};
+// The estimate so far handed to the job's checkpoint (rank 0 writes it).
+void write_checkpoint(const RenderJob& job, integrator::VplIntegrator& run) {
+    const Image image = run.image();
+    if (job.checkpoint && !image.pixels().empty()) job.checkpoint(image, run.stats().vpls);
+}
 
 RenderOutcome outcome_of(integrator::VplIntegrator& run) {
     RenderOutcome result;
@@ -82,7 +77,7 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
     integrator::VplIntegrator& run = begin(job, integrator::Pacing::Fixed);
     warn_if_unlit(job, run);
     Progress progress("render", int64_t(std::min<uint64_t>(units, INT64_MAX)), job.quiet);
-    Checkpoints checkpoints(job);
+    Checkpoints checkpoints = make_checkpoints(job);
     // Chunk by chunk, so that memory does not grow with `units`: the same VPLs as at once (the
     // Monte Carlo stream's blocks are aligned to path indices, and a chunk is a whole number of
     // them), summed in another order.
@@ -92,7 +87,7 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
         const uint64_t work = std::min(chunk, units - done);
         run.advance(work);
         done += work;
-        checkpoints.after_chunk(run, done >= units);
+        checkpoints.after_chunk(done >= units, [&] { write_checkpoint(job, run); });
         progress.set_status(run.stream().statistics());
         progress.advance(int64_t(work));
     }
@@ -108,7 +103,7 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     const int64_t tenths = int64_t(std::ceil(seconds * 10.0));
     int64_t shown = 0;
     Progress progress("render", tenths, job.quiet);
-    Checkpoints checkpoints(job);
+    Checkpoints checkpoints = make_checkpoints(job);
     const uint64_t first = uint64_t(job.estimate.render.batch);
     // Over ranks, rank 0's clock decides for all, so that they stop together and agree on each
     // chunk's size (every rank traces its share of it).
@@ -130,7 +125,7 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
     for (double t = elapsed(); !run.unlit() && t < seconds && !any_rank_interrupted(job);
          t = elapsed()) {
         run.advance(next_chunk(run.stream().work_done(), t, seconds - t, first, chunk_seconds[0]));
-        checkpoints.after_chunk(run, false);
+        checkpoints.after_chunk(false, [&] { write_checkpoint(job, run); });
         progress.set_status(run.stream().statistics());
         const int64_t now = std::min(tenths, int64_t(budget.seconds() * 10.0));
         progress.advance(now - shown);
