@@ -7,7 +7,6 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
-#include <ostream>
 #include <string>
 
 #include "engine/light/light_sampler.h"
@@ -26,14 +25,11 @@ namespace {
 using KeptShadowMapsTest = gpu::testing::GpuTest;
 
 struct Case {
+    std::string name;
     std::string scene;
     float scale = 1.0f;  // applied to every vertex, light and camera
     uint32_t interleave = 1;
 };
-
-void PrintTo(const Case& c, std::ostream* os) {
-    *os << c.scene << " scaled " << c.scale << ", interleave " << c.interleave;
-}
 
 struct Loaded {
     scene::Scene scene;
@@ -115,18 +111,20 @@ TEST_P(KeptAcrossAMove, TheNewViewEqualsFreshlyDrawnCubes) {
     EXPECT_LT(kept.timings().shadow_texels, fresh.timings().shadow_texels);
 }
 
-INSTANTIATE_TEST_SUITE_P(Scenes, KeptAcrossAMove,
-                         ::testing::Values(Case{"cornell-box/cbox.gltf"},
-                                           Case{"cornell-box/cbox.gltf", 1e-3f, 2},
-                                           Case{"two-room/two-room.gltf"},
-                                           Case{"two-room/two-room.gltf", 1e3f, 2}));
+INSTANTIATE_TEST_SUITE_P(
+    Scenes, KeptAcrossAMove,
+    ::testing::Values(Case{"CornellBox", "cornell-box/cbox.gltf"},
+                      Case{"CornellBoxTinyInterleaved", "cornell-box/cbox.gltf", 1e-3f, 2},
+                      Case{"TwoRooms", "two-room/two-room.gltf"},
+                      Case{"TwoRoomsHugeInterleaved", "two-room/two-room.gltf", 1e3f, 2}),
+    [](const ::testing::TestParamInfo<Case>& info) { return info.param.name; });
 
 // A budget of five cubes: replaying the same VPLs keeps the first five (a cube used in the
 // current estimate is never evicted), and a new set of VPLs (another seed: a new Metropolis
 // chain) takes the places of the old set's cubes in its first estimate and finds them in its
 // second. The images stay those of freshly drawn cubes.
 TEST_F(KeptShadowMapsTest, ABudgetKeepsTheFirstCubesAndNewVplsEvictOldOnes) {
-    const Case c{"cornell-box/cbox.gltf"};
+    const Case c{"CornellBox", "cornell-box/cbox.gltf"};
     const Loaded first = load(c, 5), second = load(c, 6);
     const uint64_t budget = 5 * KeptShadowMaps::cube_bytes(64) + 100;
     RenderOptions o = options(c, budget);
