@@ -132,8 +132,10 @@ private:
     float m_exposure;
     bool m_clamping = true;
     bool m_quit = false;
-    bool m_moved = true;        // restart the sum before the next frame
-    bool m_motion_sum = false;  // the current sum is a moving frame's (coarse, or Monte Carlo)
+    bool m_moved = true;  // restart the sum before the next frame
+    // The current sum was started while the camera moved: coarse, or Monte Carlo, and without
+    // the CPU estimators; the first frame at rest starts the resting sum.
+    bool m_motion_sum = false;
     bool m_screenshot_key = false;
     uint32_t m_render_width = 0, m_render_height = 0;  // the current sum's
     uint32_t m_window_width = 0, m_window_height = 0;  // framebuffer the sum was started for
@@ -148,7 +150,6 @@ private:
     MoveRecovery m_recovery;
     uint64_t m_resting_vpls = 0;  // in the sum of the last frame at rest
     uint64_t m_catch_up = 0;      // VPLs the next frame shades before presenting
-    bool m_was_moving = false;    // the previous frame restarted the sum
     Timer m_hud_timer;
     bool m_hud_dirty = true;
 };
@@ -261,7 +262,7 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     if (moving) m_chain.reset();  // its target was what the old view saw
     if (chain && !moving && !m_chain) m_chain = make_history(m_sampler, ro);
     m_history = chain && !moving ? m_chain.get() : m_mc_history.get();
-    m_motion_sum = moving && (divisor > 1 || chain);
+    m_motion_sum = moving;
     integrator::Estimate e = estimate(ro, m_sampler);
     e.compensate = e.compensate && !moving;
     e.caustics = e.caustics && !moving;
@@ -381,10 +382,9 @@ int PreviewApp::run(const Timer& start) {
         const bool refine = !moving && m_motion_sum;
         const Timer phase;
         if (moving || refine) restart(width, height, moving ? m_motion_divisor : 1, moving);
-        if (!moving && m_was_moving && m_options.catch_up_seconds > 0.0)
+        if (refine && m_options.catch_up_seconds > 0.0)
             m_catch_up =
                 uint64_t(std::ceil(MoveRecovery::kRecoveredShare * double(m_resting_vpls)));
-        m_was_moving = moving;
         const double restarted = phase.seconds();
         render_work();
         const double shaded = phase.seconds();
