@@ -47,7 +47,7 @@ void add_timings(RenderTimings& sum, const RenderTimings& t) {
     sum.g_buffers += t.g_buffers;
     sum.chain_ms += t.chain_ms;
     sum.chain_rays += t.chain_rays;
-    sum.kept_cubes += t.kept_cubes;
+    sum.kept_maps += t.kept_maps;
 }
 
 void run_on_devices(uint32_t devices, const std::function<void(uint32_t)>& work) {

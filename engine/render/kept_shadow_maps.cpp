@@ -13,19 +13,21 @@ namespace {
 
 using LayerCopies = std::map<uint32_t, std::vector<gpu::CommandList::LayerCopy>>;
 
-uint32_t capacity_of(uint64_t budget_bytes, uint32_t resolution) {
-    const uint64_t cubes = budget_bytes / KeptShadowMaps::cube_bytes(resolution);
-    return uint32_t(std::min<uint64_t>(cubes, UINT32_MAX));
+uint32_t capacity_of(uint64_t budget_bytes, bool directional, uint32_t resolution) {
+    const uint64_t maps = budget_bytes / KeptShadowMaps::map_bytes(directional, resolution);
+    return uint32_t(std::min<uint64_t>(maps, UINT32_MAX));
 }
 
 }  // namespace
 
-KeptShadowMaps::KeptShadowMaps(gpu::Context& context, uint32_t resolution, uint32_t cubes_per_pool,
-                               uint64_t budget_bytes)
+KeptShadowMaps::KeptShadowMaps(gpu::Context& context, bool directional, uint32_t resolution,
+                               uint32_t maps_per_pool, uint64_t budget_bytes)
     : m_context(&context),
+      m_directional(directional),
+      m_layers(directional ? 1 : 6),
       m_resolution(resolution),
-      m_cubes_per_pool(std::max(cubes_per_pool, 1u)),
-      m_capacity(capacity_of(budget_bytes, resolution)) {}
+      m_maps_per_pool(std::max(maps_per_pool, 1u)),
+      m_capacity(capacity_of(budget_bytes, directional, resolution)) {}
 
 size_t KeptShadowMaps::KeyHash::operator()(const Key& key) const {
     // FNV-1a over the key's words.
@@ -42,20 +44,22 @@ KeptShadowMaps::Key KeptShadowMaps::key_of(const light::Vpl& vpl) {
              std::bit_cast<uint32_t>(vpl.normal.z), vpl.path_length}};
 }
 
-void KeptShadowMaps::reserve(uint32_t cubes) {
-    const uint64_t wanted = std::min<uint64_t>(uint64_t(m_index.size()) + cubes, m_capacity);
+void KeptShadowMaps::reserve(uint32_t maps) {
+    const uint64_t wanted = std::min<uint64_t>(uint64_t(m_index.size()) + maps, m_capacity);
     while (m_slots.size() < wanted) {
-        // A pool holds m_cubes_per_pool places (the last one fewer, within the budget).
+        // A pool holds m_maps_per_pool places (the last one fewer, within the budget).
         const uint32_t places =
-            std::min<uint32_t>(m_cubes_per_pool, m_capacity - uint32_t(m_slots.size()));
+            std::min<uint32_t>(m_maps_per_pool, m_capacity - uint32_t(m_slots.size()));
         const gpu::ImageDesc desc{m_resolution,
                                   m_resolution,
-                                  6 * m_cubes_per_pool,
+                                  m_layers * m_maps_per_pool,
                                   gpu::Format::r32_float,
                                   gpu::ImageUsage::storage,
                                   false};
-        m_pools.emplace_back(*m_context, desc,
-                             "kept shadow cubes " + std::to_string(m_pools.size()));
+        m_pools.emplace_back(
+            *m_context, desc,
+            std::string(m_directional ? "kept orthographic maps " : "kept shadow cubes ") +
+                std::to_string(m_pools.size()));
         m_slots.resize(m_slots.size() + places);
     }
 }
@@ -78,29 +82,30 @@ int64_t KeptShadowMaps::place() {
 }
 
 std::vector<bool> KeptShadowMaps::restore(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
-                                          const std::vector<bool>& skip, gpu::Image& cubes) {
+                                          const std::vector<bool>& skip, gpu::Image& maps) {
     std::vector<bool> restored(batch.size(), false);
     LayerCopies copies;  // per pool
     for (uint32_t i = 0; i < batch.size(); ++i) {
-        if ((!skip.empty() && skip[i]) || batch[i].type == light::VplType::Directional) continue;
+        if ((!skip.empty() && skip[i]) || !holds(batch[i])) continue;
         const auto found = m_index.find(key_of(batch[i]));
         if (found == m_index.end()) continue;
         const uint32_t slot = found->second;
         m_slots[slot].last_used = m_estimate;
-        copies[slot / m_cubes_per_pool].push_back({6 * (slot % m_cubes_per_pool), 6 * i, 6});
+        copies[slot / m_maps_per_pool].push_back(
+            {m_layers * (slot % m_maps_per_pool), m_layers * i, m_layers});
         restored[i] = true;
         ++m_restored;
     }
     for (const auto& [pool, regions] : copies)
-        cmd.copy_image_layers(m_pools[pool], cubes, regions);
+        cmd.copy_image_layers(m_pools[pool], maps, regions);
     return restored;
 }
 
 void KeptShadowMaps::keep(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
-                          const std::vector<bool>& drawn, const gpu::Image& cubes) {
+                          const std::vector<bool>& drawn, const gpu::Image& maps) {
     LayerCopies copies;  // per pool
     for (uint32_t i = 0; i < batch.size(); ++i) {
-        if (!drawn[i] || batch[i].type == light::VplType::Directional) continue;
+        if (!drawn[i] || !holds(batch[i])) continue;
         const Key key = key_of(batch[i]);
         if (m_index.count(key)) continue;  // the same VPL twice in a batch
         const int64_t slot = place();
@@ -108,11 +113,11 @@ void KeptShadowMaps::keep(gpu::CommandList& cmd, std::span<const light::Vpl> bat
         Slot& s = m_slots[size_t(slot)];
         s = {key, m_estimate, true};
         m_index[key] = uint32_t(slot);
-        copies[uint32_t(slot) / m_cubes_per_pool].push_back(
-            {6 * i, 6 * (uint32_t(slot) % m_cubes_per_pool), 6});
+        copies[uint32_t(slot) / m_maps_per_pool].push_back(
+            {m_layers * i, m_layers * (uint32_t(slot) % m_maps_per_pool), m_layers});
     }
     for (const auto& [pool, regions] : copies)
-        cmd.copy_image_layers(cubes, m_pools[pool], regions);
+        cmd.copy_image_layers(maps, m_pools[pool], regions);
 }
 
 }  // namespace mvpl::render

@@ -1,20 +1,21 @@
 #pragma once
-// Shadow cubes kept beyond their batch. A VPL's cube holds the distance from the VPL to the
-// nearest surface in every direction: it depends on the VPL and the scene, never on the camera.
-// So when the same VPL is shaded again against another G-buffer (the preview after a camera
-// move replays its VPLs: tools/preview/vpl_history.h), its cube is copied back from here instead
-// of being drawn again. Copies are exact, so an image shaded with kept cubes equals the one
-// shaded with freshly drawn cubes.
+// Shadow maps kept beyond their batch. A VPL's cube (or a directional VPL's orthographic map)
+// holds the distance from the VPL to the nearest surface: it depends on the VPL and the scene,
+// never on the camera. So when the same VPL is shaded again against another G-buffer (the
+// preview after a camera move replays its VPLs: tools/preview/vpl_history.h), its map is copied
+// back from here instead of being drawn again. Copies are exact, so an image shaded with kept
+// maps equals the one shaded with freshly drawn maps.
 //
-// A VPL is recognised by what its cube depends on (shadow_pass.h): its type, position, normal
-// (faces behind it are skipped, hemicube.h) and path length (shadow proxies), bit for bit.
-// Directional VPLs' orthographic maps are not kept (a sun is one VPL, cheap to draw again).
+// A VPL is recognised by what its map depends on (shadow_pass.h): its type, position, normal
+// (faces behind it are skipped, hemicube.h; a directional map's frame) and path length (shadow
+// proxies), bit for bit. One KeptShadowMaps holds one kind: the cubes (6 layers a map) of
+// point-like VPLs, or the orthographic maps (1 layer) of directional ones.
 //
-// Memory: at most `budget_bytes` of R32F cubes, in pools of `cubes_per_pool` cubes allocated as
-// they fill. Eviction: a new cube takes a free place, or else the place of the cube used least
-// recently before the current estimate (new_estimate()); a cube used in the current estimate is
+// Memory: at most `budget_bytes` of R32F layers, in pools of `maps_per_pool` maps allocated as
+// they fill. Eviction: a new map takes a free place, or else the place of the map used least
+// recently before the current estimate (new_estimate()); a map used in the current estimate is
 // never evicted, so replaying the same VPLs from the start keeps the first that fit and draws the
-// others each time, and the cubes of VPLs no longer shaded (a dropped Metropolis chain) give way
+// others each time, and the maps of VPLs no longer shaded (a dropped Metropolis chain) give way
 // to new ones. Vulkan-free to include.
 #include <cstdint>
 #include <span>
@@ -31,36 +32,47 @@ class Context;
 
 namespace mvpl::render {
 
-// The preview's budget (--kept-maps): 1 GiB holds 682 cubes of 256² (the default shadow
-// resolution), about what the Cornell box at 512² shades in 3 s of rest on two lavapipe cores.
+// The preview's budget (--kept-maps), shared by the cubes and the orthographic maps in
+// proportion to their layers (ShadowPass): 1 GiB holds 585 cubes and 585 orthographic maps of
+// 256² (the default shadow resolution), more than the Cornell box at 512² shades in 3 s of rest
+// on two lavapipe cores.
 constexpr uint64_t kDefaultKeptBytes = 1ull << 30;
+
+// What the kept maps of a renderer hold (VplRenderer::kept_maps()), both kinds together.
+struct KeptMapStats {
+    uint32_t maps = 0;      // held now
+    uint32_t capacity = 0;  // the budget's (0: none kept)
+    uint64_t restored = 0;  // copied back instead of drawn, since the renderer was built
+};
 
 class KeptShadowMaps {
 public:
-    KeptShadowMaps(gpu::Context& context, uint32_t resolution, uint32_t cubes_per_pool,
-                   uint64_t budget_bytes);
+    // directional: the orthographic maps of directional VPLs; else the cubes of the others.
+    KeptShadowMaps(gpu::Context& context, bool directional, uint32_t resolution,
+                   uint32_t maps_per_pool, uint64_t budget_bytes);
 
-    static uint64_t cube_bytes(uint32_t resolution) {
-        return 6ull * resolution * resolution * sizeof(float);
+    static uint64_t map_bytes(bool directional, uint32_t resolution) {
+        return (directional ? 1ull : 6ull) * resolution * resolution * sizeof(float);
     }
-    // How many cubes the budget holds.
+    // How many maps the budget holds.
     uint32_t capacity() const { return m_capacity; }
     uint32_t size() const { return uint32_t(m_index.size()); }
-    // Cubes copied back by restore() since construction.
+    // Maps copied back by restore() since construction.
     uint64_t restored() const { return m_restored; }
 
     // Starts a new estimate (VplRenderer::begin): cubes used before it may be evicted.
     void new_estimate() { ++m_estimate; }
-    // Allocates the pools that `cubes` more cubes need, within the budget: before the recording
+    // Allocates the pools that `maps` more maps need, within the budget: before the recording
     // of the batch that keeps them (images are created outside command recording).
-    void reserve(uint32_t cubes);
-    // Copies the kept cubes of batch's VPLs (those without skip[i]) into cube i of `cubes`
-    // (layers 6i … 6i + 5); returns which were copied.
+    void reserve(uint32_t maps);
+    // Copies the kept maps of batch's VPLs of this kind (those without skip[i]) into map i of
+    // `maps` (layers L·i … L·i + L − 1, L layers a map); returns which were copied.
     std::vector<bool> restore(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
-                              const std::vector<bool>& skip, gpu::Image& cubes);
-    // Keeps cube i of `cubes` for batch[i] where drawn[i] (after the draws, behind a barrier).
+                              const std::vector<bool>& skip, gpu::Image& maps);
+    // Keeps map i of `maps` for batch[i] of this kind where drawn[i] (after the draws, behind a
+    // barrier).
     void keep(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
-              const std::vector<bool>& drawn, const gpu::Image& cubes);
+              const std::vector<bool>& drawn, const gpu::Image& maps);
 
 private:
     struct Key {
@@ -79,11 +91,15 @@ private:
     // A place for a new cube: a free one in the reserved pools, or the least recently used one
     // that the current estimate has not used; -1 when there is none.
     int64_t place();
-    gpu::Image& pool_of(uint32_t slot) { return m_pools[slot / m_cubes_per_pool]; }
+    bool holds(const light::Vpl& vpl) const {
+        return (vpl.type == light::VplType::Directional) == m_directional;
+    }
 
     gpu::Context* m_context;
+    bool m_directional;
+    uint32_t m_layers;  // a map's
     uint32_t m_resolution;
-    uint32_t m_cubes_per_pool;
+    uint32_t m_maps_per_pool;
     uint32_t m_capacity;
     std::vector<gpu::Image> m_pools;
     std::vector<Slot> m_slots;  // one per place in the allocated pools

@@ -141,8 +141,13 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
           shadow_layout(sizeof(OrthoPush), false), "directional shadow (front faces)")),
       m_near(kNearFraction * std::max(geometry.bounds().diagonal(), 1e-30f)) {
     if (options.kept_bytes > 0) {
-        m_kept = std::make_unique<KeptShadowMaps>(context, options.resolution, options.max_batch,
-                                                  options.kept_bytes);
+        // The budget in proportion to a map's layers: as many orthographic maps as cubes.
+        const uint64_t ortho_bytes = options.kept_bytes / 7;
+        m_kept_cubes =
+            std::make_unique<KeptShadowMaps>(context, false, options.resolution, options.max_batch,
+                                             options.kept_bytes - ortho_bytes);
+        m_kept_ortho = std::make_unique<KeptShadowMaps>(context, true, options.resolution,
+                                                        options.max_batch, ortho_bytes);
     }
     std::vector<bool> masked(geometry.graphs().size(), false);
     for (size_t i = 0; i < masked.size(); ++i)
@@ -234,20 +239,33 @@ void ShadowPass::record(gpu::CommandList& cmd, std::span<const light::Vpl> batch
         throw gpu::GpuError("shadow pass: a batch of " + std::to_string(batch.size()) +
                             " VPLs for " + std::to_string(max_batch()) + " cubes");
     }
-    if (!m_kept) {
+    if (!m_kept_cubes) {
         record_maps(cmd, batch, skip);
         return;
     }
-    // The previous batch's shading has read the cubes (accumulate() waits for each batch).
-    const std::vector<bool> restored = m_kept->restore(cmd, batch, skip, m_cubes);
+    // The previous batch's shading has read the maps (accumulate() waits for each batch).
+    const std::vector<bool> cubes = m_kept_cubes->restore(cmd, batch, skip, m_cubes);
+    const std::vector<bool> ortho = m_kept_ortho->restore(cmd, batch, skip, m_ortho);
     std::vector<bool> draw_skip(batch.size()), drawn(batch.size());
     for (size_t i = 0; i < batch.size(); ++i) {
-        draw_skip[i] = restored[i] || (!skip.empty() && skip[i]);
+        draw_skip[i] = cubes[i] || ortho[i] || (!skip.empty() && skip[i]);
         drawn[i] = !draw_skip[i];
     }
     record_maps(cmd, batch, draw_skip);
     cmd.barrier();
-    m_kept->keep(cmd, batch, drawn, m_cubes);
+    m_kept_cubes->keep(cmd, batch, drawn, m_cubes);
+    m_kept_ortho->keep(cmd, batch, drawn, m_ortho);
+}
+
+KeptMapStats ShadowPass::kept() const {
+    KeptMapStats stats;
+    for (const KeptShadowMaps* kept : {m_kept_cubes.get(), m_kept_ortho.get()}) {
+        if (!kept) continue;
+        stats.maps += kept->size();
+        stats.capacity += kept->capacity();
+        stats.restored += kept->restored();
+    }
+    return stats;
 }
 
 void ShadowPass::record_maps(gpu::CommandList& cmd, std::span<const light::Vpl> batch,

@@ -62,8 +62,8 @@ struct ShadowPassOptions {
     // Area and Surface VPLs draw only the texels of each face that their lit hemisphere can
     // reach (hemicube.h); false: every face that is not wholly behind them, in full.
     bool hemicube = true;
-    // Device memory for cubes kept beyond their batch and copied back when the same VPL comes
-    // again (kept_shadow_maps.h); 0: none kept.
+    // Device memory for cubes and orthographic maps kept beyond their batch and copied back when
+    // the same VPL comes again (kept_shadow_maps.h); 0: none kept.
     uint64_t kept_bytes = 0;
 };
 
@@ -81,19 +81,20 @@ public:
     // Renders the cubes (and the orthographic maps of directional VPLs) of batch, at most
     // max_batch VPLs, into cubes() and ortho_maps(); VPL i's only when skip is empty or
     // skip[i] is false (a VPL the shading pass never looks up: vpl_culling.h). With kept_bytes,
-    // a kept cube is copied instead of drawn, and the cubes drawn are kept where they fit.
+    // a kept map is copied instead of drawn, and the maps drawn are kept where they fit.
     void record(gpu::CommandList& cmd, std::span<const light::Vpl> batch,
                 const std::vector<bool>& skip = {});
     // A new estimate begins (VplRenderer::begin): the kept cubes' eviction order.
     void new_estimate() {
-        if (m_kept) m_kept->new_estimate();
+        if (m_kept_cubes) m_kept_cubes->new_estimate();
+        if (m_kept_ortho) m_kept_ortho->new_estimate();
     }
     // Before recording a batch of `vpls`: the kept cubes' pools it may fill.
     void reserve_kept(size_t vpls) {
-        if (m_kept) m_kept->reserve(uint32_t(vpls));
+        if (m_kept_cubes) m_kept_cubes->reserve(uint32_t(vpls));
+        if (m_kept_ortho) m_kept_ortho->reserve(uint32_t(vpls));
     }
-    // The kept cubes (null without kept_bytes).
-    const KeptShadowMaps* kept() const { return m_kept.get(); }
+    KeptMapStats kept() const;
 
     const gpu::Image& cubes() const { return m_cubes; }
     // Orthographic maps of the directional VPLs (layer = index in the batch; at least 2 layers,
@@ -153,7 +154,9 @@ private:
     std::vector<gpu::Image> m_masked_textures;
     VkDescriptorSet m_masked_set = nullptr;  // this recording's, per pipeline
     VkDescriptorSet m_masked_ortho_set = nullptr;
-    std::unique_ptr<KeptShadowMaps> m_kept;
+    // With kept_bytes: the cubes' and the orthographic maps' (kept_shadow_maps.h).
+    std::unique_ptr<KeptShadowMaps> m_kept_cubes;
+    std::unique_ptr<KeptShadowMaps> m_kept_ortho;
     uint32_t m_vpl_seed = 0;  // VPLs recorded so far: the seed of glTF BLEND's hash
     float m_near = 0.0f;
 };

@@ -208,8 +208,8 @@ uint32_t VplRenderer::devices() const {
     return m_impl->devices();
 }
 
-const KeptShadowMaps* VplRenderer::kept_shadow_maps() const {
-    return m_impl->shadow ? m_impl->shadow->kept() : nullptr;
+KeptMapStats VplRenderer::kept_maps() const {
+    return m_impl->shadow ? m_impl->shadow->kept() : KeptMapStats{};
 }
 
 uint64_t VplRenderer::peak_device_bytes() const {

@@ -32,7 +32,7 @@ class Accel;
 
 namespace mvpl::render {
 
-class KeptShadowMaps;
+struct KeptMapStats;
 
 struct RenderOptions {
     uint32_t width = kDefaultImageWidth;
@@ -62,7 +62,7 @@ struct RenderOptions {
     // Area and Surface VPLs draw only the part of each cube face that their lit hemisphere can
     // reach (hemicube.h); false: whole faces (the A/B of mvpl bench --sweep).
     bool hemicube = true;
-    // Device memory for shadow cubes kept from one begin() to the next and copied back when the
+    // Device memory for shadow maps kept from one begin() to the next and copied back when the
     // same VPL is shaded again (kept_shadow_maps.h: the preview after a camera move); 0: none.
     uint64_t kept_shadow_bytes = 0;
     // Area and Surface VPLs whose lit half-space holds no point of the view are neither drawn
@@ -122,7 +122,7 @@ struct RenderTimings {
     // Host time tracing specular chains (in wall_ms on one device; summed over several).
     double chain_ms = 0.0;
     uint64_t chain_rays = 0;
-    uint64_t kept_cubes = 0;  // shadow cubes copied back instead of drawn (kept_shadow_bytes)
+    uint64_t kept_maps = 0;  // shadow maps copied back instead of drawn (kept_shadow_bytes)
 };
 
 class VplRenderer {
@@ -186,8 +186,8 @@ public:
     const gpu::Image& g_buffer() const;
     gpu::Context& context() const;
     uint32_t devices() const;
-    // Device 0's kept shadow cubes (RenderOptions::kept_shadow_bytes), null without them.
-    const KeptShadowMaps* kept_shadow_maps() const;
+    // Device 0's kept shadow maps (RenderOptions::kept_shadow_bytes; zero without them).
+    KeptMapStats kept_maps() const;
     // The most device memory allocated at once, summed over the devices (MemoryAllocator).
     uint64_t peak_device_bytes() const;
 

@@ -230,7 +230,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
     const uint64_t drawn_before = m.shadow->triangles_drawn();
     const uint64_t front_before = m.shadow->front_only_triangles();
     const uint64_t texels_before = m.shadow->texels_drawn();
-    const uint64_t kept_before = m.shadow->kept() ? m.shadow->kept()->restored() : 0;
+    const uint64_t kept_before = m.shadow->kept().restored;
     std::vector<light::Vpl> kept;
     std::vector<bool> skip;
     for (size_t si = 0; si < slices.size(); ++si) {
@@ -277,7 +277,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
     m.timings.shadow_triangles += m.shadow->triangles_drawn() - drawn_before;
     m.timings.shadow_front_only_triangles += m.shadow->front_only_triangles() - front_before;
     m.timings.shadow_texels += m.shadow->texels_drawn() - texels_before;
-    if (m.shadow->kept()) m.timings.kept_cubes += m.shadow->kept()->restored() - kept_before;
+    m.timings.kept_maps += m.shadow->kept().restored - kept_before;
     m.add_timing(start, timer.milliseconds("shadow"), timer.milliseconds("shading"));
 }
 

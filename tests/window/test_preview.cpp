@@ -234,7 +234,7 @@ TEST(Preview, KeptShadowMapsAfterAnOrbitAndBackEqualTheRender) {
                             shell_quote(window_exr.string()));
         ASSERT_EQ(preview.exit_code, 0) << preview.err;
         const size_t copied = preview.out.find(" copied back");
-        ASSERT_NE(preview.out.find("kept shadow cubes: "), std::string::npos) << preview.out;
+        ASSERT_NE(preview.out.find("kept shadow maps: "), std::string::npos) << preview.out;
         ASSERT_NE(copied, std::string::npos) << preview.out;
         const size_t from = preview.out.rfind("; ", copied);
         EXPECT_GT(std::stoul(preview.out.substr(from + 2, copied - from - 2)), 0u) << preview.out;

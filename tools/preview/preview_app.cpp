@@ -351,14 +351,14 @@ void PreviewApp::save(const std::string& path, bool png_from_display) {
 }
 
 void PreviewApp::print_kept_maps() const {
-    const render::KeptShadowMaps* kept = m_integrator.renderer()->kept_shadow_maps();
-    if (!kept) return;
+    const render::KeptMapStats kept = m_integrator.renderer()->kept_maps();
+    if (kept.capacity == 0) return;
     std::printf(
-        "preview: kept shadow cubes: %u of at most %u (%.0f MiB budget); %llu copied back "
-        "instead of drawn; beyond the budget, cubes of VPLs not shaded since the last "
+        "preview: kept shadow maps: %u of at most %u (%.0f MiB budget); %llu copied back "
+        "instead of drawn; beyond the budget, maps of VPLs not shaded since the last "
         "restart are evicted first\n",
-        kept->size(), kept->capacity(), double(m_options.kept_shadow_bytes) / (1 << 20),
-        (unsigned long long)kept->restored());
+        kept.maps, kept.capacity, double(m_options.kept_shadow_bytes) / (1 << 20),
+        (unsigned long long)kept.restored);
 }
 
 int PreviewApp::run(const Timer& start) {
