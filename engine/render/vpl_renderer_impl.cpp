@@ -103,12 +103,8 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
     const std::string shortfall =
         memory_shortfall(o, context->device_info(), host_memory_bytes(), devices());
     if (!shortfall.empty()) throw UsageError(shortfall);
-    if (!g_buffer || o.width != built_for.width || o.height != built_for.height) {
-        g_buffer = std::make_unique<GBufferPass>(*context, geometry, o.width, o.height, nullptr,
-                                                 nullptr, cache);
-        emission = std::make_unique<EmissionSum>(*context, o.width, o.height);
-        shading.reset();
-    }
+    if (!g_buffer || o.width != built_for.width || o.height != built_for.height)
+        switch_size(o.width, o.height, cache);
     if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
         o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
         o.shadow_proxy != built_for.shadow_proxy || o.shadow_lod != built_for.shadow_lod ||
@@ -125,15 +121,22 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
         so.kept_bytes = o.kept_shadow_bytes;
         shadow = std::make_unique<ShadowPass>(*context, geometry, *clusters, so);
         shading.reset();
+        parked.clear();
     }
-    if (o.surface_vpls != built_for.surface_vpls) shading.reset();
+    if (o.surface_vpls != built_for.surface_vpls) {
+        shading.reset();
+        parked.clear();
+    }
     const bool chained = accel && light::scene_may_chain(*scene, o.chains);
     if (!chained) {
         chains.reset();
     } else if (!chains || chains->width() != o.width || chains->height() != o.height) {
         chains = std::make_unique<ChainLayer>(*context, *scene, *accel, o.width, o.height);
     }
-    if (shading && shading->features().specular_chains != chained) shading.reset();
+    if (shading && shading->features().specular_chains != chained) {
+        shading.reset();
+        parked.clear();
+    }
     if (!shading) {
         ShaderFeatures features = geometry.features(o.surface_vpls);
         features.specular_chains = chained;
@@ -142,12 +145,36 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
     }
     if (o.interleave <= 1) {
         interleave.reset();
-    } else if (!interleave || interleave->k() != o.interleave || o.width != built_for.width ||
-               o.height != built_for.height) {
+    } else if (!interleave || interleave->k() != o.interleave) {  // switch_size: the size
         interleave = std::make_unique<InterleaveFilter>(*context, o.width, o.height, o.interleave);
     }
     if (!o.dump_shaders.empty()) dump_scene_shaders(o.dump_shaders, geometry, o.surface_vpls);
     built_for = o;
+}
+
+void VplRenderer::Impl::switch_size(uint32_t width, uint32_t height,
+                                    const gpu::SpirvCacheOptions& cache) {
+    if (g_buffer) {
+        parked.push_back({built_for.width, built_for.height, std::move(g_buffer),
+                          std::move(emission), std::move(shading), std::move(chains),
+                          std::move(interleave)});
+        if (parked.size() > kParkedSizes) parked.erase(parked.begin());
+    }
+    const auto same = std::find_if(parked.begin(), parked.end(), [&](const SizedPasses& p) {
+        return p.width == width && p.height == height;
+    });
+    if (same != parked.end()) {
+        g_buffer = std::move(same->g_buffer);
+        emission = std::move(same->emission);
+        shading = std::move(same->shading);
+        chains = std::move(same->chains);
+        interleave = std::move(same->interleave);
+        parked.erase(same);
+        return;
+    }
+    g_buffer =
+        std::make_unique<GBufferPass>(*context, geometry, width, height, nullptr, nullptr, cache);
+    emission = std::make_unique<EmissionSum>(*context, width, height);
 }
 
 void VplRenderer::Impl::start(const scene::Camera& camera, const RenderOptions& options) {

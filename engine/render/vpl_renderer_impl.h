@@ -58,6 +58,20 @@ struct VplRenderer::Impl {
     std::unique_ptr<ShadingPass> shading;
     std::unique_ptr<ChainLayer> chains;  // null unless the options and the scene ask for chains
     std::unique_ptr<InterleaveFilter> interleave;  // null without interleaved sampling
+    // The passes above whose images have the image's size, parked for the sizes used before:
+    // the preview switches between its motion and full resolutions, and building them again
+    // costs about 0.5 s on DamagedHelmet under lavapipe (pipelines). Cleared whenever the
+    // passes are rebuilt for another reason (they would be stale).
+    struct SizedPasses {
+        uint32_t width = 0, height = 0;
+        std::unique_ptr<GBufferPass> g_buffer;
+        std::unique_ptr<EmissionSum> emission;
+        std::unique_ptr<ShadingPass> shading;
+        std::unique_ptr<ChainLayer> chains;
+        std::unique_ptr<InterleaveFilter> interleave;
+    };
+    static constexpr size_t kParkedSizes = 4;  // full, and the preview's divisors 2, 3 and 4
+    std::vector<SizedPasses> parked;
     RenderOptions built_for = unbuilt();
     // The progressive state: what begin() set up.
     RenderOptions options;
@@ -118,6 +132,9 @@ struct VplRenderer::Impl {
 
     // Builds the passes these options need, keeping those that still fit.
     void prepare(const RenderOptions& o);
+    // Parks the sized passes of built_for's size and takes those of width × height, parked or
+    // new (the G-buffer and the emission sum; prepare() builds the others that are missing).
+    void switch_size(uint32_t width, uint32_t height, const gpu::SpirvCacheOptions& cache);
 };
 
 }  // namespace mvpl::render

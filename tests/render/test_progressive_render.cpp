@@ -284,6 +284,29 @@ TEST_F(ProgressiveRenderTest, NonFinitePixelsFailTheResolveLoudly) {
     EXPECT_NO_THROW(renderer.resolve(1.0));
 }
 
+// The passes of the sizes used before are parked and taken again (the preview's motion and full
+// resolutions), interleaved so that the interleave filter is parked too: back at a size, the
+// image is the one a new renderer makes, also after a batch change in between (which must not
+// bring back passes built for the old batch).
+TEST_F(ProgressiveRenderTest, PassesParkedForEarlierSizesGiveAFreshRenderersImage) {
+    const CornellBox box;
+    RenderOptions full = small_options(), half = small_options();
+    full.interleave = half.interleave = 2;
+    half.width = half.height = full.width / 2;
+    VplRenderer fresh(context(), box.scene);
+    const Image expected = fresh.render(box.set, full);
+    VplRenderer renderer(context(), box.scene);
+    for (const RenderOptions& o : {full, half, full, half})
+        renderer.render(box.set, o);
+    expect_same_image(renderer.render(box.set, full), expected);
+    RenderOptions other_batch = half;
+    other_batch.batch = 4;
+    renderer.render(box.set, other_batch);
+    full.batch = 4;
+    VplRenderer fresh_batch(context(), box.scene);
+    expect_same_image(renderer.render(box.set, full), fresh_batch.render(box.set, full));
+}
+
 TEST_F(ProgressiveRenderTest, AccumulateBeforeBeginIsAnError) {
     const CornellBox box;
     VplRenderer renderer(context(), box.scene);
