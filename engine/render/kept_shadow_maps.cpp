@@ -44,8 +44,10 @@ KeptShadowMaps::Key KeptShadowMaps::key_of(const light::Vpl& vpl) {
              std::bit_cast<uint32_t>(vpl.normal.z), vpl.path_length}};
 }
 
-void KeptShadowMaps::reserve(uint32_t maps) {
-    const uint64_t wanted = std::min<uint64_t>(uint64_t(m_index.size()) + maps, m_capacity);
+void KeptShadowMaps::reserve(std::span<const light::Vpl> batch) {
+    const auto maps = std::count_if(batch.begin(), batch.end(),
+                                    [&](const light::Vpl& vpl) { return holds(vpl); });
+    const uint64_t wanted = std::min<uint64_t>(m_index.size() + uint64_t(maps), m_capacity);
     while (m_slots.size() < wanted) {
         // A pool holds m_maps_per_pool places (the last one fewer, within the budget).
         const uint32_t places =

@@ -62,9 +62,9 @@ public:
 
     // Starts a new estimate (VplRenderer::begin): cubes used before it may be evicted.
     void new_estimate() { ++m_estimate; }
-    // Allocates the pools that `maps` more maps need, within the budget: before the recording
-    // of the batch that keeps them (images are created outside command recording).
-    void reserve(uint32_t maps);
+    // Allocates the pools that batch's VPLs of this kind may need, within the budget: before the
+    // recording of the batch that keeps them (images are created outside command recording).
+    void reserve(std::span<const light::Vpl> batch);
     // Copies the kept maps of batch's VPLs of this kind (those without skip[i]) into map i of
     // `maps` (layers L·i … L·i + L − 1, L layers a map); returns which were copied.
     std::vector<bool> restore(gpu::CommandList& cmd, std::span<const light::Vpl> batch,

@@ -89,10 +89,10 @@ public:
         if (m_kept_cubes) m_kept_cubes->new_estimate();
         if (m_kept_ortho) m_kept_ortho->new_estimate();
     }
-    // Before recording a batch of `vpls`: the kept cubes' pools it may fill.
-    void reserve_kept(size_t vpls) {
-        if (m_kept_cubes) m_kept_cubes->reserve(uint32_t(vpls));
-        if (m_kept_ortho) m_kept_ortho->reserve(uint32_t(vpls));
+    // Before recording `batch`: the pools of kept maps it may fill.
+    void reserve_kept(std::span<const light::Vpl> batch) {
+        if (m_kept_cubes) m_kept_cubes->reserve(batch);
+        if (m_kept_ortho) m_kept_ortho->reserve(batch);
     }
     KeptMapStats kept() const;
 

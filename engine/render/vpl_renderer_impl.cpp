@@ -268,7 +268,7 @@ void VplRenderer::Impl::accumulate(std::span<const light::Vpl> vpls,
         std::span<const light::Vpl> slice = vpls.subspan(s.first, s.count);
         slice = m.cull(slice, kept, skip);
         m.shading->upload(slice, m.geometry.bounds());
-        m.shadow->reserve_kept(slice.size());
+        m.shadow->reserve_kept(slice);
         if (m.interleave) {
             batch.interleave = options.interleave;
             batch.vpl_offset = index.empty() ? shaded_before + s.first : index[s.first];
