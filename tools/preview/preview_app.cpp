@@ -280,8 +280,15 @@ void PreviewApp::catch_up() {
     const uint64_t target = std::min(m_catch_up, m_replay->vpls_recorded());
     m_catch_up = 0;
     while (m_replay->vpls_total() < target && timer.seconds() < m_options.catch_up_seconds) {
+        // As many units as the rest of the time holds at the frames' measured rate (which drew
+        // their maps: an upper bound on the kept VPLs' cost), so that the last call ends near it.
+        const double left_ms = 1e3 * (m_options.catch_up_seconds - timer.seconds());
+        const uint64_t units =
+            m_ms_per_unit > 0.0
+                ? uint64_t(std::clamp(left_ms / m_ms_per_unit, 1.0, double(kMaxUnitsPerCall)))
+                : 1;
         const uint64_t vpls = m_integrator.stats().vpls;
-        m_integrator.advance(kMaxUnitsPerCall);
+        m_integrator.advance(units);
         m_scale = m_replay->scale();
         m_stats.add_vpls(size_t(m_integrator.stats().vpls - vpls));
     }
