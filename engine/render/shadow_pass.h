@@ -65,6 +65,8 @@ struct ShadowPassOptions {
     // Device memory for cubes and orthographic maps kept beyond their batch and copied back when
     // the same VPL comes again (kept_shadow_maps.h); 0: none kept.
     uint64_t kept_bytes = 0;
+
+    bool operator==(const ShadowPassOptions&) const = default;
 };
 
 class ShadowPass {
@@ -100,6 +102,7 @@ public:
     // Orthographic maps of the directional VPLs (layer = index in the batch; at least 2 layers,
     // so that the view is always a 2D array).
     const gpu::Image& ortho_maps() const { return m_ortho; }
+    const ShadowPassOptions& options() const { return m_options; }
     uint32_t resolution() const { return m_cubes.width(); }
     uint32_t max_batch() const { return m_cubes.layers() / 6; }
     // Surfaces closer than this to a VPL do not shadow (the near plane), relative to the scene.

@@ -97,6 +97,19 @@ void VplRenderer::Impl::add_timing(std::chrono::steady_clock::time_point start, 
     timings.wall_ms += milliseconds_since(start);
 }
 
+ShadowPassOptions shadow_pass_options(const RenderOptions& o) {
+    ShadowPassOptions so;
+    so.resolution = o.shadow_resolution;
+    so.max_batch = o.batch;
+    so.culling = o.shadow_culling;
+    so.proxy = o.shadow_proxy;
+    so.lod = o.shadow_lod;
+    so.front_faces = o.backface_culling;
+    so.hemicube = o.hemicube;
+    so.kept_bytes = o.kept_shadow_bytes;
+    return so;
+}
+
 void VplRenderer::Impl::prepare(const RenderOptions& o) {
     // The program is generated for this scene (shader_program.h); SPIR-V from the disk cache.
     const gpu::SpirvCacheOptions cache{o.shader_cache, {}};
@@ -105,20 +118,8 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
     if (!shortfall.empty()) throw UsageError(shortfall);
     if (!g_buffer || o.width != built_for.width || o.height != built_for.height)
         switch_size(o.width, o.height, cache);
-    if (!shadow || o.shadow_resolution != built_for.shadow_resolution ||
-        o.batch != built_for.batch || o.shadow_culling != built_for.shadow_culling ||
-        o.shadow_proxy != built_for.shadow_proxy || o.shadow_lod != built_for.shadow_lod ||
-        o.backface_culling != built_for.backface_culling || o.hemicube != built_for.hemicube ||
-        o.kept_shadow_bytes != built_for.kept_shadow_bytes) {
-        ShadowPassOptions so;
-        so.resolution = o.shadow_resolution;
-        so.max_batch = o.batch;
-        so.culling = o.shadow_culling;
-        so.proxy = o.shadow_proxy;
-        so.lod = o.shadow_lod;
-        so.front_faces = o.backface_culling;
-        so.hemicube = o.hemicube;
-        so.kept_bytes = o.kept_shadow_bytes;
+    const ShadowPassOptions so = shadow_pass_options(o);
+    if (!shadow || shadow->options() != so) {
         shadow = std::make_unique<ShadowPass>(*context, geometry, *clusters, so);
         shading.reset();
         parked.clear();

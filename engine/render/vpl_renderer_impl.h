@@ -32,6 +32,9 @@ namespace mvpl::render {
 
 double milliseconds_since(std::chrono::steady_clock::time_point start);
 
+// The shadow pass's share of the renderer's options (the pass is rebuilt when it changes).
+ShadowPassOptions shadow_pass_options(const RenderOptions& options);
+
 struct VplRenderer::Impl {
     // Without `build_clusters` the caller hands the clusters over before the first begin()
     // (the devices of one renderer share device 0's: they are read only).
