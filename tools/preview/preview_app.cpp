@@ -103,6 +103,8 @@ private:
     void update_hud(bool force);
     void save(const std::string& path, bool png_from_display);
     void print_kept_maps() const;
+    // After a moving frame of `frame_seconds`: a coarser or finer motion resolution.
+    void adapt_motion_divisor(double frame_seconds);
 
     PreviewOptions m_options;
     session::SceneSession m_session;
@@ -357,6 +359,13 @@ void PreviewApp::save(const std::string& path, bool png_from_display) {
     if (!m_options.quiet) std::printf("preview: wrote %s\n", path.c_str());
 }
 
+void PreviewApp::adapt_motion_divisor(double frame_seconds) {
+    if (frame_seconds > kMovingFrameSeconds && m_motion_divisor < kMaxMotionDivisor)
+        ++m_motion_divisor;
+    else if (frame_seconds < 0.4 * kMovingFrameSeconds && m_motion_divisor > 1)
+        --m_motion_divisor;
+}
+
 void PreviewApp::print_kept_maps() const {
     const render::KeptMapStats kept = m_integrator.renderer()->kept_maps();
     if (kept.capacity == 0) return;
@@ -423,12 +432,7 @@ int PreviewApp::run(const Timer& start) {
             m_stats.frame_presented(seconds, start.seconds(), moved);
             if (moved)
                 m_stats.moving_phases(restarted, shaded - restarted, phase.seconds() - shaded);
-            if (moved && m_options.motion_scaling) {
-                if (seconds > kMovingFrameSeconds && m_motion_divisor < kMaxMotionDivisor)
-                    ++m_motion_divisor;
-                else if (seconds < 0.4 * kMovingFrameSeconds && m_motion_divisor > 1)
-                    --m_motion_divisor;
-            }
+            if (moved && m_options.motion_scaling) adapt_motion_divisor(seconds);
             if (m_screenshot_key) {
                 m_screenshot_key = false;
                 const std::string base = "mvpl-preview-" + std::to_string(m_screenshots++);
