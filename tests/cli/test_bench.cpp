@@ -2,10 +2,10 @@
 // positive, and the derived rates agree with the counts and times they come from; bad flags are
 // usage errors (exit 2, one line).
 #include <gtest/gtest.h>
-
 #include <unistd.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -179,6 +179,38 @@ TEST_F(Bench, RatesAgreeWithCountsAndTimes) {
         expect_consistent_render(j["sweep"][i], paths, "sweep " + std::to_string(i));
     // The device holds at least the RGBA32F accumulation image: 16 bytes a pixel.
     EXPECT_GE(j["memory"]["peak_device_bytes"].get<double>(), 32.0 * 24.0 * 16.0);
+}
+
+// --pool (row-column sampling, engine/manylights): the main render shades each pool's
+// representatives, reported beside the same VPLs shaded one by one; per VPL the rates count the
+// representatives, and the effective rate the VPLs they stand for.
+TEST(BenchRowColumn, ReportsRepresentativesBesideEveryVplShaded) {
+    const std::string json_path = (std::filesystem::temp_directory_path() /
+                                   ("mvpl_bench_rc_" + std::to_string(::getpid()) + ".json"))
+                                      .string();
+    const test::CommandResult r = test::run_mvpl_gpu(
+        "bench " + shell_quote(kCbox) +
+        " --res 32x24 --shadow-res 16 --batch 8 --vpls 64 --repeat 1 --pool 64 --rows 16"
+        " --clusters 8 --quiet --json " +
+        shell_quote(json_path));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(json_path);
+    const json j = json::parse(in);
+    std::filesystem::remove(json_path);
+    const json& main = j["render"];
+    ASSERT_TRUE(main.contains("row_column")) << main.dump();
+    const double vpls = j["light_paths"]["vpls"].get<double>();
+    const double reps = main["row_column"]["representatives"].get<double>();
+    // 64 paths leave more than 64 VPLs: at least two pools of at most 8 representatives each.
+    EXPECT_GT(vpls, 64.0);
+    EXPECT_GE(reps, 2.0);
+    EXPECT_LE(reps, 8.0 * std::ceil(vpls / 64.0));
+    const double seconds = main["end_to_end_s"].get<double>();
+    expect_rel(main["end_to_end_vpls_per_s"], reps / seconds, "representatives/s");
+    expect_rel(main["effective_vpls_per_s"], vpls / seconds, "effective VPL/s");
+    ASSERT_EQ(j["sweep"].size(), 1u);
+    EXPECT_FALSE(j["sweep"][0].contains("row_column"));
+    expect_consistent_render(j["sweep"][0], j["light_paths"], "every VPL");
 }
 
 TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {

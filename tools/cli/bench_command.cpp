@@ -25,6 +25,7 @@
 #include "engine/sampler/recorded_vpl_stream.h"
 #include "tools/cli/arg_parser.h"
 #include "tools/cli/bench_report.h"
+#include "tools/cli/bench_runs.h"
 #include "tools/cli/commands.h"
 #include "tools/cli/option_groups.h"
 #include "tools/session/scene_session.h"
@@ -38,95 +39,6 @@ constexpr int kSweepBatches[] = {8, 16, 32, 64, 128};
 constexpr int kSweepShadowResolutions[] = {128, 256, 512};
 // The interleave the sweep tries when the main configuration has none.
 constexpr int kSweepInterleave = 4;
-
-render::RenderOptions render_options(const BenchConfig& c, float clamp, bool shadows) {
-    render::RenderOptions ro;
-    ro.width = uint32_t(c.width);
-    ro.height = uint32_t(c.height);
-    ro.shadow_resolution = uint32_t(c.shadow_resolution);
-    ro.batch = uint32_t(c.batch);
-    ro.jitter = c.jitter;
-    ro.batches_per_position = uint32_t(std::max(c.batches_per_position, 1));
-    ro.clamp = clamp;
-    ro.shadows = shadows;
-    ro.shadow_culling = c.shadow_culling;
-    ro.shadow_proxy = c.shadow_proxy;
-    ro.shadow_lod = c.shadow_lod;
-    ro.backface_culling = c.backface_culling;
-    ro.interleave = uint32_t(c.interleave);
-    ro.hemicube = c.hemicube;
-    ro.vpl_culling = c.vpl_culling;
-    ro.chains.max_roughness = c.chain_roughness;
-    ro.chains.max_depth = c.max_depth;
-    ro.vsl_radius = c.vsl_radius;
-    return ro;
-}
-
-// The VPLs of mc.paths light paths (this rank's share under mpirun, the ranks sharing the paths
-// as `mvpl render` does), sampled once a repeat and shaded with every configuration.
-sampler::VplRecording sample(const session::SceneSession& session, sampler::MonteCarloOptions mc,
-                             cluster::Cluster& ranks) {
-    if (ranks.size() > 1) mc.cluster = &ranks;
-    sampler::MonteCarloStream stream(session.scene(), session.accel(), session.lights(), mc);
-    return sampler::record(stream, mc.paths);
-}
-
-// The job's GPU times and work, summed over the ranks, so that per VPL they are the job's cost.
-void sum_over_ranks(RenderSample& s, cluster::Cluster& ranks) {
-    std::vector<double> sums{s.g_buffer_ms,
-                             s.shadow_ms,
-                             s.shading_ms,
-                             double(s.batches),
-                             double(s.shadow_triangles),
-                             double(s.g_buffers),
-                             double(s.shadow_front_only_triangles)};
-    ranks.sum_all(sums);
-    s.g_buffer_ms = sums[0];
-    s.shadow_ms = sums[1];
-    s.shading_ms = sums[2];
-    s.batches = uint32_t(sums[3]);
-    s.shadow_triangles = uint64_t(sums[4]);
-    s.g_buffers = uint32_t(sums[5]);
-    s.shadow_front_only_triangles = uint64_t(sums[6]);
-}
-
-// The estimate a configuration renders: the recorded VPLs alone (no compensation, no caustics:
-// bench measures the VPL shading).
-integrator::Estimate estimate_of(const BenchConfig& config, float clamp, bool shadows) {
-    integrator::Estimate e;
-    e.render = render_options(config, clamp, shadows);
-    e.compensate = false;
-    e.caustics = false;
-    return e;
-}
-
-// One progressive render of all VPLs; over ranks, from a meeting of all to rank 0's image.
-RenderSample render_once(integrator::VplIntegrator& integrator, const integrator::SceneView& view,
-                         const sampler::VplRecording& vpls, const integrator::Estimate& estimate,
-                         cluster::Cluster& ranks) {
-    cluster::together(ranks, [] {});
-    Timer wall;
-    integrator.begin(view, estimate, integrator::Pacing::Fixed,
-                     std::make_unique<sampler::RecordedVplStream>(vpls));
-    integrator.advance(vpls.work);
-    const Image image = integrator.image();  // the read-back costs too
-    RenderSample s;
-    s.wall_s = wall.seconds();
-    const render::RenderTimings& t = integrator.renderer()->timings();
-    s.g_buffer_ms = t.g_buffer_ms;
-    s.shadow_ms = t.shadow_ms;
-    s.shading_ms = t.shading_ms;
-    s.batches = t.batches;
-    s.shadow_triangles = t.shadow_triangles;
-    s.shadow_front_only_triangles = t.shadow_front_only_triangles;
-    s.shadow_texels = t.shadow_texels;
-    s.culled_vpls = t.culled_vpls;
-    s.g_buffers = t.g_buffers;
-    s.chain_ms = t.chain_ms;
-    s.chain_rays = t.chain_rays;
-    if (ranks.size() > 1) sum_over_ranks(s, ranks);
-    return s;
-}
 
 uint64_t peak_host_bytes() {
     rusage usage{};
@@ -159,6 +71,7 @@ struct BenchArgs {
     int repeat = 3;
     sampler::MonteCarloOptions mc;
     RendererArgs renderer;
+    ManyLightsArgs many_lights;
     std::string json_path;
     bool sweep = false, quiet = false, no_shadows = false;
     CameraArgs camera;
@@ -181,6 +94,7 @@ void add_options(ArgParser& parser, BenchArgs& a) {
     parser.add_string("--json", &a.json_path, "write the results as JSON to this file", "FILE");
     parser.add_flag("--quiet", &a.quiet, "no progress bar and no table");
     add_renderer_options(parser, a.renderer);
+    add_many_lights_options(parser, a.many_lights);
     add_max_depth_option(parser, a.mc.tracer.max_depth);
     add_seed_option(parser, a.mc.seed);
     add_camera_options(parser, a.camera);
@@ -209,6 +123,7 @@ void configure(BenchArgs& a) {
     config.chain_roughness = r.no_chains ? -1.0f : r.chain_roughness;
     config.max_depth = a.mc.tracer.max_depth;
     config.vsl_radius = r.vsl();
+    config.many_lights = a.many_lights.options();
     a.mc.paths = a.paths;
 }
 
@@ -340,11 +255,19 @@ int run_bench(const Args& args) {
         if (a.paths < 1 || a.paths > (uint64_t(1) << 24))
             throw UsageError("bench: --vpls must be in 1..2^24");
         if (a.repeat < 1 || a.repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
+        if (ranks.size() > 1 && a.config.many_lights.enabled())
+            throw UsageError("bench: --pool runs on one process, not under mpirun");
         if (!a.json_path.empty() && ranks.root()) json_out = open_output(a.json_path);
     });
     size_t devices_sweep = SIZE_MAX;
     std::vector<BenchConfig> sweep =
         a.sweep ? sweep_configs(a.config, &devices_sweep) : std::vector<BenchConfig>{};
+    if (a.config.many_lights.enabled()) {
+        // Row-column sampling against every VPL shaded, with the same VPLs.
+        BenchConfig every_vpl = a.config;
+        every_vpl.many_lights.pool = 0;
+        sweep.push_back(every_vpl);
+    }
 
     BenchReport report;
     report.scene = a.scene_path;

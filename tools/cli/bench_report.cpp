@@ -66,8 +66,15 @@ Json render_json(const RenderResult& r) {
                            {"shading_pixel_vpls_per_s", r.shading_pixel_vpls_per_s},
                            {"render_wall_s", r.median.wall_s},
                            {"end_to_end_s", r.end_to_end_s},
-                           {"end_to_end_vpls_per_s", r.end_to_end_vpls_per_s}};
+                           {"end_to_end_vpls_per_s", r.end_to_end_vpls_per_s},
+                           {"effective_vpls_per_s", r.effective_vpls_per_s}};
     j.update(measured);
+    if (c.many_lights.enabled()) {
+        j["row_column"] = {
+            {"pool", c.many_lights.pool},         {"rows", c.many_lights.rows},
+            {"clusters", c.many_lights.clusters}, {"representatives", r.median.shaded},
+            {"matrix_s", r.median.matrix_s},      {"cluster_s", r.median.cluster_s}};
+    }
     return j;
 }
 
@@ -84,7 +91,11 @@ std::string bench_levers(const BenchConfig& c) {
                      : ", pixel centres") +
            ", chains " + (c.chain_roughness >= 0.0f ? chain_bound(c.chain_roughness) : "off") +
            ", VSL radius " + vsl_radius(c.vsl_radius) + ", " + std::to_string(c.devices) +
-           (c.devices == 1 ? " device" : " devices");
+           (c.devices == 1 ? " device" : " devices") + ", row-column " +
+           (c.many_lights.enabled() ? "pool " + std::to_string(c.many_lights.pool) + ", " +
+                                          std::to_string(c.many_lights.rows) + " rows, " +
+                                          std::to_string(c.many_lights.clusters) + " clusters"
+                                    : std::string("off"));
 }
 
 double BenchReport::paths_per_s() const {
@@ -125,7 +136,11 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
     r.median.shadow_texels = samples.empty() ? 0 : samples.front().shadow_texels;
     r.median.culled_vpls = samples.empty() ? 0 : samples.front().culled_vpls;
     r.median.g_buffers = samples.empty() ? 0 : samples.front().g_buffers;
-    const double n = double(vpls);
+    r.median.shaded = samples.empty() ? 0 : samples.front().shaded;
+    r.median.matrix_s = field(&RenderSample::matrix_s);
+    r.median.cluster_s = field(&RenderSample::cluster_s);
+    // Per VPL shaded: with row-column sampling the representatives.
+    const double n = config.many_lights.enabled() ? double(r.median.shaded) : double(vpls);
     r.shadow_triangles_per_vpl = ratio(double(r.median.shadow_triangles), n);
     r.shadow_front_only_share =
         ratio(double(r.median.shadow_front_only_triangles), double(r.median.shadow_triangles));
@@ -136,6 +151,7 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
         ratio(double(config.width) * double(config.height) * n, r.median.shading_ms * 1e-3);
     r.end_to_end_s = sampling_s + r.median.wall_s;
     r.end_to_end_vpls_per_s = ratio(n, r.end_to_end_s);
+    r.effective_vpls_per_s = ratio(double(vpls), r.end_to_end_s);
     return r;
 }
 
@@ -211,6 +227,15 @@ std::string bench_table(const BenchReport& b) {
                   m.end_to_end_vpls_per_s, double(b.peak_host_bytes) / (1 << 20),
                   double(b.peak_device_bytes) / (1 << 20));
     s += buf;
+    if (m.config.many_lights.enabled()) {
+        std::snprintf(buf, sizeof buf,
+                      "  row-column       %llu representatives of %llu VPLs (matrix %.3f s, "
+                      "clusters %.3f s): %.1f VPL/s effective\n",
+                      static_cast<unsigned long long>(m.median.shaded),
+                      static_cast<unsigned long long>(b.vpls), m.median.matrix_s,
+                      m.median.cluster_s, m.effective_vpls_per_s);
+        s += buf;
+    }
     if (!b.sweep.empty()) {
         s += "\n  batch  shadow  shadow ms/VPL  shading ms/VPL  M pixel·VPL/s  render s   VPL/s  "
              "levers\n";

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "engine/core/image_size.h"
+#include "engine/manylights/row_column_options.h"
 
 namespace mvpl::cli {
 
@@ -31,6 +32,8 @@ struct BenchConfig {
     int max_depth = -1;
     float vsl_radius = 0.0f;  // render::RenderOptions::vsl_radius (0: point VPLs)
     int devices = 1;          // render::VplRenderer::devices
+    // Row-column sampling (--pool, --rows, --clusters): off without a pool.
+    manylights::RowColumnOptions many_lights;
 };
 
 // The levers of issue 14 a configuration uses, for people: "culling on, proxy on, interleave 1".
@@ -50,6 +53,11 @@ struct RenderSample {
     uint32_t g_buffers = 0;                    // one per sub-pixel position
     double chain_ms = 0.0;  // host time tracing specular chains (summed over devices)
     uint64_t chain_rays = 0;
+    // With row-column sampling: the representatives shaded, and the host seconds of the reduced
+    // matrix and of the clustering (in wall_s).
+    uint64_t shaded = 0;
+    double matrix_s = 0.0;
+    double cluster_s = 0.0;
 };
 
 // The medians over the repeats of one configuration, and the rates derived from those medians
@@ -64,7 +72,9 @@ struct RenderResult {
     double shading_ms_per_vpl = 0.0;
     double shading_pixel_vpls_per_s = 0.0;  // width · height · VPLs / shading GPU seconds
     double end_to_end_s = 0.0;              // light-path generation + render wall time
-    double end_to_end_vpls_per_s = 0.0;
+    double end_to_end_vpls_per_s = 0.0;     // VPLs shaded (representatives with a pool)
+    // The VPLs the image estimates (every pool's, with row-column sampling) per end-to-end second.
+    double effective_vpls_per_s = 0.0;
 };
 
 struct BenchReport {
@@ -97,7 +107,8 @@ struct BenchReport {
 // Median of a non-empty list (the mean of the middle two for an even count).
 double median(std::vector<double> values);
 // Medians of each field of the samples, and the derived rates for `vpls` VPLs after
-// `sampling_s` seconds of light-path generation.
+// `sampling_s` seconds of light-path generation (per VPL: per representative shaded, with a
+// pool).
 RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample>& samples,
                        uint64_t vpls, double sampling_s);
 
