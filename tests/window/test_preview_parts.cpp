@@ -4,12 +4,15 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include "engine/core/error.h"
 #include "tools/preview/camera_controller.h"
 #include "tools/preview/present_pass.h"
+#include "tools/preview/screenshot_name.h"
 #include "tools/preview/script.h"
+#include "tools/preview/settings.h"
 #include "tools/preview/window.h"
 
 // The preview's headers, like engine/gpu's, keep Vulkan (and GLFW) to their .cpp files.
@@ -52,6 +55,56 @@ TEST(PreviewScript, ParsesEventsInFrameOrder) {
     fs::remove(path);
 }
 
+TEST(PreviewScript, ParsesSettingsCamerasAndDrops) {
+    const fs::path path = write_file("script_settings",
+                                     "1 set exposure -1.5\n"
+                                     "1 set sampler metropolis\n"
+                                     "1 set env_color 1 0.5 0.25\n"
+                                     "2 camera 3\n"
+                                     "2 fov 45\n"
+                                     "3 drop /some folder/scene.glb  \n");
+    const std::vector<ScriptEvent> events = load_script(path.string());
+    ASSERT_EQ(events.size(), 6u);
+    EXPECT_EQ(events[0].action, "set");
+    EXPECT_EQ(events[0].key, "exposure");
+    EXPECT_EQ(events[0].values, (std::vector<float>{-1.5f}));
+    EXPECT_EQ(events[1].word, "metropolis");
+    EXPECT_EQ(events[2].values, (std::vector<float>{1.0f, 0.5f, 0.25f}));
+    EXPECT_EQ(events[3].values, (std::vector<float>{3.0f}));
+    EXPECT_EQ(events[4].action, "fov");
+    EXPECT_EQ(events[5].word, "/some folder/scene.glb");  // the rest of the line, trimmed
+    fs::remove(path);
+}
+
+// Every setting the script names is one the table holds, once (the panel lists the table).
+TEST(PreviewSettingsTable, NamesAreUniqueAndRangesChecked) {
+    std::set<std::string> names;
+    for (const SettingSpec& s : setting_specs()) {
+        EXPECT_TRUE(names.insert(s.name).second) << s.name;
+        EXPECT_EQ(find_setting(s.name), &s);
+        if (s.values > 0) {
+            EXPECT_EQ(check_setting_value(s, s.min), "") << s.name;
+            EXPECT_NE(check_setting_value(s, s.max + 1.0f), "") << s.name;
+        }
+    }
+    EXPECT_EQ(find_setting("nonesuch"), nullptr);
+}
+
+// Screenshot names: the first number whose .png and .exr are both free, then the next.
+TEST(ScreenshotName, SkipsNumbersInUse) {
+    const fs::path folder = fs::temp_directory_path() / ("shots" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "cbox-0001.png") << "x";
+    std::ofstream(folder / "cbox-0002.exr") << "x";
+    uint32_t number = 1;
+    EXPECT_EQ(next_screenshot(folder, "cbox", &number), folder / "cbox-0003");
+    EXPECT_EQ(number, 4u);
+    EXPECT_EQ(next_screenshot(folder, "cbox", &number), folder / "cbox-0004");
+    EXPECT_EQ(next_screenshot(folder, "other", &number), folder / "other-0005");
+    fs::remove_all(folder);
+}
+
 TEST(PreviewScript, RejectsMalformedLinesWithTheirNumber) {
     const struct {
         const char* text;
@@ -64,6 +117,16 @@ TEST(PreviewScript, RejectsMalformedLinesWithTheirNumber) {
         {"1 resize 0 10\n", "line 1: resize needs a size"},
         {"1 pan 1 2 3\n", "line 1: unexpected '3'"},
         {"-1 zoom 2\n", "line 1: expected a frame number"},
+        {"1 set\n", "line 1: set needs a setting's name"},
+        {"1 set gamma 2\n", "line 1: unknown setting 'gamma'"},
+        {"1 set max_depth 0\n", "line 1: max_depth needs a whole number in [-1, 1024]"},
+        {"1 set clamp 1.5\n", "line 1: clamp needs a number in [0, 1]"},
+        {"1 set compensate 0.5\n", "line 1: compensate needs a whole number"},
+        {"1 set env_color 1 1\n", "line 1: env_color needs 3 numbers"},
+        {"1 set sampler bdpt\n", "line 1: sampler needs mc or metropolis"},
+        {"1 camera -1\n", "line 1: camera needs a camera's index"},
+        {"1 fov 180\n", "line 1: fov needs degrees in (0, 180)"},
+        {"1 drop\n", "line 1: drop needs a file"},
     };
     for (const auto& c : cases) {
         const fs::path path = write_file("script_bad", c.text);

@@ -1,7 +1,9 @@
 #pragma once
 // The preview window's state (PreviewApp), its member functions spread over files by concern:
 // preview_app.cpp the frame loop, app_sum.cpp the running sum (restart and shading),
-// app_input.cpp the user's and the script's input, app_output.cpp the HUD and the screenshots.
+// app_input.cpp the user's and the script's input, app_settings.cpp the settings' changes,
+// app_scene.cpp a scene or environment replaced (dropped files), app_output.cpp the HUD and the
+// screenshots.
 #include <cstdint>
 #include <memory>
 #include <string>
@@ -19,6 +21,7 @@
 #include "tools/preview/preview_app.h"
 #include "tools/preview/preview_stats.h"
 #include "tools/preview/script.h"
+#include "tools/preview/settings.h"
 #include "tools/preview/vpl_history.h"
 #include "tools/preview/window.h"
 #include "tools/session/scene_session.h"
@@ -46,6 +49,27 @@ private:
     void apply(const Input& input, double dt);
     void apply_key(const std::string& key);
     void apply_script(uint64_t frame);
+    // Sets a setting of settings.h (values: its numbers; word: the sampler's name), then throws
+    // away what it must (Redo). The script and the panel both change settings through it.
+    void change(const std::string& name, const std::vector<float>& values,
+                const std::string& word = {});
+    void redo(Redo what);
+    bool change_environment(const std::string& name, const std::vector<float>& values);
+    // The file's camera N (scene::choose_camera, as `render --camera N`); the vertical field of
+    // view in degrees.
+    void select_camera(int index);
+    void set_fov(float degrees);
+    // A dropped file: a scene (every format the loader reads) replaces the scene, an .hdr or
+    // .exr the environment. A file that cannot be read leaves all as it was, its one-line error
+    // on stderr and in the HUD.
+    void drop(const std::string& path);
+    void set_environment(const scene::EnvironmentChoice& environment);
+    // Sets up `path` under `environment` (throws InputError or UsageError, leaving all as it
+    // was) and replaces the scene, its renderer and VPLs with it; keep_camera: the same scene
+    // (a new environment) keeps the view.
+    void load_scene(const std::string& path, const scene::EnvironmentChoice& environment,
+                    bool keep_camera);
+    void report(const std::string& message);
     // Starts a new sum for the window's framebuffer, at 1/divisor of its size.
     void restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving);
     void render_work();
@@ -63,15 +87,17 @@ private:
     void present(uint32_t width, uint32_t height, bool moving, bool first, bool last,
                  const Timer& phase, double restart, double shading, const Timer& start);
 
+    // The command line's options; the settings (settings.h) change their fields as they run.
     PreviewOptions m_options;
-    session::SceneSession m_session;
+    scene::EnvironmentChoice m_environment;
+    std::unique_ptr<session::SceneSession> m_session;
     std::string m_sampler;
     std::vector<ScriptEvent> m_script;
     size_t m_next_event = 0;
     Window m_window;
     gpu::Context m_context;
     // The estimate `mvpl render` makes, begun anew at each restart over the VPLs of m_history.
-    integrator::VplIntegrator m_integrator;
+    std::unique_ptr<integrator::VplIntegrator> m_integrator;
     gpu::Swapchain m_swapchain;
     PresentPass m_present;
     HudFont m_font;
@@ -104,13 +130,16 @@ private:
     uint32_t m_motion_divisor;
     double m_scale = 0.0;        // of the current sum
     double m_ms_per_unit = 0.0;  // measured shading time per sampler unit (EMA)
-    uint32_t m_screenshots = 0;
+    uint32_t m_screenshots = 1;  // the next screenshot number to try
     PreviewStats m_stats;
     MoveRecovery m_recovery;
     uint64_t m_resting_vpls = 0;  // in the sum of the last frame at rest
     uint64_t m_catch_up = 0;      // VPLs the next frame shades before presenting
     Timer m_hud_timer;
     bool m_hud_dirty = true;
+    // What specular_chains 1 turns on: the command line's roughness, or the default.
+    float m_chain_roughness;
+    std::string m_message;  // the last dropped file's error, shown in the HUD
     Timer m_frame_timer;
 };
 

@@ -62,6 +62,8 @@ void PreviewApp::apply(const Input& in, double dt) {
     }
     for (const std::string& key : in.keys)
         apply_key(key);
+    for (const std::string& path : in.drops)
+        drop(path);
 }
 
 void PreviewApp::apply_script(uint64_t frame) {
@@ -75,6 +77,22 @@ void PreviewApp::apply_script(uint64_t frame) {
         }
         if (e.action == "resize") {
             m_window.set_size(int(v[0]), int(v[1]));
+            continue;
+        }
+        if (e.action == "set") {
+            change(e.key, v, e.word);
+            continue;
+        }
+        if (e.action == "drop") {
+            drop(e.word);
+            continue;
+        }
+        if (e.action == "camera") {
+            select_camera(int(v[0]));
+            continue;
+        }
+        if (e.action == "fov") {
+            set_fov(v[0]);
             continue;
         }
         if (e.action == "orbit") m_controller.orbit(v[0], v[1]);

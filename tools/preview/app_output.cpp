@@ -32,25 +32,26 @@ void PreviewApp::update_hud(bool force) {
         m_stats.hud_lines(name, chain, m_render_width, m_render_height, m_replay->vpls_total(),
                           m_history->work_done(), clamp(), m_exposure, m_history->statistics(),
                           m_replay->converged());
+    if (!m_message.empty()) lines.push_back(m_message);  // a dropped file that was not read
     m_present.set_hud(m_font.render(lines, 8, 8, m_render_width > 16 ? m_render_width - 16 : 0));
 }
 
 void PreviewApp::save(const std::string& path, bool png_from_display) {
     if (lower_extension(path) == ".exr") {
         // scale · Σ + emission + the CPU estimators' image: what the window shows at rest.
-        write_exr(m_integrator.image(), path);
+        write_exr(m_integrator->image(), path);
     } else if (png_from_display) {
         uint32_t w = 0, h = 0;
         const std::vector<uint8_t> rgba = m_present.captured(w, h);
         write_rgba_png(path, rgba, w, h);
     } else {
-        write_png(m_integrator.image(), path, m_exposure);
+        write_png(m_integrator->image(), path, m_exposure);
     }
     if (!m_options.quiet) std::printf("preview: wrote %s\n", path.c_str());
 }
 
 void PreviewApp::print_kept_maps() const {
-    const render::KeptMapStats kept = m_integrator.renderer()->kept_maps();
+    const render::KeptMapStats kept = m_integrator->renderer()->kept_maps();
     if (kept.capacity == 0) return;
     std::printf(
         "preview: kept shadow maps: %u of at most %u (%.0f MiB budget); %llu copied back "

@@ -17,7 +17,7 @@ constexpr uint64_t kMaxUnitsPerCall = 64;
 }  // namespace
 
 render::RenderOptions PreviewApp::render_options(uint32_t width, uint32_t height) const {
-    return preview_render_options(m_options, m_session.scene(), clamp(), width, height);
+    return preview_render_options(m_options, m_session->scene(), clamp(), width, height);
 }
 
 integrator::Estimate PreviewApp::estimate(const render::RenderOptions& ro,
@@ -26,7 +26,7 @@ integrator::Estimate PreviewApp::estimate(const render::RenderOptions& ro,
 }
 
 integrator::SceneView PreviewApp::view() const {
-    return {&m_session.scene(), &m_session.accel(), &m_session.lights(), &m_controller.camera()};
+    return {&m_session->scene(), &m_session->accel(), &m_session->lights(), &m_controller.camera()};
 }
 
 std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler,
@@ -37,8 +37,8 @@ std::unique_ptr<VplHistory> PreviewApp::make_history(const std::string& sampler,
     // (whose light it carries), moving or not: the same VPLs as `mvpl render`.
     if (integrator::caustics_needed(view(), e)) s.tracer.specular = ro.chains;
     return std::make_unique<VplHistory>(
-        sampler::make_vpl_stream(sampler, m_session.scene(), m_session.accel(), m_session.lights(),
-                                 m_controller.camera(), s),
+        sampler::make_vpl_stream(sampler, m_session->scene(), m_session->accel(),
+                                 m_session->lights(), m_controller.camera(), s),
         m_options.max_paths);
 }
 
@@ -60,7 +60,7 @@ void PreviewApp::restart(uint32_t width, uint32_t height, uint32_t divisor, bool
     e.caustics = e.caustics && !moving;
     auto replay = std::make_unique<HistoryReplay>(*m_history);
     m_replay = replay.get();
-    m_integrator.begin(view(), e, integrator::Pacing::OpenEnded, std::move(replay));
+    m_integrator->begin(view(), e, integrator::Pacing::OpenEnded, std::move(replay));
     m_cpu_on = !moving;
     m_scale = 0.0;
     m_moved = false;
@@ -79,10 +79,10 @@ void PreviewApp::catch_up() {
             m_ms_per_unit > 0.0
                 ? uint64_t(std::clamp(left_ms / m_ms_per_unit, 1.0, double(kMaxUnitsPerCall)))
                 : 1;
-        const uint64_t vpls = m_integrator.stats().vpls;
-        m_integrator.advance(units);
+        const uint64_t vpls = m_integrator->stats().vpls;
+        m_integrator->advance(units);
         m_scale = m_replay->scale();
-        m_stats.add_vpls(size_t(m_integrator.stats().vpls - vpls));
+        m_stats.add_vpls(size_t(m_integrator->stats().vpls - vpls));
     }
 }
 
@@ -100,16 +100,16 @@ void PreviewApp::render_work() {
             units = std::min(units, kMaxUnitsPerCall);
         }
         // Whole segments: replayed ones first (after a move), then new ones from the stream.
-        const uint64_t vpls = m_integrator.stats().vpls, work = m_replay->work_done();
+        const uint64_t vpls = m_integrator->stats().vpls, work = m_replay->work_done();
         const Timer shading;
-        m_integrator.advance(units);
+        m_integrator->advance(units);
         const uint64_t drawn = m_replay->work_done() - work;
         if (drawn == 0) break;  // converged: nothing left to draw
         const double ms = 1e3 * shading.seconds();
         const double per_unit = ms / double(drawn);
         m_ms_per_unit = m_ms_per_unit > 0.0 ? 0.7 * m_ms_per_unit + 0.3 * per_unit : per_unit;
         m_scale = m_replay->scale();
-        m_stats.add_vpls(size_t(m_integrator.stats().vpls - vpls));
+        m_stats.add_vpls(size_t(m_integrator->stats().vpls - vpls));
         if (fixed) break;
     }
 }
@@ -117,7 +117,7 @@ void PreviewApp::render_work() {
 void PreviewApp::update_cpu_image(bool force) {
     if (!m_cpu_on || (!force && m_cpu_timer.seconds() < kHudInterval)) return;
     m_cpu_timer.reset();
-    m_present.set_cpu_image(m_integrator.cpu_image());
+    m_present.set_cpu_image(m_integrator->cpu_image());
 }
 
 }  // namespace mvpl::preview

@@ -4,7 +4,9 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "engine/light/chain_options.h"
 #include "tools/preview/app.h"
+#include "tools/preview/screenshot_name.h"
 
 namespace mvpl::preview {
 namespace {
@@ -18,19 +20,25 @@ constexpr uint32_t kMaxMotionDivisor = 4;
 
 PreviewApp::PreviewApp(const PreviewOptions& options)
     : m_options(options),
-      m_session(options.scene_path, options.camera, options.environment, options.load),
+      m_environment(options.environment),
+      m_session(std::make_unique<session::SceneSession>(options.scene_path, options.camera,
+                                                        options.environment, options.load)),
       m_sampler(options.sampler),
       m_script(options.script.empty() ? std::vector<ScriptEvent>{} : load_script(options.script)),
       m_window("mvpl preview: " + std::filesystem::path(options.scene_path).filename().string(),
                options.width, options.height),
       m_context(context_options()),
-      m_integrator(m_session.view(), &m_context, 1, nullptr),
+      m_integrator(
+          std::make_unique<integrator::VplIntegrator>(m_session->view(), &m_context, 1, nullptr)),
       m_swapchain(m_context, m_window.create_surface(m_context.instance()), uint32_t(options.width),
                   uint32_t(options.height)),
       m_present(m_context, m_swapchain.srgb()),
-      m_controller(m_session.camera(), m_session.scene().bounds()),
+      m_controller(m_session->camera(), m_session->scene().bounds()),
       m_exposure(options.exposure),
-      m_motion_divisor(options.motion_scaling ? 2 : 1) {}
+      m_motion_divisor(options.motion_scaling ? 2 : 1),
+      m_chain_roughness(options.levers.chains.max_roughness >= 0.0f
+                            ? options.levers.chains.max_roughness
+                            : light::kDefaultChainRoughness) {}
 
 gpu::ContextOptions PreviewApp::context_options() {
     gpu::ContextOptions co;
@@ -82,7 +90,7 @@ bool PreviewApp::frame(uint64_t index, const Timer& start) {
     const bool last = m_options.frames > 0 && index + 1 == m_options.frames;
     if (last && !m_options.screenshot.empty() && m_cpu_on) {
         // The passes `mvpl render` runs for the VPLs shaded, all of them: its image.
-        m_present.set_cpu_image(m_integrator.finish_cpu(integrator::Pacing::Fixed));
+        m_present.set_cpu_image(m_integrator->finish_cpu(integrator::Pacing::Fixed));
     } else {
         update_cpu_image(moving || refine);
     }
@@ -105,7 +113,7 @@ void PreviewApp::present(uint32_t width, uint32_t height, bool moving, bool firs
         if (shot) save(m_options.screenshot, false);  // no image to present to: resolve instead
         return;
     }
-    const render::VplRenderer& renderer = *m_integrator.renderer();
+    const render::VplRenderer& renderer = *m_integrator->renderer();
     m_present.record(sc, renderer.accumulation(), renderer.emission(), params, capture);
     m_swapchain.end_frame();
     const double seconds = m_frame_timer.seconds();
@@ -123,7 +131,8 @@ void PreviewApp::present(uint32_t width, uint32_t height, bool moving, bool firs
     }
     if (m_screenshot_key) {
         m_screenshot_key = false;
-        const std::string base = "mvpl-preview-" + std::to_string(m_screenshots++);
+        const std::string stem = std::filesystem::path(m_session->path()).stem().string();
+        const std::string base = next_screenshot({}, stem, &m_screenshots).string();
         save(base + ".png", true);
         save(base + ".exr", true);
     }

@@ -19,6 +19,7 @@ struct Input {
     float look_x = 0.0f, look_y = 0.0f;    // right drag
     float wheel = 0.0f;                    // scroll steps, positive away from the user
     std::vector<std::string> keys;
+    std::vector<std::string> drops;  // files dropped on the window, in the order dropped
     // WASD held now: forward (W − S), right (D − A), up (E − Q).
     int fly_forward = 0, fly_right = 0, fly_up = 0;
 };
@@ -49,6 +50,7 @@ public:
     void on_key(int key, int action, int mods);
     void on_cursor(double x, double y);
     void on_scroll(double dy);
+    void on_drop(int count, const char** paths);
 
 private:
     GLFWwindow* m_window = nullptr;
