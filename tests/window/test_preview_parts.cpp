@@ -10,6 +10,7 @@
 #include "engine/core/error.h"
 #include "tools/preview/camera_controller.h"
 #include "tools/preview/present_pass.h"
+#include "tools/preview/preview_stats.h"
 #include "tools/preview/screenshot_name.h"
 #include "tools/preview/script.h"
 #include "tools/preview/settings.h"
@@ -88,6 +89,50 @@ TEST(PreviewSettingsTable, NamesAreUniqueAndRangesChecked) {
         }
     }
     EXPECT_EQ(find_setting("nonesuch"), nullptr);
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines)
+        text += line + "\n";
+    return text;
+}
+
+// The HUD says what the estimate has on, and VPL/s is VPLs over the last second's span: 500 at
+// 0.5 s and 500 at 1 s after the first frame are 1000 VPL/s.
+TEST(PreviewHud, SaysWhatIsOnAndTheRate) {
+    PreviewStats stats;
+    stats.frame_presented(0.01, 0.0, false);
+    stats.add_vpls(500);
+    stats.frame_presented(0.01, 0.5, false);
+    stats.add_vpls(500);
+    stats.frame_presented(0.01, 1.0, false);
+    EXPECT_DOUBLE_EQ(stats.vpls_per_second(), 1000.0);
+    HudState h;
+    h.sampler = "mc";
+    h.vpls = 1000;
+    h.seconds = 2.5;
+    h.parts.clamp = 0.1f;
+    h.parts.compensation = false;
+    h.parts.caustics = true;
+    h.parts.vsl_radius = 0.03f;
+    std::string text = joined(stats.hud_lines(h));
+    for (const char* says : {"VPLs 1000", "1000 VPL/s", "2.5 s since restart",
+                             "clamp 0.100 x diagonal, NOT compensated", "caustics on",
+                             "specular chains off", "VSL radius 0.030"})
+        EXPECT_NE(text.find(says), std::string::npos) << says << " not in\n" << text;
+    h.parts.clamp = 0.0f;
+    h.parts.caustics = false;
+    h.parts.chains = true;
+    h.parts.vsl_radius = 0.0f;
+    text = joined(stats.hud_lines(h));
+    for (const char* says : {"clamp off", "caustics off", "specular chains on", "VSL off"})
+        EXPECT_NE(text.find(says), std::string::npos) << says << " not in\n" << text;
+    h.parts.clamp = 0.1f;
+    h.parts.compensation = true;
+    h.parts.moving = true;  // the CPU passes wait for the camera to rest
+    text = joined(stats.hud_lines(h));
+    EXPECT_NE(text.find("compensated (at rest)"), std::string::npos) << text;
 }
 
 // Screenshot names: the first number whose .png and .exr are both free, then the next.

@@ -77,6 +77,8 @@ private:
     void catch_up();
     void update_cpu_image(bool force);
     void update_hud(bool force);
+    // What the current sum's estimate has on (for the HUD, once a restart).
+    EstimatorParts estimator_parts() const;
     void save(const std::string& path, bool png_from_display);
     void print_kept_maps() const;
     // One frame: input, the sum, the present; false when the window is to close.
@@ -140,6 +142,8 @@ private:
     // What specular_chains 1 turns on: the command line's roughness, or the default.
     float m_chain_roughness;
     std::string m_message;  // the last dropped file's error, shown in the HUD
+    EstimatorParts m_parts;
+    Timer m_since_restart;
     Timer m_frame_timer;
 };
 

@@ -4,6 +4,8 @@
 #include "engine/core/file_extension.h"
 #include "engine/core/image.h"
 #include "engine/core/png.h"
+#include "engine/integrator/cpu_estimators.h"
+#include "engine/light/specular_chain.h"
 #include "tools/preview/app.h"
 
 namespace mvpl::preview {
@@ -20,18 +22,38 @@ void write_rgba_png(const std::string& path, const std::vector<uint8_t>& rgba, u
 
 }  // namespace
 
+EstimatorParts PreviewApp::estimator_parts() const {
+    const render::RenderOptions ro = render_options(m_render_width, m_render_height);
+    const integrator::Estimate e = estimate(ro, m_sampler);
+    EstimatorParts p;
+    p.clamp = ro.clamp;
+    p.compensation = e.compensate && ro.clamp > 0.0f;
+    p.caustics = integrator::caustics_needed(view(), e);
+    p.chains = light::scene_may_chain(m_session->scene(), ro.chains);
+    p.vsl_radius = ro.vsl_radius;
+    p.moving = !m_cpu_on;
+    return p;
+}
+
 void PreviewApp::update_hud(bool force) {
     if (!m_options.hud) return;
     if (!force && !m_hud_dirty && m_hud_timer.seconds() < kHudInterval) return;
     m_hud_timer.reset();
     m_hud_dirty = false;
-    const bool chain = m_history != m_mc_history.get();
-    const std::string name =
-        m_sampler == "mc" || chain ? m_sampler : m_sampler + " (mc while moving)";
-    std::vector<std::string> lines =
-        m_stats.hud_lines(name, chain, m_render_width, m_render_height, m_replay->vpls_total(),
-                          m_history->work_done(), clamp(), m_exposure, m_history->statistics(),
-                          m_replay->converged());
+    if (force) m_parts = estimator_parts();  // a new sum
+    HudState h;
+    h.chain = m_history != m_mc_history.get();
+    h.sampler = m_sampler == "mc" || h.chain ? m_sampler : m_sampler + " (mc while moving)";
+    h.width = m_render_width;
+    h.height = m_render_height;
+    h.vpls = m_replay->vpls_total();
+    h.work = m_history->work_done();
+    h.seconds = m_since_restart.seconds();
+    h.exposure = m_exposure;
+    h.statistics = m_history->statistics();
+    h.converged = m_replay->converged();
+    h.parts = m_parts;
+    std::vector<std::string> lines = m_stats.hud_lines(h);
     if (!m_message.empty()) lines.push_back(m_message);  // a dropped file that was not read
     m_present.set_hud(m_font.render(lines, 8, 8, m_render_width > 16 ? m_render_width - 16 : 0));
 }

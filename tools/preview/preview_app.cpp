@@ -80,7 +80,10 @@ bool PreviewApp::frame(uint64_t index, const Timer& start) {
     const bool moving = m_moved || width != m_window_width || height != m_window_height;
     const bool refine = !moving && m_motion_sum;
     const Timer phase;
-    if (moving || refine) restart(width, height, moving ? m_motion_divisor : 1, moving);
+    if (moving || refine) {
+        restart(width, height, moving ? m_motion_divisor : 1, moving);
+        m_since_restart.reset();
+    }
     if (refine && m_options.catch_up_seconds > 0.0)
         m_catch_up = uint64_t(std::ceil(MoveRecovery::kRecoveredShare * double(m_resting_vpls)));
     const double restarted = phase.seconds();
