@@ -150,14 +150,15 @@ TEST(Preview, ScreenshotMatchesHeadlessRenderWithSpecularChains) {
 }
 
 // Resizes (twice), every camera control, clamping, exposure, a reset, the switch to the
-// Metropolis sampler, settings (one of which sets the scene up again), a camera of the file and a
-// screenshot, with the validation layers on: no message on stderr
-// and exit 0.
+// Metropolis sampler, settings (one of which sets the scene up again), a camera of the file, the
+// settings panel (Dear ImGui's Vulkan backend) and a screenshot, with the validation layers on: no
+// message on stderr and exit 0.
 TEST(Preview, ScriptedRunHasNoValidationMessages) {
     if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt install xvfb)";
     const fs::path script = temp_dir() / "moves.txt";
     std::ofstream(script) << "# frame event\n"
                              "2 resize 160 120\n"
+                             "3 key tab\n"  // the settings panel, drawn from here on
                              "4 orbit 20 5\n"
                              "5 pan 0.1 -0.05\n"
                              "6 zoom 0.8\n"

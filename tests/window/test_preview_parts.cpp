@@ -14,6 +14,7 @@
 #include "tools/preview/screenshot_name.h"
 #include "tools/preview/script.h"
 #include "tools/preview/settings.h"
+#include "tools/preview/settings_panel.h"
 #include "tools/preview/window.h"
 
 // The preview's headers, like engine/gpu's, keep Vulkan (and GLFW) to their .cpp files.
@@ -158,7 +159,7 @@ TEST(PreviewScript, RejectsMalformedLinesWithTheirNumber) {
         {"x orbit 1 2\n", "line 1: expected a frame number"},
         {"1 orbit 1\n", "line 1: orbit needs 2 numbers"},
         {"\n1 zoom 0\n", "line 2: zoom needs a positive factor"},
-        {"1 key q\n", "line 1: key needs one of"},
+        {"1 key q\n", "line 1: key needs one of r, plus, minus, m, c, p, tab, escape"},
         {"1 resize 0 10\n", "line 1: resize needs a size"},
         {"1 pan 1 2 3\n", "line 1: unexpected '3'"},
         {"-1 zoom 2\n", "line 1: expected a frame number"},

@@ -22,6 +22,7 @@
 #include "tools/preview/preview_stats.h"
 #include "tools/preview/script.h"
 #include "tools/preview/settings.h"
+#include "tools/preview/settings_panel.h"
 #include "tools/preview/vpl_history.h"
 #include "tools/preview/window.h"
 #include "tools/session/scene_session.h"
@@ -49,6 +50,8 @@ private:
     void apply(const Input& input, double dt);
     void apply_key(const std::string& key);
     void apply_script(uint64_t frame);
+    // One event of the script's format (script.h), from the script or the settings panel.
+    void apply_event(const ScriptEvent& event);
     // Sets a setting of settings.h (values: its numbers; word: the sampler's name), then throws
     // away what it must (Redo). The script and the panel both change settings through it.
     void change(const std::string& name, const std::vector<float>& values,
@@ -59,6 +62,10 @@ private:
     // view in degrees.
     void select_camera(int index);
     void set_fov(float degrees);
+    // The settings as the panel shows them.
+    PanelValues panel_values() const;
+    // Tab: the panel shown (made the first time) or hidden.
+    void toggle_panel();
     // A dropped file: a scene (every format the loader reads) replaces the scene, an .hdr or
     // .exr the environment. A file that cannot be read leaves all as it was, its one-line error
     // on stderr and in the HUD.
@@ -102,6 +109,9 @@ private:
     std::unique_ptr<integrator::VplIntegrator> m_integrator;
     gpu::Swapchain m_swapchain;
     PresentPass m_present;
+    // Made when first shown: at the start of an interactive run, or at Tab (a scripted run
+    // without it never sets Dear ImGui up).
+    std::unique_ptr<SettingsPanel> m_panel;
     HudFont m_font;
     CameraController m_controller;
     // Monte Carlo VPLs, kept for the whole run (they do not depend on the view), and the chain

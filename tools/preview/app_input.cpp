@@ -31,12 +31,22 @@ void PreviewApp::apply_key(const std::string& key) {
         m_moved = true;  // a chain's target depends on it too: it starts again at rest
     } else if (key == "p") {
         m_screenshot_key = true;
+    } else if (key == "tab") {
+        toggle_panel();
     } else if (key == "escape") {
         m_quit = true;
     }
 }
 
-void PreviewApp::apply(const Input& in, double dt) {
+void PreviewApp::apply(const Input& input, double dt) {
+    Input in = input;
+    if (m_panel && m_panel->wants_mouse()) {  // a drag or scroll over the panel is its own
+        in.orbit_x = in.orbit_y = in.pan_x = in.pan_y = in.look_x = in.look_y = in.wheel = 0.0f;
+    }
+    if (m_panel && m_panel->wants_keyboard()) {  // typing in it: only Tab leaves it
+        std::erase_if(in.keys, [](const std::string& key) { return key != "tab"; });
+        in.fly_forward = in.fly_right = in.fly_up = 0;
+    }
     if (in.orbit_x != 0.0f || in.orbit_y != 0.0f) {
         m_controller.orbit(-in.orbit_x * kDegreesPerPixel, in.orbit_y * kDegreesPerPixel);
         m_moved = true;
@@ -67,34 +77,25 @@ void PreviewApp::apply(const Input& in, double dt) {
 }
 
 void PreviewApp::apply_script(uint64_t frame) {
-    for (; m_next_event < m_script.size() && m_script[m_next_event].frame <= frame;
-         ++m_next_event) {
-        const ScriptEvent& e = m_script[m_next_event];
-        const std::vector<float>& v = e.values;
-        if (e.action == "key") {
-            apply_key(e.key);
-            continue;
-        }
-        if (e.action == "resize") {
-            m_window.set_size(int(v[0]), int(v[1]));
-            continue;
-        }
-        if (e.action == "set") {
-            change(e.key, v, e.word);
-            continue;
-        }
-        if (e.action == "drop") {
-            drop(e.word);
-            continue;
-        }
-        if (e.action == "camera") {
-            select_camera(int(v[0]));
-            continue;
-        }
-        if (e.action == "fov") {
-            set_fov(v[0]);
-            continue;
-        }
+    for (; m_next_event < m_script.size() && m_script[m_next_event].frame <= frame; ++m_next_event)
+        apply_event(m_script[m_next_event]);
+}
+
+void PreviewApp::apply_event(const ScriptEvent& e) {
+    const std::vector<float>& v = e.values;
+    if (e.action == "key") {
+        apply_key(e.key);
+    } else if (e.action == "resize") {
+        m_window.set_size(int(v[0]), int(v[1]));
+    } else if (e.action == "set") {
+        change(e.key, v, e.word);
+    } else if (e.action == "drop") {
+        drop(e.word);
+    } else if (e.action == "camera") {
+        select_camera(int(v[0]));
+    } else if (e.action == "fov") {
+        set_fov(v[0]);
+    } else {
         if (e.action == "orbit") m_controller.orbit(v[0], v[1]);
         if (e.action == "pan") m_controller.pan(v[0], v[1]);
         if (e.action == "zoom") m_controller.zoom(v[0]);

@@ -67,6 +67,37 @@ void PreviewApp::select_camera(int index) {
     }
 }
 
+PanelValues PreviewApp::panel_values() const {
+    PanelValues v;
+    v.sampler = m_sampler;
+    v.paths_per_frame = m_options.paths_per_frame;
+    v.budget_ms = float(m_options.budget_ms);
+    v.clamping = m_clamping;
+    v.clamp = m_options.clamp;
+    v.compensate = m_options.compensate;
+    v.caustics = m_options.caustics;
+    v.chains = m_options.levers.chains.max_roughness >= 0.0f;
+    v.vsl = m_options.levers.vsl_radius;
+    v.max_depth = m_options.max_depth;
+    v.shadow_resolution = m_options.shadow_resolution;
+    v.exposure = m_exposure;
+    v.env_color = m_environment.color;
+    v.env_scale = m_environment.scale;
+    v.env_rotation = m_environment.rotation_degrees;
+    v.env_map = m_environment.map;
+    v.cameras = int(m_session->scene().cameras.size());
+    v.fov_degrees = glm::degrees(m_controller.camera().yfov);
+    return v;
+}
+
+void PreviewApp::toggle_panel() {
+    if (!m_panel) {
+        m_panel = std::make_unique<SettingsPanel>(m_context, m_window, m_swapchain.format(), true);
+        return;
+    }
+    m_panel->toggle();
+}
+
 void PreviewApp::set_fov(float degrees) {
     m_controller.set_fov(glm::radians(degrees));  // as scene::choose_camera converts --fov
     m_moved = true;

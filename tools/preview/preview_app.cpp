@@ -48,6 +48,7 @@ gpu::ContextOptions PreviewApp::context_options() {
 }
 
 int PreviewApp::run(const Timer& start) {
+    if (m_options.frames == 0) toggle_panel();  // interactive: the panel shown from the start
     m_frame_timer.reset();
     for (uint64_t index = 0; m_options.frames == 0 || index < m_options.frames; ++index)
         if (!frame(index, start)) break;
@@ -68,6 +69,9 @@ bool PreviewApp::frame(uint64_t index, const Timer& start) {
     m_window.poll();
     apply(m_window.take_input(), dt);
     apply_script(index);
+    if (m_panel)
+        for (const ScriptEvent& e : m_panel->build(panel_values()))
+            apply_event(e);
     if (m_quit || m_window.close_requested()) return false;
     uint32_t width = 0, height = 0;
     m_window.framebuffer_size(width, height);
@@ -118,6 +122,7 @@ void PreviewApp::present(uint32_t width, uint32_t height, bool moving, bool firs
     }
     const render::VplRenderer& renderer = *m_integrator->renderer();
     m_present.record(sc, renderer.accumulation(), renderer.emission(), params, capture);
+    if (m_panel) m_panel->record(sc);  // after the capture: screenshots are the picture alone
     m_swapchain.end_frame();
     const double seconds = m_frame_timer.seconds();
     m_recovery.frame(moving, m_replay->vpls_total(), start.seconds() - seconds, start.seconds());

@@ -19,7 +19,7 @@ size_t value_count(const std::string& action) {
 }
 
 bool known_key(const std::string& key) {
-    for (const char* k : {"r", "plus", "minus", "m", "c", "p", "escape"})
+    for (const char* k : {"r", "plus", "minus", "m", "c", "p", "tab", "escape"})
         if (key == k) return true;
     return false;
 }
@@ -71,7 +71,7 @@ ScriptEvent read_event(std::istringstream& words) {
     if (!(words >> e.action)) throw std::invalid_argument("missing the event after the frame");
     if (e.action == "key") {
         if (!(words >> e.key) || !known_key(e.key))
-            throw std::invalid_argument("key needs one of r, plus, minus, m, c, p, escape");
+            throw std::invalid_argument("key needs one of r, plus, minus, m, c, p, tab, escape");
     } else if (e.action == "set") {
         read_setting(words, e);
     } else if (e.action == "drop") {

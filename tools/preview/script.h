@@ -8,7 +8,7 @@
 //   FRAME fly FWD RIGHT UP    scene diagonals (as WASD)
 //   FRAME look YAW PITCH      degrees about the eye (as a right drag)
 //   FRAME resize W H          window size in screen coordinates
-//   FRAME key NAME            r, plus, minus, m, c, p or escape (as the key)
+//   FRAME key NAME            r, plus, minus, m, c, p, tab or escape (as the key)
 //   FRAME set NAME VALUE…     a setting of settings.h (as the settings panel)
 //   FRAME camera N            the file's camera N (as the panel's camera list)
 //   FRAME fov DEGREES         the vertical field of view

@@ -12,7 +12,7 @@ struct GLFWwindow;
 namespace mvpl::preview {
 
 // Input gathered between two polls. Drags in pixels; keys by name (r, plus, minus, m, c, p,
-// escape), in the order pressed.
+// tab, escape), in the order pressed.
 struct Input {
     float orbit_x = 0.0f, orbit_y = 0.0f;  // left drag
     float pan_x = 0.0f, pan_y = 0.0f;      // middle or shift+left drag
@@ -36,6 +36,8 @@ public:
     static std::vector<std::string> required_instance_extensions();
     static bool can_present(VkInstance instance, VkPhysicalDevice device, uint32_t queue_family);
     VkSurfaceKHR create_surface(VkInstance instance) const;
+    // For Dear ImGui's GLFW backend (settings_panel.cpp).
+    GLFWwindow* handle() const { return m_window; }
 
     void poll();
     Input take_input();
