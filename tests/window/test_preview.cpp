@@ -175,7 +175,8 @@ TEST(Preview, ScriptedRunHasNoValidationMessages) {
                              "16 set max_depth 3\n"
                              "17 set env_scale 0.5\n"  // the scene set up again
                              "18 camera 0\n"
-                             "18 fov 50\n";
+                             "18 fov 50\n"
+                             "19 view normal\n";
     const Result r =
         run("MVPL_VALIDATION=1 " + xvfb(),
             "preview " + shell_quote(kScene) + " --res 96x64 --paths-per-frame 2 --frames 20" +

@@ -17,6 +17,7 @@
 #include <string>
 #include <vector>
 
+#include "engine/core/exr_file.h"
 #include "engine/core/image.h"
 #include "tests/window/preview_run.h"
 
@@ -186,6 +187,42 @@ TEST(PreviewSettings, DroppedEnvironmentReplacesTheSkyAndABadFileKeepsTheScene) 
     EXPECT_GT(lit, sky.pixels().size());
     const Image white = render(kBox, "", "white_render");
     EXPECT_GT(test::channels_differing(window, white), window.pixels().size());
+}
+
+// `view albedo` shows (and an .exr screenshot holds) `render --aov albedo`'s AOV over the same
+// sub-pixel positions: 16 light paths leave 55 VPLs, two positions, within the four a view
+// follows. The same tracer on both sides: equal to float rounding of the same sums.
+TEST(PreviewSettings, AlbedoViewIsTheRendersAov) {
+    if (!test::have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt install xvfb)";
+    const fs::path script = write_script("view.txt", "1 view albedo\n");
+    const fs::path exr = temp("view.exr");
+    const std::string common = shell_quote(kCbox) + " --res 48x48 --vpls 16 --seed 5";
+    const CommandResult r = test::run_preview(common + " --paths-per-frame 16 --frames 6 --quiet" +
+                                              " --script " + shell_quote(script.string()) +
+                                              " --screenshot " + shell_quote(exr.string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const fs::path aov = temp("aov.exr");
+    const CommandResult rr = test::run_mvpl_gpu("render " + common + " --aov albedo --quiet -o " +
+                                                shell_quote(aov.string()));
+    ASSERT_EQ(rr.exit_code, 0) << rr.err;
+    const Image view = read_exr(exr.string());
+    const ExrContents render = read_exr_file(aov.string());
+    ASSERT_EQ(view.width(), render.width);
+    ASSERT_EQ(view.height(), render.height);
+    size_t bad = 0, unlike_radiance = 0;
+    const char* names[3] = {"albedo.R", "albedo.G", "albedo.B"};
+    const char* beauty[3] = {"R", "G", "B"};
+    for (int c = 0; c < 3; ++c) {
+        const std::vector<float>* albedo = render.channel(names[c]);
+        const std::vector<float>* radiance = render.channel(beauty[c]);
+        ASSERT_TRUE(albedo && radiance) << names[c];
+        for (size_t i = 0; i < view.pixels().size(); ++i) {
+            bad += std::abs(view.pixels()[i][c] - (*albedo)[i]) > 1e-6f;
+            unlike_radiance += std::abs(view.pixels()[i][c] - (*radiance)[i]) > 1e-3f;
+        }
+    }
+    EXPECT_EQ(bad, 0u);
+    EXPECT_GT(unlike_radiance, view.pixels().size());  // a view, not the picture
 }
 
 }  // namespace

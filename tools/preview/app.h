@@ -62,6 +62,14 @@ private:
     // view in degrees.
     void select_camera(int index);
     void set_fov(float degrees);
+    // Views (app_views.cpp): "image" (the estimate), "albedo", "normal", "depth"; false for
+    // another name. next_view: V's cycle.
+    bool set_view(const std::string& name);
+    void next_view();
+    // Traces the view's AOV again when the sum restarted or its positions grew.
+    void update_view(bool restarted);
+    // The view's AOV values (a depth in all three channels), for an .exr screenshot.
+    Image view_image() const;
     // The settings as the panel shows them.
     PanelValues panel_values() const;
     // Tab: the panel shown (made the first time) or hidden.
@@ -153,6 +161,9 @@ private:
     float m_chain_roughness;
     std::string m_message;  // the last dropped file's error, shown in the HUD
     EstimatorParts m_parts;
+    std::string m_view = "image";
+    uint64_t m_view_vpls = uint64_t(-1);  // the VPLs whose positions m_view_data covers
+    ChannelImage m_view_data;
     Timer m_since_restart;
     Timer m_frame_timer;
 };

@@ -33,6 +33,8 @@ void PreviewApp::apply_key(const std::string& key) {
         m_screenshot_key = true;
     } else if (key == "tab") {
         toggle_panel();
+    } else if (key == "v") {
+        next_view();
     } else if (key == "escape") {
         m_quit = true;
     }
@@ -95,6 +97,8 @@ void PreviewApp::apply_event(const ScriptEvent& e) {
         select_camera(int(v[0]));
     } else if (e.action == "fov") {
         set_fov(v[0]);
+    } else if (e.action == "view") {
+        set_view(e.word);
     } else {
         if (e.action == "orbit") m_controller.orbit(v[0], v[1]);
         if (e.action == "pan") m_controller.pan(v[0], v[1]);

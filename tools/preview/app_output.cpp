@@ -44,6 +44,7 @@ void PreviewApp::update_hud(bool force) {
     HudState h;
     h.chain = m_history != m_mc_history.get();
     h.sampler = m_sampler == "mc" || h.chain ? m_sampler : m_sampler + " (mc while moving)";
+    if (m_view != "image") h.sampler += "  view " + m_view;
     h.width = m_render_width;
     h.height = m_render_height;
     h.vpls = m_replay->vpls_total();
@@ -60,8 +61,9 @@ void PreviewApp::update_hud(bool force) {
 
 void PreviewApp::save(const std::string& path, bool png_from_display) {
     if (lower_extension(path) == ".exr") {
-        // scale · Σ + emission + the CPU estimators' image: what the window shows at rest.
-        write_exr(m_integrator->image(), path);
+        // scale · Σ + emission + the CPU estimators' image: what the window shows at rest; or
+        // the view's AOV values.
+        write_exr(m_view != "image" ? view_image() : m_integrator->image(), path);
     } else if (png_from_display) {
         uint32_t w = 0, h = 0;
         const std::vector<uint8_t> rgba = m_present.captured(w, h);

@@ -87,6 +87,7 @@ PanelValues PreviewApp::panel_values() const {
     v.env_map = m_environment.map;
     v.cameras = int(m_session->scene().cameras.size());
     v.fov_degrees = glm::degrees(m_controller.camera().yfov);
+    v.view = m_view;
     return v;
 }
 

@@ -73,6 +73,10 @@ void estimator_widgets(const PanelValues& v, std::vector<ScriptEvent>& out) {
 }
 
 void view_widgets(const PanelValues& v, std::string& env_file, std::vector<ScriptEvent>& out) {
+    const std::array<const char*, 4> views{"image", "albedo", "normal", "depth"};
+    int shown = int(std::find(views.begin(), views.end(), v.view) - views.begin());
+    if (ImGui::Combo("view", &shown, "image\0albedo\0normal\0depth\0\0"))
+        out.push_back(event("view", {}, views[size_t(shown)]));
     float exposure = v.exposure;
     if (ImGui::SliderFloat("exposure", &exposure, -10.0f, 10.0f, "%+.1f stops"))
         out.push_back(set("exposure", {exposure}));

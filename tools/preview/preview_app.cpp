@@ -95,7 +95,9 @@ bool PreviewApp::frame(uint64_t index, const Timer& start) {
     const double shaded = phase.seconds();
     update_hud(moving || refine);
     const bool last = m_options.frames > 0 && index + 1 == m_options.frames;
-    if (last && !m_options.screenshot.empty() && m_cpu_on) {
+    if (m_view != "image") {
+        update_view(moving || refine);
+    } else if (last && !m_options.screenshot.empty() && m_cpu_on) {
         // The passes `mvpl render` runs for the VPLs shaded, all of them: its image.
         m_present.set_cpu_image(m_integrator->finish_cpu(integrator::Pacing::Fixed));
     } else {
@@ -115,6 +117,7 @@ void PreviewApp::present(uint32_t width, uint32_t height, bool moving, bool firs
     params.scale = m_scale;
     params.exposure = m_exposure;
     params.hud = m_options.hud;
+    params.cpu_image_only = m_view != "image";
     gpu::SwapchainFrame sc;
     if (!m_swapchain.begin_frame(width, height, sc)) {
         if (shot) save(m_options.screenshot, false);  // no image to present to: resolve instead

@@ -19,7 +19,7 @@ size_t value_count(const std::string& action) {
 }
 
 bool known_key(const std::string& key) {
-    for (const char* k : {"r", "plus", "minus", "m", "c", "p", "tab", "escape"})
+    for (const char* k : {"r", "plus", "minus", "m", "c", "p", "v", "tab", "escape"})
         if (key == k) return true;
     return false;
 }
@@ -71,9 +71,13 @@ ScriptEvent read_event(std::istringstream& words) {
     if (!(words >> e.action)) throw std::invalid_argument("missing the event after the frame");
     if (e.action == "key") {
         if (!(words >> e.key) || !known_key(e.key))
-            throw std::invalid_argument("key needs one of r, plus, minus, m, c, p, tab, escape");
+            throw std::invalid_argument("key needs one of r, plus, minus, m, c, p, v, tab, escape");
     } else if (e.action == "set") {
         read_setting(words, e);
+    } else if (e.action == "view") {
+        if (!(words >> e.word) ||
+            (e.word != "image" && e.word != "albedo" && e.word != "normal" && e.word != "depth"))
+            throw std::invalid_argument("view needs image, albedo, normal or depth");
     } else if (e.action == "drop") {
         std::getline(words >> std::ws, e.word);
         while (!e.word.empty() && std::isspace(static_cast<unsigned char>(e.word.back())))
@@ -84,7 +88,7 @@ ScriptEvent read_event(std::istringstream& words) {
         if (n == size_t(-1)) {
             throw std::invalid_argument("unknown event '" + e.action +
                                         "' (orbit, pan, zoom, fly, look, resize, key, set, "
-                                        "camera, fov, drop)");
+                                        "camera, fov, view, drop)");
         }
         e.values = read_values(words, e.action, n);
         check_values(e);

@@ -139,6 +139,9 @@ void Window::on_key(int key, int action, int) {
         case GLFW_KEY_P:
             m_input.keys.push_back("p");
             break;
+        case GLFW_KEY_V:
+            m_input.keys.push_back("v");
+            break;
         case GLFW_KEY_TAB:
             m_input.keys.push_back("tab");
             break;

@@ -1,0 +1,81 @@
+// PreviewApp's views (V, or the script's `view NAME`): the picture, or one of the AOVs `render
+// --aov` writes (engine/aov/aov_images.h) over the current sum's sub-pixel positions, traced on
+// the CPU and shown instead of the radiance.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include "engine/aov/aov_images.h"
+#include "tools/preview/app.h"
+
+namespace mvpl::preview {
+namespace {
+
+constexpr std::array<const char*, 4> kViews{"image", "albedo", "normal", "depth"};
+// The AOVs are traced on the window's thread, about 0.14 s per sub-pixel position at 512² on two
+// cores (aov_images.h): a view follows the sum's first four positions, not all of them.
+constexpr uint64_t kViewPositions = 4;
+
+// What the window shows of an AOV: albedo as it is, a normal n as n/2 + 1/2, a depth over the
+// largest in the picture (black: nothing hit).
+Image display(const ChannelImage& aov, const std::string& view) {
+    Image image(aov.width, aov.height);
+    const size_t c = aov.channels.size();
+    float far = 0.0f;
+    if (view == "depth")
+        for (float v : aov.values)
+            if (std::isfinite(v)) far = std::max(far, v);
+    for (size_t i = 0; i < image.pixels().size(); ++i) {
+        Rgb& p = image.pixels()[i];
+        for (int k = 0; k < 3; ++k) {
+            const float v = aov.values[i * c + std::min(size_t(k), c - 1)];
+            if (view == "normal")
+                p[k] = 0.5f * v + 0.5f;
+            else if (view == "depth")
+                p[k] = std::isfinite(v) && far > 0.0f ? v / far : 0.0f;
+            else
+                p[k] = v;
+        }
+    }
+    return image;
+}
+
+}  // namespace
+
+bool PreviewApp::set_view(const std::string& name) {
+    if (std::find(kViews.begin(), kViews.end(), name) == kViews.end()) return false;
+    m_view = name;
+    m_view_vpls = uint64_t(-1);  // traced at the next frame
+    m_hud_dirty = true;
+    if (m_view == "image") m_present.set_cpu_image(Image());  // the estimators' again
+    return true;
+}
+
+void PreviewApp::next_view() {
+    const auto at = std::find(kViews.begin(), kViews.end(), m_view);
+    set_view(at + 1 == kViews.end() ? kViews[0] : *(at + 1));
+}
+
+void PreviewApp::update_view(bool restarted) {
+    const render::RenderOptions ro = render_options(m_render_width, m_render_height);
+    const uint64_t most = kViewPositions * ro.batch * std::max(ro.batches_per_position, 1u);
+    const uint64_t vpls = std::min<uint64_t>(m_integrator->stats().vpls, most);
+    if (!restarted && vpls == m_view_vpls) return;
+    m_view_vpls = vpls;
+    const integrator::Estimate e = estimate(ro, m_sampler);
+    const std::vector<ChannelImage> aovs =
+        aov::render_aovs(view(), e, vpls, aov::parse_aov_list(m_view, "view"));
+    m_view_data = aovs.at(0);
+    m_present.set_cpu_image(display(m_view_data, m_view));
+}
+
+Image PreviewApp::view_image() const {
+    Image image(m_view_data.width, m_view_data.height);
+    const size_t c = m_view_data.channels.size();
+    for (size_t i = 0; i < image.pixels().size(); ++i)
+        for (int k = 0; k < 3; ++k)
+            image.pixels()[i][k] = m_view_data.values[i * c + std::min(size_t(k), c - 1)];
+    return image;
+}
+
+}  // namespace mvpl::preview
