@@ -162,7 +162,7 @@ private:
     std::string m_message;  // the last dropped file's error, shown in the HUD
     EstimatorParts m_parts;
     std::string m_view = "image";
-    uint64_t m_view_vpls = uint64_t(-1);  // the VPLs whose positions m_view_data covers
+    uint64_t m_view_positions = 0;  // the sub-pixel positions m_view_data covers
     ChannelImage m_view_data;
     Timer m_since_restart;
     Timer m_frame_timer;

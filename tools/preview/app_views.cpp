@@ -45,7 +45,7 @@ Image display(const ChannelImage& aov, const std::string& view) {
 bool PreviewApp::set_view(const std::string& name) {
     if (std::find(kViews.begin(), kViews.end(), name) == kViews.end()) return false;
     m_view = name;
-    m_view_vpls = uint64_t(-1);  // traced at the next frame
+    m_view_positions = 0;  // traced at the next frame
     m_hud_dirty = true;
     if (m_view == "image") m_present.set_cpu_image(Image());  // the estimators' again
     return true;
@@ -58,11 +58,14 @@ void PreviewApp::next_view() {
 
 void PreviewApp::update_view(bool restarted) {
     const render::RenderOptions ro = render_options(m_render_width, m_render_height);
-    const uint64_t most = kViewPositions * ro.batch * std::max(ro.batches_per_position, 1u);
-    const uint64_t vpls = std::min<uint64_t>(m_integrator->stats().vpls, most);
-    if (!restarted && vpls == m_view_vpls) return;
-    m_view_vpls = vpls;
     const integrator::Estimate e = estimate(ro, m_sampler);
+    // The VPLs shaded name the positions, up to the first of position kViewPositions; traced
+    // again only when they grew.
+    const uint64_t vpls = std::min<uint64_t>(
+        m_integrator->stats().vpls, render::subpixel_schedule(ro).first_of(kViewPositions));
+    const uint64_t positions = aov::aov_positions(e, vpls);
+    if (!restarted && positions == m_view_positions) return;
+    m_view_positions = positions;
     const std::vector<ChannelImage> aovs =
         aov::render_aovs(view(), e, vpls, aov::parse_aov_list(m_view, "view"));
     m_view_data = aovs.at(0);
