@@ -161,8 +161,9 @@ TEST(PreviewSettings, DroppedSceneAndItsCameraNAreTheRendersView) {
     EXPECT_GT(test::channels_differing(window, first), window.pixels().size());
 }
 
-// An environment map dropped on the window replaces the sky (`render --env`'s picture); a bad
-// scene dropped after it is reported in one line and keeps all as it was; the run exits 0.
+// An environment map dropped on the window replaces the sky, and env_scale scales it (`render
+// --env FILE --env-scale 2`'s picture); a bad scene dropped after it is reported in one line and
+// keeps all as it was; the run exits 0.
 TEST(PreviewSettings, DroppedEnvironmentReplacesTheSkyAndABadFileKeepsTheScene) {
     if (!test::have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt install xvfb)";
     Image map(16, 8);
@@ -173,15 +174,16 @@ TEST(PreviewSettings, DroppedEnvironmentReplacesTheSkyAndABadFileKeepsTheScene) 
     write_exr(map, env.string());
     const std::string bad = std::string(MVPL_TEST_DATA_DIR) + "/bad/empty.gltf";
     std::string err;
-    const Image window =
-        preview(kBox, "1 drop " + env.string() + "\n3 drop " + bad + "\n", "env", &err);
+    const Image window = preview(
+        kBox, "1 drop " + env.string() + "\n2 set env_scale 2\n3 drop " + bad + "\n", "env", &err);
     // One line: the error, beside the scene's warning about its light.
     const size_t error = err.find("mvpl: error: ");
     ASSERT_NE(error, std::string::npos) << err;
     EXPECT_EQ(err.substr(error).rfind("mvpl: error: " + bad + ": ", 0), 0u) << err;
     EXPECT_EQ(std::count(err.begin() + long(error), err.end(), '\n'), 1) << err;
     EXPECT_EQ(err.find("error", error + 13), std::string::npos) << err;
-    const Image sky = render(kBox, "--env " + shell_quote(env.string()), "env_render");
+    const Image sky =
+        render(kBox, "--env " + shell_quote(env.string()) + " --env-scale 2", "env_render");
     size_t lit = 0;
     EXPECT_EQ(test::channels_differing(window, sky, &lit), 0u);
     EXPECT_GT(lit, sky.pixels().size());
