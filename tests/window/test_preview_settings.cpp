@@ -227,5 +227,35 @@ TEST(PreviewSettings, AlbedoViewIsTheRendersAov) {
     EXPECT_GT(unlike_radiance, view.pixels().size());  // a view, not the picture
 }
 
+// `view vpls` draws the sum's VPLs over the picture as `mvpl vpls --view camera` draws the same
+// VPLs (16 light paths, same seed) over its flat view: the same pixels carry the dots' colours.
+TEST(PreviewSettings, VplViewDrawsTheVplsWhereMvplVplsDoes) {
+    if (!test::have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt install xvfb)";
+    const fs::path script = write_script("vpls.txt", "1 view vpls\n");
+    const fs::path exr = temp("vpls_view.exr");
+    const std::string common = shell_quote(kCbox) + " --res 48x48 --vpls 16 --seed 5";
+    const CommandResult r = test::run_preview(common + " --paths-per-frame 16 --frames 4 --quiet" +
+                                              " --script " + shell_quote(script.string()) +
+                                              " --screenshot " + shell_quote(exr.string()));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const fs::path dots = temp("vpls_command.exr");
+    const CommandResult v = test::run_mvpl("vpls " + common + " --view camera --quiet -o " +
+                                           shell_quote(dots.string()));
+    ASSERT_EQ(v.exit_code, 0) << v.err;
+    const Image a = read_exr(exr.string());
+    const Image b = read_exr(dots.string());
+    ASSERT_EQ(a.pixels().size(), b.pixels().size());
+    const auto dot = [](const Rgb& p) {
+        return p == Rgb(1.0f, 0.9f, 0.2f) ? 1 : p == Rgb(1.0f, 0.35f, 0.1f) ? 2 : 0;
+    };
+    size_t dotted = 0, unlike = 0;
+    for (size_t i = 0; i < a.pixels().size(); ++i) {
+        dotted += dot(b.pixels()[i]) != 0;
+        unlike += dot(a.pixels()[i]) != dot(b.pixels()[i]);
+    }
+    EXPECT_GT(dotted, 20u);  // 55 VPLs, most in view
+    EXPECT_EQ(unlike, 0u);
+}
+
 }  // namespace
 }  // namespace mvpl

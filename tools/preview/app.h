@@ -62,14 +62,13 @@ private:
     // view in degrees.
     void select_camera(int index);
     void set_fov(float degrees);
-    // Views (app_views.cpp): "image" (the estimate), "albedo", "normal", "depth"; false for
-    // another name. next_view: V's cycle.
+    // Views (app_views.cpp): "image" (the estimate), "albedo", "normal", "depth", "vpls";
+    // false for another name. next_view: V's cycle.
     bool set_view(const std::string& name);
     void next_view();
-    // Traces the view's AOV again when the sum restarted or its positions grew.
+    // Traces the view's AOV again when the sum restarted or its positions grew (the VPLs' view:
+    // the picture read back at the HUD's pace).
     void update_view(bool restarted);
-    // The view's AOV values (a depth in all three channels), for an .exr screenshot.
-    Image view_image() const;
     // The settings as the panel shows them.
     PanelValues panel_values() const;
     // Tab: the panel shown (made the first time) or hidden.
@@ -162,8 +161,8 @@ private:
     std::string m_message;  // the last dropped file's error, shown in the HUD
     EstimatorParts m_parts;
     std::string m_view = "image";
-    uint64_t m_view_positions = 0;  // the sub-pixel positions m_view_data covers
-    ChannelImage m_view_data;
+    uint64_t m_view_positions = 0;  // the sub-pixel positions the AOV view covers
+    Image m_view_image;             // what an .exr screenshot of the view holds
     Timer m_since_restart;
     Timer m_frame_timer;
 };

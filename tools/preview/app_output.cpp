@@ -62,8 +62,8 @@ void PreviewApp::update_hud(bool force) {
 void PreviewApp::save(const std::string& path, bool png_from_display) {
     if (lower_extension(path) == ".exr") {
         // scale · Σ + emission + the CPU estimators' image: what the window shows at rest; or
-        // the view's AOV values.
-        write_exr(m_view != "image" ? view_image() : m_integrator->image(), path);
+        // the view's (an AOV's values, the picture with the VPLs).
+        write_exr(m_view != "image" ? m_view_image : m_integrator->image(), path);
     } else if (png_from_display) {
         uint32_t w = 0, h = 0;
         const std::vector<uint8_t> rgba = m_present.captured(w, h);

@@ -1,17 +1,20 @@
-// PreviewApp's views (V, or the script's `view NAME`): the picture, or one of the AOVs `render
-// --aov` writes (engine/aov/aov_images.h) over the current sum's sub-pixel positions, traced on
-// the CPU and shown instead of the radiance.
+// PreviewApp's views (V, or the script's `view NAME`): the picture, one of the AOVs `render --aov`
+// writes (engine/aov/aov_images.h) over the current sum's sub-pixel positions, traced on the CPU,
+// or the picture with the sum's VPLs drawn over it as `mvpl vpls --view camera` draws them.
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <optional>
 
 #include "engine/aov/aov_images.h"
+#include "engine/scene/camera.h"
 #include "tools/preview/app.h"
+#include "tools/session/vpl_dots.h"
 
 namespace mvpl::preview {
 namespace {
 
-constexpr std::array<const char*, 4> kViews{"image", "albedo", "normal", "depth"};
+constexpr std::array<const char*, 5> kViews{"image", "albedo", "normal", "depth", "vpls"};
 // The AOVs are traced on the window's thread, about 0.14 s per sub-pixel position at 512² on two
 // cores (aov_images.h): a view follows the sum's first four positions, not all of them.
 constexpr uint64_t kViewPositions = 4;
@@ -57,6 +60,27 @@ void PreviewApp::next_view() {
 }
 
 void PreviewApp::update_view(bool restarted) {
+    if (m_view == "vpls") {
+        // The picture is read back from the GPU: at the HUD's pace.
+        if (!restarted && m_cpu_timer.seconds() < kHudInterval) return;
+        m_cpu_timer.reset();
+        m_view_image = m_integrator->image();
+        const std::vector<light::Vpl>& all = m_history->vpls();
+        const std::vector<light::Vpl> shaded(all.begin(),
+                                             all.begin() + long(m_replay->vpls_total()));
+        const scene::Camera& camera = m_controller.camera();
+        const int w = m_view_image.width(), h = m_view_image.height();
+        session::draw_vpls(
+            m_view_image,
+            [&](const Vec3& p, Vec2& film) {
+                const std::optional<scene::FilmPoint> f = scene::project_to_film(camera, w, h, p);
+                if (f) film = f->film;
+                return f.has_value();
+            },
+            shaded);
+        m_present.set_cpu_image(m_view_image);
+        return;
+    }
     const render::RenderOptions ro = render_options(m_render_width, m_render_height);
     const integrator::Estimate e = estimate(ro, m_sampler);
     // The VPLs shaded name the positions, up to the first of position kViewPositions; traced
@@ -68,17 +92,13 @@ void PreviewApp::update_view(bool restarted) {
     m_view_positions = positions;
     const std::vector<ChannelImage> aovs =
         aov::render_aovs(view(), e, vpls, aov::parse_aov_list(m_view, "view"));
-    m_view_data = aovs.at(0);
-    m_present.set_cpu_image(display(m_view_data, m_view));
-}
-
-Image PreviewApp::view_image() const {
-    Image image(m_view_data.width, m_view_data.height);
-    const size_t c = m_view_data.channels.size();
-    for (size_t i = 0; i < image.pixels().size(); ++i)
+    const ChannelImage& aov = aovs.at(0);
+    m_view_image = Image(aov.width, aov.height);  // the values (a depth in all three channels)
+    const size_t c = aov.channels.size();
+    for (size_t i = 0; i < m_view_image.pixels().size(); ++i)
         for (int k = 0; k < 3; ++k)
-            image.pixels()[i][k] = m_view_data.values[i * c + std::min(size_t(k), c - 1)];
-    return image;
+            m_view_image.pixels()[i][k] = aov.values[i * c + std::min(size_t(k), c - 1)];
+    m_present.set_cpu_image(display(aov, m_view));
 }
 
 }  // namespace mvpl::preview

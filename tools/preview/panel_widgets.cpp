@@ -73,9 +73,9 @@ void estimator_widgets(const PanelValues& v, std::vector<ScriptEvent>& out) {
 }
 
 void view_widgets(const PanelValues& v, std::string& env_file, std::vector<ScriptEvent>& out) {
-    const std::array<const char*, 4> views{"image", "albedo", "normal", "depth"};
+    const std::array<const char*, 5> views{"image", "albedo", "normal", "depth", "vpls"};
     int shown = int(std::find(views.begin(), views.end(), v.view) - views.begin());
-    if (ImGui::Combo("view", &shown, "image\0albedo\0normal\0depth\0\0"))
+    if (ImGui::Combo("view", &shown, "image\0albedo\0normal\0depth\0vpls\0\0"))
         out.push_back(event("view", {}, views[size_t(shown)]));
     float exposure = v.exposure;
     if (ImGui::SliderFloat("exposure", &exposure, -10.0f, 10.0f, "%+.1f stops"))

@@ -75,9 +75,9 @@ ScriptEvent read_event(std::istringstream& words) {
     } else if (e.action == "set") {
         read_setting(words, e);
     } else if (e.action == "view") {
-        if (!(words >> e.word) ||
-            (e.word != "image" && e.word != "albedo" && e.word != "normal" && e.word != "depth"))
-            throw std::invalid_argument("view needs image, albedo, normal or depth");
+        if (!(words >> e.word) || (e.word != "image" && e.word != "albedo" && e.word != "normal" &&
+                                   e.word != "depth" && e.word != "vpls"))
+            throw std::invalid_argument("view needs image, albedo, normal, depth or vpls");
     } else if (e.action == "drop") {
         std::getline(words >> std::ws, e.word);
         while (!e.word.empty() && std::isspace(static_cast<unsigned char>(e.word.back())))

@@ -12,7 +12,7 @@
 //   FRAME set NAME VALUE…     a setting of settings.h (as the settings panel)
 //   FRAME camera N            the file's camera N (as the panel's camera list)
 //   FRAME fov DEGREES         the vertical field of view
-//   FRAME view NAME           image, albedo, normal or depth (as V)
+//   FRAME view NAME           image, albedo, normal, depth or vpls (as V)
 //   FRAME drop FILE           a scene or environment map dropped on the window
 //
 // FRAME is the index of the frame (from 0) at whose start the event happens; events of one frame

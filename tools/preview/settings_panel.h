@@ -38,7 +38,7 @@ struct PanelValues {
     std::string env_map;
     int cameras = 0;  // the file's
     float fov_degrees = 0.0f;
-    std::string view;  // image, albedo, normal, depth
+    std::string view;  // image, albedo, normal, depth, vpls
 };
 
 class SettingsPanel {
