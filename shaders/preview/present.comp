@@ -34,7 +34,8 @@ void main() {
     const vec4 emission = imageLoad(emission_sum, q);
     const vec3 emitted = emission.rgb / max(emission.a, 1.0);
     vec3 radiance = params.scale * sum + emitted;
-    if (params.cpu_image != 0u) radiance += imageLoad(cpu_image, q).rgb;
+    if (params.cpu_image == 1u) radiance += imageLoad(cpu_image, q).rgb;
+    if (params.cpu_image == 2u) radiance = imageLoad(cpu_image, q).rgb;  // a view (albedo, …)
     vec3 encoded;
     for (int c = 0; c < 3; ++c) {
         const float v = radiance[c] * params.exposure_scale;

@@ -19,7 +19,9 @@ struct PresentPush {
     uint hud_width;  // 0: no HUD
     uint hud_height;
     uint linear_target;  // 1: the window's format encodes sRGB itself
-    uint cpu_image;      // 1: add the CPU estimators' image (the accumulation's size)
+    // 1: add the CPU estimators' image (the accumulation's size); 2: show it instead (a view of
+    // the preview's: albedo, normal, depth)
+    uint cpu_image;
 };
 
 #ifdef __cplusplus

@@ -2,7 +2,6 @@
 // VPLs, and a scripted run (resizes, camera moves, key presses) under the validation layers.
 #include <gtest/gtest.h>
 #include <stb_image.h>
-#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
@@ -14,6 +13,7 @@
 
 #include "engine/core/image.h"
 #include "tests/cli/run_command.h"
+#include "tests/window/preview_run.h"
 
 namespace {
 
@@ -25,9 +25,7 @@ using Result = mvpl::test::CommandResult;
 using mvpl::test::shell_quote;
 
 fs::path temp_dir() {
-    const fs::path dir = fs::temp_directory_path() / ("mvpl_window_" + std::to_string(::getpid()));
-    fs::create_directories(dir);
-    return dir;
+    return mvpl::test::preview_temp_dir();
 }
 
 // prefix: environment assignments and/or a wrapper (xvfb-run) before the mvpl executable.
@@ -35,18 +33,8 @@ Result run(const std::string& prefix, const std::string& args) {
     return mvpl::test::run_mvpl_gpu(args, prefix);
 }
 
-bool have_xvfb() {
-    return std::system("command -v xvfb-run >/dev/null 2>&1") == 0;
-}
-
-// A 24-bit screen (xvfb-run's default of 8 bits offers the Vulkan WSI no usable visual), on a
-// server number that starts from this process's id: `xvfb-run -a` alone races when ctest -j
-// starts two of these tests at once (both take the first free number, 99).
-std::string xvfb() {
-    static int counter = 0;
-    const int server = 100 + int((::getpid() * 7 + counter++) % 800);
-    return "xvfb-run -a -n " + std::to_string(server) + " -s '-screen 0 1024x768x24'";
-}
+using mvpl::test::have_xvfb;
+using mvpl::test::xvfb;
 
 struct Rgb8 {
     int width = 0, height = 0;
@@ -162,13 +150,15 @@ TEST(Preview, ScreenshotMatchesHeadlessRenderWithSpecularChains) {
 }
 
 // Resizes (twice), every camera control, clamping, exposure, a reset, the switch to the
-// Metropolis sampler and a screenshot, with the validation layers on: no message on stderr
-// and exit 0.
+// Metropolis sampler, settings (one of which sets the scene up again), a camera of the file, the
+// settings panel (Dear ImGui's Vulkan backend) and a screenshot, with the validation layers on: no
+// message on stderr and exit 0.
 TEST(Preview, ScriptedRunHasNoValidationMessages) {
     if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt install xvfb)";
     const fs::path script = temp_dir() / "moves.txt";
     std::ofstream(script) << "# frame event\n"
                              "2 resize 160 120\n"
+                             "3 key tab\n"  // the settings panel, drawn from here on
                              "4 orbit 20 5\n"
                              "5 pan 0.1 -0.05\n"
                              "6 zoom 0.8\n"
@@ -180,10 +170,16 @@ TEST(Preview, ScriptedRunHasNoValidationMessages) {
                              "12 key r\n"
                              "13 key minus\n"
                              "14 key m\n"
-                             "15 orbit -10 0\n";
+                             "15 orbit -10 0\n"
+                             "16 set shadow_resolution 64\n"
+                             "16 set max_depth 3\n"
+                             "17 set env_scale 0.5\n"  // the scene set up again
+                             "18 camera 0\n"
+                             "18 fov 50\n"
+                             "19 view normal\n";
     const Result r =
         run("MVPL_VALIDATION=1 " + xvfb(),
-            "preview " + shell_quote(kScene) + " --res 96x64 --paths-per-frame 2 --frames 16" +
+            "preview " + shell_quote(kScene) + " --res 96x64 --paths-per-frame 2 --frames 20" +
                 " --script " + shell_quote(script.string()) + " --screenshot " +
                 shell_quote((temp_dir() / "scripted.png").string()));
     EXPECT_EQ(r.exit_code, 0) << r.err;
@@ -192,6 +188,32 @@ TEST(Preview, ScriptedRunHasNoValidationMessages) {
     // The run's statistics line counts the frames that restarted the sum.
     EXPECT_NE(r.out.find("while moving"), std::string::npos) << r.out;
     EXPECT_TRUE(fs::exists(temp_dir() / "scripted.png"));
+}
+
+// P writes SCENE-NNNN.png and .exr in the working directory at the first free number: a second
+// run in the same folder keeps the first run's pictures and writes the next number.
+TEST(Preview, ScreenshotsOfTwoRunsAreBothKept) {
+    if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt install xvfb)";
+    const fs::path folder = temp_dir() / "shots";
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    const fs::path script = temp_dir() / "p.txt";
+    std::ofstream(script) << "1 key p\n";
+    for (int run = 1; run <= 2; ++run) {
+        const Result r = mvpl::test::run_preview(
+            shell_quote(kScene) + " --res 32x32 --paths-per-frame 2 --frames 2 --script " +
+                shell_quote(script.string()),
+            folder.string());
+        ASSERT_EQ(r.exit_code, 0) << r.err;
+        const std::string name = "cbox-000" + std::to_string(run);
+        EXPECT_NE(r.out.find("wrote " + name + ".png"), std::string::npos) << r.out;
+    }
+    const auto size = [&](const std::string& name) -> uintmax_t {
+        return fs::exists(folder / name) ? fs::file_size(folder / name) : 0;
+    };
+    for (const char* name : {"cbox-0001.png", "cbox-0001.exr", "cbox-0002.png", "cbox-0002.exr"})
+        EXPECT_GT(size(name), 0u) << name;
+    EXPECT_FALSE(fs::exists(folder / "cbox-0003.png"));
 }
 
 // A malformed script is bad input: one error line naming the file, exit 2 (no window needed).

@@ -4,12 +4,17 @@
 
 #include <filesystem>
 #include <fstream>
+#include <set>
 #include <string>
 
 #include "engine/core/error.h"
 #include "tools/preview/camera_controller.h"
 #include "tools/preview/present_pass.h"
+#include "tools/preview/preview_stats.h"
+#include "tools/preview/screenshot_name.h"
 #include "tools/preview/script.h"
+#include "tools/preview/settings.h"
+#include "tools/preview/settings_panel.h"
 #include "tools/preview/window.h"
 
 // The preview's headers, like engine/gpu's, keep Vulkan (and GLFW) to their .cpp files.
@@ -52,6 +57,100 @@ TEST(PreviewScript, ParsesEventsInFrameOrder) {
     fs::remove(path);
 }
 
+TEST(PreviewScript, ParsesSettingsCamerasAndDrops) {
+    const fs::path path = write_file("script_settings",
+                                     "1 set exposure -1.5\n"
+                                     "1 set sampler metropolis\n"
+                                     "1 set env_color 1 0.5 0.25\n"
+                                     "2 camera 3\n"
+                                     "2 fov 45\n"
+                                     "3 drop /some folder/scene.glb  \n");
+    const std::vector<ScriptEvent> events = load_script(path.string());
+    ASSERT_EQ(events.size(), 6u);
+    EXPECT_EQ(events[0].action, "set");
+    EXPECT_EQ(events[0].key, "exposure");
+    EXPECT_EQ(events[0].values, (std::vector<float>{-1.5f}));
+    EXPECT_EQ(events[1].word, "metropolis");
+    EXPECT_EQ(events[2].values, (std::vector<float>{1.0f, 0.5f, 0.25f}));
+    EXPECT_EQ(events[3].values, (std::vector<float>{3.0f}));
+    EXPECT_EQ(events[4].action, "fov");
+    EXPECT_EQ(events[5].word, "/some folder/scene.glb");  // the rest of the line, trimmed
+    fs::remove(path);
+}
+
+// Every setting the script names is one the table holds, once (the panel lists the table).
+TEST(PreviewSettingsTable, NamesAreUniqueAndRangesChecked) {
+    std::set<std::string> names;
+    for (const SettingSpec& s : setting_specs()) {
+        EXPECT_TRUE(names.insert(s.name).second) << s.name;
+        EXPECT_EQ(find_setting(s.name), &s);
+        if (s.values > 0) {
+            EXPECT_EQ(check_setting_value(s, s.min), "") << s.name;
+            EXPECT_NE(check_setting_value(s, s.max + 1.0f), "") << s.name;
+        }
+    }
+    EXPECT_EQ(find_setting("nonesuch"), nullptr);
+}
+
+std::string joined(const std::vector<std::string>& lines) {
+    std::string text;
+    for (const std::string& line : lines)
+        text += line + "\n";
+    return text;
+}
+
+// The HUD says what the estimate has on, and VPL/s is VPLs over the last second's span: 500 at
+// 0.5 s and 500 at 1 s after the first frame are 1000 VPL/s.
+TEST(PreviewHud, SaysWhatIsOnAndTheRate) {
+    PreviewStats stats;
+    stats.frame_presented(0.01, 0.0, false);
+    stats.add_vpls(500);
+    stats.frame_presented(0.01, 0.5, false);
+    stats.add_vpls(500);
+    stats.frame_presented(0.01, 1.0, false);
+    EXPECT_DOUBLE_EQ(stats.vpls_per_second(), 1000.0);
+    HudState h;
+    h.sampler = "mc";
+    h.vpls = 1000;
+    h.seconds = 2.5;
+    h.parts.clamp = 0.1f;
+    h.parts.compensation = false;
+    h.parts.caustics = true;
+    h.parts.vsl_radius = 0.03f;
+    std::string text = joined(stats.hud_lines(h));
+    for (const char* says : {"VPLs 1000", "1000 VPL/s", "2.5 s since restart",
+                             "clamp 0.100 x diagonal, NOT compensated", "caustics on",
+                             "specular chains off", "VSL radius 0.030"})
+        EXPECT_NE(text.find(says), std::string::npos) << says << " not in\n" << text;
+    h.parts.clamp = 0.0f;
+    h.parts.caustics = false;
+    h.parts.chains = true;
+    h.parts.vsl_radius = 0.0f;
+    text = joined(stats.hud_lines(h));
+    for (const char* says : {"clamp off", "caustics off", "specular chains on", "VSL off"})
+        EXPECT_NE(text.find(says), std::string::npos) << says << " not in\n" << text;
+    h.parts.clamp = 0.1f;
+    h.parts.compensation = true;
+    h.parts.moving = true;  // the CPU passes wait for the camera to rest
+    text = joined(stats.hud_lines(h));
+    EXPECT_NE(text.find("compensated (at rest)"), std::string::npos) << text;
+}
+
+// Screenshot names: the first number whose .png and .exr are both free, then the next.
+TEST(ScreenshotName, SkipsNumbersInUse) {
+    const fs::path folder = fs::temp_directory_path() / ("shots" + std::to_string(::getpid()));
+    fs::remove_all(folder);
+    fs::create_directories(folder);
+    std::ofstream(folder / "cbox-0001.png") << "x";
+    std::ofstream(folder / "cbox-0002.exr") << "x";
+    uint32_t number = 1;
+    EXPECT_EQ(next_screenshot(folder, "cbox", &number), folder / "cbox-0003");
+    EXPECT_EQ(number, 4u);
+    EXPECT_EQ(next_screenshot(folder, "cbox", &number), folder / "cbox-0004");
+    EXPECT_EQ(next_screenshot(folder, "other", &number), folder / "other-0005");
+    fs::remove_all(folder);
+}
+
 TEST(PreviewScript, RejectsMalformedLinesWithTheirNumber) {
     const struct {
         const char* text;
@@ -60,10 +159,21 @@ TEST(PreviewScript, RejectsMalformedLinesWithTheirNumber) {
         {"x orbit 1 2\n", "line 1: expected a frame number"},
         {"1 orbit 1\n", "line 1: orbit needs 2 numbers"},
         {"\n1 zoom 0\n", "line 2: zoom needs a positive factor"},
-        {"1 key q\n", "line 1: key needs one of"},
+        {"1 key q\n", "line 1: key needs one of r, plus, minus, m, c, p, v, tab, escape"},
+        {"1 view albedos\n", "line 1: view needs image, albedo, normal, depth or vpls"},
         {"1 resize 0 10\n", "line 1: resize needs a size"},
         {"1 pan 1 2 3\n", "line 1: unexpected '3'"},
         {"-1 zoom 2\n", "line 1: expected a frame number"},
+        {"1 set\n", "line 1: set needs a setting's name"},
+        {"1 set gamma 2\n", "line 1: unknown setting 'gamma'"},
+        {"1 set max_depth 0\n", "line 1: max_depth needs a whole number in [-1, 1024]"},
+        {"1 set clamp 1.5\n", "line 1: clamp needs a number in [0, 1]"},
+        {"1 set compensate 0.5\n", "line 1: compensate needs a whole number"},
+        {"1 set env_color 1 1\n", "line 1: env_color needs 3 numbers"},
+        {"1 set sampler bdpt\n", "line 1: sampler needs mc or metropolis"},
+        {"1 camera -1\n", "line 1: camera needs a camera's index"},
+        {"1 fov 180\n", "line 1: fov needs degrees in (0, 180)"},
+        {"1 drop\n", "line 1: drop needs a file"},
     };
     for (const auto& c : cases) {
         const fs::path path = write_file("script_bad", c.text);

@@ -1,4 +1,5 @@
 // `mvpl preview`: the interactive window (tools/preview).
+#include <cstdio>
 #include <string>
 
 #include "engine/core/error.h"
@@ -7,6 +8,7 @@
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/preview/preview_app.h"
+#include "tools/preview/settings.h"
 
 namespace mvpl::cli {
 
@@ -42,7 +44,7 @@ struct PreviewArgs {
 
 void add_options(ArgParser& parser, PreviewArgs& a) {
     preview::PreviewOptions& o = a.o;
-    parser.add_positional("SCENE", &o.scene_path, "glTF 2.0 scene (.gltf or .glb)");
+    parser.add_positional("SCENE", &o.scene_path, "scene (.gltf, .glb, .xml, .ply, .obj)");
     parser.add_resolution("--res", &a.width, &a.height, "initial window size");
     parser.add_float("--budget-ms", &a.budget, "shading time per frame in milliseconds", "MS");
     parser.add_uint64("--paths-per-frame", &o.paths_per_frame,
@@ -120,29 +122,52 @@ preview::PreviewOptions checked_options(const PreviewArgs& a) {
     return o;
 }
 
-}  // namespace
-
-int run_preview(const Args& args) {
-    PreviewArgs a;
-    ArgParser parser(
-        "preview",
+// The help's description: controls, the script format and the settings it sets (settings.h).
+std::string description() {
+    std::string text =
         "Opens a window that renders SCENE progressively with virtual point lights: each frame\n"
         "shades as many VPL batches as fit --budget-ms (or --paths-per-frame light paths) and\n"
         "shows the running average; moving the camera restarts it.\n"
         "\n"
         "Controls: left drag orbit, middle or shift+left drag pan, wheel zoom, WASD (Q/E down/up)\n"
         "and right drag fly, R reset view, +/- exposure, M switch sampler (mc/metropolis),\n"
-        "C clamping on/off, P screenshot (mvpl-preview-N.png and .exr), Esc quit.\n"
+        "C clamping on/off, P screenshot (SCENE-NNNN.png and .exr in the working directory, at\n"
+        "the first number no file has), V view (image; albedo, normal, depth: the AOVs of\n"
+        "render --aov; vpls: the VPLs over the image, as mvpl vpls --view camera), Tab the\n"
+        "settings panel (shown at the start unless\n"
+        "--frames is given), Esc quit. Drop a scene file (.gltf .glb .xml .ply .obj)\n"
+        "on the window to open it, an .hdr or .exr to light the scene with it; a file that cannot\n"
+        "be read is reported (in the window and on stderr) and changes nothing.\n"
         "\n"
         "--script FILE drives the window without a user: one event a line, `#` comments,\n"
         "  FRAME orbit YAW PITCH     degrees        FRAME look YAW PITCH    degrees about the eye\n"
         "  FRAME pan RIGHT UP        view heights   FRAME zoom FACTOR       distance x FACTOR\n"
         "  FRAME fly FWD RIGHT UP    scene diagonals\n"
-        "  FRAME resize W H          window size    FRAME key NAME          r plus minus m c p "
-        "escape\n"
+        "  FRAME resize W H          window size    FRAME key NAME          r plus minus m c p v "
+        "tab escape\n"
+        "  FRAME camera N            the file's camera N (as render --camera N)\n"
+        "  FRAME fov DEGREES         vertical field of view\n"
+        "  FRAME view NAME           image, albedo, normal, depth or vpls (as V)\n"
+        "  FRAME drop FILE           as a file dropped on the window\n"
+        "  FRAME set NAME ARGS...    a setting (exposure only re-tonemaps; the others restart\n"
+        "                            the average, some draw the VPLs again):\n";
+    for (const preview::SettingSpec& spec : preview::setting_specs()) {
+        char line[160];
+        std::snprintf(line, sizeof line, "      %-18s %s\n", spec.name, spec.meaning);
+        text += line;
+    }
+    text +=
         "where FRAME is the index (from 0) of the frame at whose start the event happens.\n"
         "--frames N with --screenshot FILE renders N frames, writes the last (.png: the window's\n"
-        "picture without the HUD; .exr: linear radiance) and exits.");
+        "picture without the HUD; .exr: linear radiance) and exits.";
+    return text;
+}
+
+}  // namespace
+
+int run_preview(const Args& args) {
+    PreviewArgs a;
+    ArgParser parser("preview", description());
     add_options(parser, a);
     if (!parser.parse(args)) return 0;
     return preview::run_preview(checked_options(a));

@@ -22,6 +22,7 @@
 #include "tools/cli/option_groups.h"
 #include "tools/cli/output_check.h"
 #include "tools/session/scene_session.h"
+#include "tools/session/vpl_dots.h"
 
 namespace mvpl::cli {
 
@@ -87,17 +88,6 @@ View make_view(const scene::Scene& scene, bool top, int width, int height) {
     return v;
 }
 
-void draw_dot(Image& image, const Vec2& c, float radius, const Rgb& colour) {
-    const int x0 = int(std::floor(c.x - radius)), x1 = int(std::ceil(c.x + radius));
-    const int y0 = int(std::floor(c.y - radius)), y1 = int(std::ceil(c.y + radius));
-    for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y) {
-        for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) {
-            const float dx = float(x) + 0.5f - c.x, dy = float(y) + 0.5f - c.y;
-            if (dx * dx + dy * dy <= radius * radius) image.at(x, y) = colour;
-        }
-    }
-}
-
 // The scene as the view sees it, flat grey.
 Image flat_view(const scene::Scene& scene, const trace::Accel& accel, const View& view) {
     Image image(view.width, view.height);
@@ -115,27 +105,6 @@ Image flat_view(const scene::Scene& scene, const trace::Accel& accel, const View
     return image;
 }
 
-// The VPLs the view sees as dots over `image`; how many were drawn.
-size_t draw_vpls(Image& image, const View& view, const std::vector<light::Vpl>& vpls) {
-    float max_power = 0.0f;
-    for (const light::Vpl& v : vpls)
-        max_power = std::max(max_power, luminance(v.power));
-    // Powers as the sampler weighted them, relative to the largest: area ∝ power, at least a
-    // pixel wide.
-    size_t drawn = 0;
-    for (const light::Vpl& v : vpls) {
-        Vec2 film;
-        if (v.type == light::VplType::Directional || !view.project(v.position, film)) continue;
-        const float rel = max_power > 0.0f ? luminance(v.power) / max_power : 0.0f;
-        const float radius =
-            0.8f + 0.004f * float(std::min(view.width, view.height)) * std::sqrt(rel);
-        const bool emitter = v.path_length == 0;
-        draw_dot(image, film, radius, emitter ? Rgb(1.0f, 0.9f, 0.2f) : Rgb(1.0f, 0.35f, 0.1f));
-        ++drawn;
-    }
-    return drawn;
-}
-
 }  // namespace
 
 int run_vpls(const Args& args) {
@@ -149,7 +118,7 @@ int run_vpls(const Args& args) {
                      "Draws where a sampler puts its VPLs: dots over a flat-shaded view of SCENE\n"
                      "(top: from above, back faces cut away; camera: the scene camera).\n"
                      "Yellow: emitter VPLs; orange: surface VPLs; dot area grows with power.");
-    parser.add_positional("SCENE", &scene_path, "glTF 2.0 scene (.gltf or .glb)");
+    parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .xml, .ply, .obj)");
     parser.begin_group("VPLs options");  // not "Vpls", the command's name capitalised
     parser.add_uint64("--vpls", &count, "light paths (mc) or chain steps (metropolis)");
     parser.add_string("--view", &view_name, "top (default) or camera", "top|camera");
@@ -192,7 +161,8 @@ int run_vpls(const Args& args) {
 
     const View view = make_view(scene, view_name == "top", width, height);
     Image image = flat_view(scene, accel, view);
-    const size_t drawn = draw_vpls(image, view, vpls);
+    const size_t drawn = session::draw_vpls(
+        image, [&view](const Vec3& p, Vec2& film) { return view.project(p, film); }, vpls);
     ExrExtras extras;
     extras.attributes =
         run_attributes({"vpls", &args, settings.seed, vpls.size(), std::nullopt, wall.seconds()});

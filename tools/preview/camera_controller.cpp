@@ -30,6 +30,11 @@ void CameraController::reset() {
     m_yaw = std::atan2(back.x, back.z);
 }
 
+void CameraController::set_fov(float yfov) {
+    m_initial.yfov = yfov;
+    m_camera.yfov = yfov;
+}
+
 void CameraController::update() {
     const Vec3 back(std::cos(m_pitch) * std::sin(m_yaw), std::sin(m_pitch),
                     std::cos(m_pitch) * std::cos(m_yaw));

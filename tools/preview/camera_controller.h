@@ -14,6 +14,8 @@ public:
 
     const scene::Camera& camera() const { return m_camera; }
     void reset();
+    // The vertical field of view in radians (kept by reset()).
+    void set_fov(float yfov);
 
     // Angles in degrees: yaw about world up, pitch about the camera's right axis.
     void orbit(float yaw_degrees, float pitch_degrees);

@@ -311,7 +311,7 @@ void PresentPass::record(const gpu::SwapchainFrame& frame, const gpu::Image& acc
     push.source_width = accumulation.width();
     push.source_height = accumulation.height();
     push.linear_target = m.linear_target ? 1u : 0u;
-    push.cpu_image = cpu ? 1u : 0u;
+    push.cpu_image = cpu ? (params.cpu_image_only ? 2u : 1u) : 0u;
     const bool hud = params.hud && m.hud_width > 0;
     if (capture) {
         m.capture(cmd, push, hud);

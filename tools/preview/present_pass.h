@@ -24,6 +24,8 @@ struct PresentParams {
     double scale = 1.0;  // the VPL stream's scale()
     float exposure = 0.0f;
     bool hud = true;
+    // Show the CPU image alone (a view such as albedo) instead of adding it to the radiance.
+    bool cpu_image_only = false;
 };
 
 class PresentPass {

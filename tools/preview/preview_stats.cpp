@@ -51,22 +51,27 @@ double PreviewStats::vpls_per_second() const {
     return span > 0.0 ? double(vpls) / span : 0.0;
 }
 
-std::vector<std::string> PreviewStats::hud_lines(const std::string& sampler, bool chain,
-                                                 uint32_t width, uint32_t height, size_t vpls,
-                                                 uint64_t work, float clamp, float exposure,
-                                                 const std::string& statistics,
-                                                 bool converged) const {
+std::vector<std::string> PreviewStats::hud_lines(const HudState& h) const {
     std::vector<std::string> lines;
-    lines.push_back(format("%ux%u  sampler %s%s", width, height, sampler.c_str(),
-                           converged ? "  (converged)" : ""));
-    lines.push_back(format("VPLs %zu  (%llu %s)  %.0f VPL/s", vpls,
-                           static_cast<unsigned long long>(work),
-                           chain ? "chain steps" : "light paths", vpls_per_second()));
-    lines.push_back(format("frame %.1f ms", m_last_ms));
-    lines.push_back(clamp > 0.0f
-                        ? format("clamping %.3f x diagonal  exposure %+.1f", clamp, exposure)
-                        : format("clamping off  exposure %+.1f", exposure));
-    if (!statistics.empty()) lines.push_back(statistics);
+    lines.push_back(format("%ux%u  sampler %s%s", h.width, h.height, h.sampler.c_str(),
+                           h.converged ? "  (converged)" : ""));
+    lines.push_back(format("VPLs %zu  (%llu %s)  %.0f VPL/s", h.vpls,
+                           static_cast<unsigned long long>(h.work),
+                           h.chain ? "chain steps" : "light paths", vpls_per_second()));
+    lines.push_back(format("frame %.1f ms  %.1f s since restart  exposure %+.1f", m_last_ms,
+                           h.seconds, h.exposure));
+    const EstimatorParts& p = h.parts;
+    const char* passes = p.moving ? " (at rest)" : "";
+    lines.push_back(p.clamp > 0.0f
+                        ? format("clamp %.3f x diagonal, %s%s", p.clamp,
+                                 p.compensation ? "compensated" : "NOT compensated (darker)",
+                                 p.compensation ? passes : "")
+                        : format("clamp off"));
+    std::string parts = p.caustics ? format("caustics on%s", passes) : "caustics off";
+    parts += p.chains ? "  specular chains on" : "  specular chains off";
+    parts += p.vsl_radius > 0.0f ? format("  VSL radius %.3f", p.vsl_radius) : "  VSL off (points)";
+    lines.push_back(parts);
+    if (!h.statistics.empty()) lines.push_back(h.statistics);
     return lines;
 }
 

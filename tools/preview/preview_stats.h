@@ -9,6 +9,30 @@
 
 namespace mvpl::preview {
 
+// Which parts of the estimator (the one `mvpl render` runs) the current sum has on, for the HUD.
+struct EstimatorParts {
+    float clamp = 0.0f;         // × the scene diagonal; 0: not clamped
+    bool compensation = false;  // the clamped light added back (CPU passes, at rest)
+    bool caustics = false;      // the caustic tracer runs (at rest, where the scene has them)
+    bool chains = false;        // specular chains traced (the scene has surfaces they continue)
+    float vsl_radius = 0.0f;    // 0: point VPLs
+    bool moving = false;        // a moving frame's sum: the CPU passes wait for the camera
+};
+
+// What the HUD says of the current sum.
+struct HudState {
+    std::string sampler;
+    bool chain = false;  // a Metropolis chain's units (steps), not light paths
+    uint32_t width = 0, height = 0;
+    size_t vpls = 0;
+    uint64_t work = 0;
+    double seconds = 0.0;  // since the sum began (the last restart)
+    float exposure = 0.0f;
+    std::string statistics;  // the sampler's
+    bool converged = false;
+    EstimatorParts parts;
+};
+
 class PreviewStats {
 public:
     void add_vpls(size_t count);
@@ -23,10 +47,7 @@ public:
     double vpls_per_second() const;
     double last_frame_ms() const { return m_last_ms; }
 
-    std::vector<std::string> hud_lines(const std::string& sampler, bool chain, uint32_t width,
-                                       uint32_t height, size_t vpls, uint64_t work, float clamp,
-                                       float exposure, const std::string& statistics,
-                                       bool converged) const;
+    std::vector<std::string> hud_lines(const HudState& state) const;
     // One line for the end of a run.
     std::string summary() const;
 

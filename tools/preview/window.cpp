@@ -48,6 +48,9 @@ Window::Window(const std::string& title, int width, int height) {
                              [](GLFWwindow* w, double x, double y) { self(w)->on_cursor(x, y); });
     glfwSetScrollCallback(m_window,
                           [](GLFWwindow* w, double, double dy) { self(w)->on_scroll(dy); });
+    glfwSetDropCallback(m_window, [](GLFWwindow* w, int count, const char** paths) {
+        self(w)->on_drop(count, paths);
+    });
 }
 
 Window::~Window() {
@@ -136,6 +139,12 @@ void Window::on_key(int key, int action, int) {
         case GLFW_KEY_P:
             m_input.keys.push_back("p");
             break;
+        case GLFW_KEY_V:
+            m_input.keys.push_back("v");
+            break;
+        case GLFW_KEY_TAB:
+            m_input.keys.push_back("tab");
+            break;
         case GLFW_KEY_ESCAPE:
             m_input.keys.push_back("escape");
             break;
@@ -169,6 +178,11 @@ void Window::on_cursor(double x, double y) {
 
 void Window::on_scroll(double dy) {
     m_input.wheel += float(dy);
+}
+
+void Window::on_drop(int count, const char** paths) {
+    for (int i = 0; i < count; ++i)
+        m_input.drops.emplace_back(paths[i]);
 }
 
 }  // namespace mvpl::preview

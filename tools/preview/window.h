@@ -12,13 +12,14 @@ struct GLFWwindow;
 namespace mvpl::preview {
 
 // Input gathered between two polls. Drags in pixels; keys by name (r, plus, minus, m, c, p,
-// escape), in the order pressed.
+// tab, escape), in the order pressed.
 struct Input {
     float orbit_x = 0.0f, orbit_y = 0.0f;  // left drag
     float pan_x = 0.0f, pan_y = 0.0f;      // middle or shift+left drag
     float look_x = 0.0f, look_y = 0.0f;    // right drag
     float wheel = 0.0f;                    // scroll steps, positive away from the user
     std::vector<std::string> keys;
+    std::vector<std::string> drops;  // files dropped on the window, in the order dropped
     // WASD held now: forward (W − S), right (D − A), up (E − Q).
     int fly_forward = 0, fly_right = 0, fly_up = 0;
 };
@@ -35,6 +36,8 @@ public:
     static std::vector<std::string> required_instance_extensions();
     static bool can_present(VkInstance instance, VkPhysicalDevice device, uint32_t queue_family);
     VkSurfaceKHR create_surface(VkInstance instance) const;
+    // For Dear ImGui's GLFW backend (settings_panel.cpp).
+    GLFWwindow* handle() const { return m_window; }
 
     void poll();
     Input take_input();
@@ -49,6 +52,7 @@ public:
     void on_key(int key, int action, int mods);
     void on_cursor(double x, double y);
     void on_scroll(double dy);
+    void on_drop(int count, const char** paths);
 
 private:
     GLFWwindow* m_window = nullptr;

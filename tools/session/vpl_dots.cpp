@@ -1,0 +1,42 @@
+#include "tools/session/vpl_dots.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace mvpl::session {
+namespace {
+
+void draw_dot(Image& image, const Vec2& c, float radius, const Rgb& colour) {
+    const int x0 = int(std::floor(c.x - radius)), x1 = int(std::ceil(c.x + radius));
+    const int y0 = int(std::floor(c.y - radius)), y1 = int(std::ceil(c.y + radius));
+    for (int y = std::max(y0, 0); y <= std::min(y1, image.height() - 1); ++y) {
+        for (int x = std::max(x0, 0); x <= std::min(x1, image.width() - 1); ++x) {
+            const float dx = float(x) + 0.5f - c.x, dy = float(y) + 0.5f - c.y;
+            if (dx * dx + dy * dy <= radius * radius) image.at(x, y) = colour;
+        }
+    }
+}
+
+}  // namespace
+
+size_t draw_vpls(Image& image, const std::function<bool(const Vec3&, Vec2&)>& project,
+                 const std::vector<light::Vpl>& vpls) {
+    float max_power = 0.0f;
+    for (const light::Vpl& v : vpls)
+        max_power = std::max(max_power, luminance(v.power));
+    // Powers as the sampler weighted them, relative to the largest: area ∝ power, at least a
+    // pixel wide.
+    size_t drawn = 0;
+    for (const light::Vpl& v : vpls) {
+        Vec2 film;
+        if (v.type == light::VplType::Directional || !project(v.position, film)) continue;
+        const float rel = max_power > 0.0f ? luminance(v.power) / max_power : 0.0f;
+        const float radius =
+            0.8f + 0.004f * float(std::min(image.width(), image.height())) * std::sqrt(rel);
+        draw_dot(image, film, radius, v.path_length == 0 ? kEmitterDot : kBounceDot);
+        ++drawn;
+    }
+    return drawn;
+}
+
+}  // namespace mvpl::session
