@@ -162,6 +162,19 @@ std::vector<BenchConfig> sweep_configs(const BenchConfig& config, size_t* device
     return configs;
 }
 
+// What the main configuration is compared with: --sweep's, and with row-column sampling every
+// VPL shaded (the same VPLs).
+std::vector<BenchConfig> compared_configs(const BenchArgs& a, size_t* devices_sweep) {
+    std::vector<BenchConfig> configs =
+        a.sweep ? sweep_configs(a.config, devices_sweep) : std::vector<BenchConfig>{};
+    if (a.config.many_lights.enabled()) {
+        BenchConfig every_vpl = a.config;
+        every_vpl.many_lights.pool = 0;
+        configs.push_back(every_vpl);
+    }
+    return configs;
+}
+
 // One repeat's scene, device and integrators, built from scratch so that start-up is measured
 // every repeat too.
 struct BenchSetup {
@@ -260,14 +273,7 @@ int run_bench(const Args& args) {
         if (!a.json_path.empty() && ranks.root()) json_out = open_output(a.json_path);
     });
     size_t devices_sweep = SIZE_MAX;
-    std::vector<BenchConfig> sweep =
-        a.sweep ? sweep_configs(a.config, &devices_sweep) : std::vector<BenchConfig>{};
-    if (a.config.many_lights.enabled()) {
-        // Row-column sampling against every VPL shaded, with the same VPLs.
-        BenchConfig every_vpl = a.config;
-        every_vpl.many_lights.pool = 0;
-        sweep.push_back(every_vpl);
-    }
+    std::vector<BenchConfig> sweep = compared_configs(a, &devices_sweep);
 
     BenchReport report;
     report.scene = a.scene_path;
