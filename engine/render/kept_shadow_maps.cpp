@@ -27,7 +27,8 @@ KeptShadowMaps::KeptShadowMaps(gpu::Context& context, bool directional, uint32_t
       m_layers(directional ? 1 : 6),
       m_resolution(resolution),
       m_maps_per_pool(std::max(maps_per_pool, 1u)),
-      m_capacity(capacity_of(budget_bytes, directional, resolution)) {}
+      m_capacity(capacity_of(budget_bytes, directional, resolution)),
+      m_budget_bytes(budget_bytes) {}
 
 size_t KeptShadowMaps::KeyHash::operator()(const Key& key) const {
     // FNV-1a over the key's words.

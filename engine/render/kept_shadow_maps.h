@@ -42,6 +42,7 @@ constexpr uint64_t kDefaultKeptBytes = 1ull << 30;
 struct KeptMapStats {
     uint32_t maps = 0;      // held now
     uint32_t capacity = 0;  // the budget's (0: none kept)
+    uint64_t budget_bytes = 0;
     uint64_t restored = 0;  // copied back instead of drawn, since the renderer was built
 };
 
@@ -56,6 +57,7 @@ public:
     }
     // How many maps the budget holds.
     uint32_t capacity() const { return m_capacity; }
+    uint64_t budget_bytes() const { return m_budget_bytes; }
     uint32_t size() const { return uint32_t(m_index.size()); }
     // Maps copied back by restore() since construction.
     uint64_t restored() const { return m_restored; }
@@ -101,6 +103,7 @@ private:
     uint32_t m_resolution;
     uint32_t m_maps_per_pool;
     uint32_t m_capacity;
+    uint64_t m_budget_bytes;
     std::vector<gpu::Image> m_pools;
     std::vector<Slot> m_slots;  // one per place in the allocated pools
     std::unordered_map<Key, uint32_t, KeyHash> m_index;

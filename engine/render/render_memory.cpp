@@ -31,8 +31,6 @@ MemoryEstimate estimate_memory(const RenderOptions& o) {
     e.device_bytes = g_buffer + pixels * kD32f + 2 * pixels * kRgba32f + cubes +
                      texels * kD32f * 6 + ortho + texels * kD32f;
     e.largest_image = std::max({g_buffer, cubes, ortho});
-    // Kept cubes (kept_shadow_maps.h) at most their budget, in pools of a batch's cubes.
-    e.device_bytes += o.kept_shadow_bytes;
     // The accumulation and the emission sum read back as RGBA32F, then the linear RGB image.
     e.host_bytes = pixels * (2 * kRgba32f + 12);
     if (o.chains.enabled()) {
@@ -77,6 +75,18 @@ std::string memory_shortfall(const RenderOptions& o, const gpu::DeviceInfo& devi
                device.name + " allocates at most " + gigabytes(max_allocation) + " at once";
     }
     return host_memory_shortfall(what, e.host_bytes, host_bytes);
+}
+
+uint64_t kept_maps_budget(uint64_t requested, const gpu::DeviceInfo& device, uint64_t host_bytes) {
+    uint64_t available = host_bytes;  // a CPU device's memory is the host's (above)
+    if (device.type != gpu::DeviceType::cpu) {
+        available = 0;
+        for (const gpu::MemoryHeapInfo& h : device.heaps) {
+            if (h.device_local) available = std::max(available, h.size);
+        }
+    }
+    if (available == 0) return requested;  // unknown
+    return std::min(requested, available / kKeptMapsShare);
 }
 
 }  // namespace mvpl::render

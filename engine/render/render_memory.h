@@ -25,4 +25,11 @@ MemoryEstimate estimate_memory(const RenderOptions& options);
 std::string memory_shortfall(const RenderOptions& options, const gpu::DeviceInfo& device,
                              uint64_t host_bytes, uint32_t devices = 1);
 
+// The memory kept shadow maps may take (RenderOptions::kept_shadow_bytes): what was asked, at
+// most 1/kKeptMapsShare of the device's largest local heap (of the host's physical memory on a
+// CPU device: host_memory_bytes()). A cache, not a requirement: memory_shortfall() does not count
+// it, and a small machine keeps fewer maps instead of refusing the render.
+constexpr uint64_t kKeptMapsShare = 4;
+uint64_t kept_maps_budget(uint64_t requested, const gpu::DeviceInfo& device, uint64_t host_bytes);
+
 }  // namespace mvpl::render

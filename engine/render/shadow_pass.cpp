@@ -263,6 +263,7 @@ KeptMapStats ShadowPass::kept() const {
         if (!kept) continue;
         stats.maps += kept->size();
         stats.capacity += kept->capacity();
+        stats.budget_bytes += kept->budget_bytes();
         stats.restored += kept->restored();
     }
     return stats;

@@ -118,7 +118,8 @@ void VplRenderer::Impl::prepare(const RenderOptions& o) {
     if (!shortfall.empty()) throw UsageError(shortfall);
     if (!g_buffer || o.width != built_for.width || o.height != built_for.height)
         switch_size(o.width, o.height, cache);
-    const ShadowPassOptions so = shadow_pass_options(o);
+    ShadowPassOptions so = shadow_pass_options(o);
+    so.kept_bytes = kept_maps_budget(so.kept_bytes, context->device_info(), host_memory_bytes());
     if (!shadow || shadow->options() != so) {
         shadow = std::make_unique<ShadowPass>(*context, geometry, *clusters, so);
         shading.reset();

@@ -62,5 +62,21 @@ TEST(RenderMemory, DevicesMultiplyTheEstimate) {
     EXPECT_NE(twice.find("32 VPLs a batch on 2 devices needs about"), std::string::npos) << twice;
 }
 
+// Kept shadow maps are a cache (kept_shadow_maps.h): their budget is what was asked, at most a
+// quarter of the device's heap (of the host's memory on a CPU device), and never refuses the
+// render; an unknown host size leaves the request.
+TEST(RenderMemory, KeptMapsTakeAtMostAQuarterOfTheMemoryAndRefuseNothing) {
+    const gpu::DeviceInfo gpu8 = device(gpu::DeviceType::discrete_gpu, 8 * kGiB);
+    const gpu::DeviceInfo cpu = device(gpu::DeviceType::cpu, 2 * kGiB);
+    EXPECT_EQ(kept_maps_budget(kGiB, gpu8, 64 * kGiB), kGiB);
+    EXPECT_EQ(kept_maps_budget(4 * kGiB, gpu8, 64 * kGiB), 2 * kGiB);
+    EXPECT_EQ(kept_maps_budget(kGiB, cpu, 2 * kGiB), kGiB / 2);
+    EXPECT_EQ(kept_maps_budget(kGiB, cpu, 0), kGiB);
+    RenderOptions o = options(512);
+    const uint64_t needed = estimate_memory(o).device_bytes + estimate_memory(o).host_bytes;
+    o.kept_shadow_bytes = 64 * kGiB;
+    EXPECT_EQ(memory_shortfall(o, cpu, needed + kGiB, 1), "");
+}
+
 }  // namespace
 }  // namespace mvpl::render

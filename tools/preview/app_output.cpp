@@ -81,7 +81,7 @@ void PreviewApp::print_kept_maps() const {
         "preview: kept shadow maps: %u of at most %u (%.0f MiB budget); %llu copied back "
         "instead of drawn; beyond the budget, maps of VPLs not shaded since the last "
         "restart are evicted first\n",
-        kept.maps, kept.capacity, double(m_options.kept_shadow_bytes) / (1 << 20),
+        kept.maps, kept.capacity, double(kept.budget_bytes) / (1 << 20),
         (unsigned long long)kept.restored);
 }
 
