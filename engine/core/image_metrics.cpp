@@ -20,8 +20,7 @@ ImageError compare_images(const Image& image, const Image& reference) {
     DVec3 sum_x(0.0), sum_r(0.0);
     double rel = 0.0, sq = 0.0, abs_sum = 0.0;
     const size_t n = image.pixels().size();
-    // The spike metrics' +10⁻²: relMSE's guard against dividing by black pixels, unsquared.
-    constexpr double kGuard = 1e-2;
+    constexpr double kGuard = kRelMseGuard;  // the spike metrics', unsquared
     std::vector<double> rel_err(n);
     for (size_t i = 0; i < n; ++i) {
         const DVec3 x(image.pixels()[i]);
@@ -34,7 +33,7 @@ ImageError compare_images(const Image& image, const Image& reference) {
         sum_x += x;
         sum_r += r;
         for (int c = 0; c < 3; ++c) {
-            rel += d[c] * d[c] / (r[c] * r[c] + 1e-2);
+            rel += d[c] * d[c] / (r[c] * r[c] + kRelMseGuard);
             sq += d[c] * d[c];
             abs_sum += std::abs(d[c]);
         }

@@ -7,6 +7,10 @@
 
 namespace mvpl {
 
+// relMSE's guard against dividing by black pixels: the 10⁻² of r² + 10⁻² (the spike metrics use
+// it unsquared).
+constexpr double kRelMseGuard = 1e-2;
+
 struct ImageError {
     double rel_mse = 0.0;
     double rmse = 0.0;

@@ -133,7 +133,8 @@ std::string description() {
         "and right drag fly, R reset view, +/- exposure, M switch sampler (mc/metropolis),\n"
         "C clamping on/off, P screenshot (SCENE-NNNN.png and .exr in the working directory, at\n"
         "the first number no file has), V view (image; albedo, normal, depth: the AOVs of\n"
-        "render --aov; vpls: the VPLs over the image, as mvpl vpls --view camera), Tab the\n"
+        "render --aov; vpls: the VPLs over the image, as mvpl vpls --view camera; error: each\n"
+        "pixel's relative standard error from the variance between frames), Tab the\n"
         "settings panel (shown at the start unless\n"
         "--frames is given), Esc quit. Drop a scene file (.gltf .glb .xml .ply .obj)\n"
         "on the window to open it, an .hdr or .exr to light the scene with it; a file that cannot\n"
@@ -147,7 +148,7 @@ std::string description() {
         "tab escape\n"
         "  FRAME camera N            the file's camera N (as render --camera N)\n"
         "  FRAME fov DEGREES         vertical field of view\n"
-        "  FRAME view NAME           image, albedo, normal, depth or vpls (as V)\n"
+        "  FRAME view NAME           image, albedo, normal, depth, vpls or error (as V)\n"
         "  FRAME drop FILE           as a file dropped on the window\n"
         "  FRAME set NAME ARGS...    a setting (exposure only re-tonemaps; the others restart\n"
         "                            the average, some draw the VPLs again):\n";

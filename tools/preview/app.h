@@ -15,6 +15,7 @@
 #include "engine/integrator/estimate.h"
 #include "engine/integrator/vpl_integrator.h"
 #include "tools/preview/camera_controller.h"
+#include "tools/preview/frame_variance.h"
 #include "tools/preview/hud.h"
 #include "tools/preview/move_recovery.h"
 #include "tools/preview/present_pass.h"
@@ -68,7 +69,10 @@ private:
     void next_view();
     // Traces the view's AOV again when the sum restarted or its positions grew (the VPLs' view:
     // the picture read back at the HUD's pace).
-    void update_view(bool restarted);
+    // The view's image after this frame's shading: restarted, a new sum; last, the run's last
+    // frame (its screenshot).
+    void update_view(bool restarted, bool last);
+    void update_error_view(bool restarted);
     // The settings as the panel shows them.
     PanelValues panel_values() const;
     // Tab: the panel shown (made the first time) or hidden.
@@ -161,6 +165,7 @@ private:
     std::string m_message;  // the last dropped file's error, shown in the HUD
     EstimatorParts m_parts;
     std::string m_view = "image";
+    FrameVariance m_variance;       // the error view's reads of the current sum
     uint64_t m_view_positions = 0;  // the sub-pixel positions the AOV view covers
     Image m_view_image;             // what an .exr screenshot of the view holds
     Timer m_since_restart;

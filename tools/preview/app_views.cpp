@@ -9,12 +9,13 @@
 #include "engine/aov/aov_images.h"
 #include "engine/scene/camera.h"
 #include "tools/preview/app.h"
+#include "tools/preview/frame_variance.h"
+#include "tools/preview/views.h"
 #include "tools/session/vpl_dots.h"
 
 namespace mvpl::preview {
 namespace {
 
-constexpr std::array<const char*, 5> kViews{"image", "albedo", "normal", "depth", "vpls"};
 // The AOVs are traced on the window's thread, about 0.14 s per sub-pixel position at 512² on two
 // cores (aov_images.h): a view follows the sum's first four positions, not all of them.
 constexpr uint64_t kViewPositions = 4;
@@ -46,8 +47,9 @@ Image display(const ChannelImage& aov, const std::string& view) {
 }  // namespace
 
 bool PreviewApp::set_view(const std::string& name) {
-    if (std::find(kViews.begin(), kViews.end(), name) == kViews.end()) return false;
+    if (!is_view_name(name)) return false;
     m_view = name;
+    m_variance.reset();
     m_view_positions = 0;  // traced at the next frame
     m_hud_dirty = true;
     if (m_view == "image") m_present.set_cpu_image(Image());  // the estimators' again
@@ -55,11 +57,24 @@ bool PreviewApp::set_view(const std::string& name) {
 }
 
 void PreviewApp::next_view() {
-    const auto at = std::find(kViews.begin(), kViews.end(), m_view);
-    set_view(at + 1 == kViews.end() ? kViews[0] : *(at + 1));
+    const auto at = std::find(kViewNames.begin(), kViewNames.end(), m_view);
+    set_view(at + 1 == kViewNames.end() ? kViewNames[0] : *(at + 1));
 }
 
-void PreviewApp::update_view(bool restarted) {
+void PreviewApp::update_error_view(bool restarted) {
+    // Read back every frame: each read after the first adds an increment to the variance.
+    if (restarted) m_variance.reset();
+    m_variance.add(m_integrator->image(), m_integrator->stats().units);
+    m_view_image = m_variance.relative_error();
+    m_present.set_cpu_image(heat_map(m_view_image));
+}
+
+void PreviewApp::update_view(bool restarted, bool last) {
+    if (m_view == "error") {
+        update_error_view(restarted);
+        return;
+    }
+    restarted = restarted || last;  // the others are brought up to date for the screenshot
     if (m_view == "vpls") {
         // The picture is read back from the GPU: at the HUD's pace.
         if (!restarted && m_cpu_timer.seconds() < kHudInterval) return;

@@ -1,5 +1,7 @@
 #include "tools/preview/panel_widgets.h"
 
+#include "tools/preview/views.h"
+
 #include <imgui.h>
 #include <imgui_stdlib.h>
 
@@ -73,10 +75,9 @@ void estimator_widgets(const PanelValues& v, std::vector<ScriptEvent>& out) {
 }
 
 void view_widgets(const PanelValues& v, std::string& env_file, std::vector<ScriptEvent>& out) {
-    const std::array<const char*, 5> views{"image", "albedo", "normal", "depth", "vpls"};
-    int shown = int(std::find(views.begin(), views.end(), v.view) - views.begin());
-    if (ImGui::Combo("view", &shown, "image\0albedo\0normal\0depth\0vpls\0\0"))
-        out.push_back(event("view", {}, views[size_t(shown)]));
+    int shown = int(std::find(kViewNames.begin(), kViewNames.end(), v.view) - kViewNames.begin());
+    if (ImGui::Combo("view", &shown, kViewNames.data(), int(kViewNames.size())))
+        out.push_back(event("view", {}, kViewNames[size_t(shown)]));
     float exposure = v.exposure;
     if (ImGui::SliderFloat("exposure", &exposure, -10.0f, 10.0f, "%+.1f stops"))
         out.push_back(set("exposure", {exposure}));

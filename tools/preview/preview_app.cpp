@@ -96,7 +96,7 @@ bool PreviewApp::frame(uint64_t index, const Timer& start) {
     update_hud(moving || refine);
     const bool last = m_options.frames > 0 && index + 1 == m_options.frames;
     if (m_view != "image") {
-        update_view(moving || refine || last);
+        update_view(moving || refine, last);
     } else if (last && !m_options.screenshot.empty() && m_cpu_on) {
         // The passes `mvpl render` runs for the VPLs shaded, all of them: its image.
         m_present.set_cpu_image(m_integrator->finish_cpu(integrator::Pacing::Fixed));

@@ -7,6 +7,7 @@
 #include "engine/core/error.h"
 #include "engine/sampler/sampler_factory.h"
 #include "tools/preview/settings.h"
+#include "tools/preview/views.h"
 
 namespace mvpl::preview {
 namespace {
@@ -75,9 +76,8 @@ ScriptEvent read_event(std::istringstream& words) {
     } else if (e.action == "set") {
         read_setting(words, e);
     } else if (e.action == "view") {
-        if (!(words >> e.word) || (e.word != "image" && e.word != "albedo" && e.word != "normal" &&
-                                   e.word != "depth" && e.word != "vpls"))
-            throw std::invalid_argument("view needs image, albedo, normal, depth or vpls");
+        if (!(words >> e.word) || !is_view_name(e.word))
+            throw std::invalid_argument("view needs image, albedo, normal, depth, vpls or error");
     } else if (e.action == "drop") {
         std::getline(words >> std::ws, e.word);
         while (!e.word.empty() && std::isspace(static_cast<unsigned char>(e.word.back())))
