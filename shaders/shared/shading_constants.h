@@ -1,10 +1,14 @@
-// The constants of the shading mathematics (shading_math.h), for C++ and GLSL: a shader that
-// evaluates only Lambertian closures needs these and nothing else of it.
+// The constants of the shading mathematics (shading_math.h, lambertian.h, closure_eval.h), for
+// C++ and GLSL: a shader that evaluates only Lambertian closures needs these and lambertian.h.
+// MVPL_INLINE marks the functions of those headers (inline in C++, nothing in GLSL).
 #ifndef MVPL_SHADERS_SHARED_SHADING_CONSTANTS_H
 #define MVPL_SHADERS_SHARED_SHADING_CONSTANTS_H
 
 #ifdef __cplusplus
+#define MVPL_INLINE inline
 namespace mvpl::shared::math {
+#else
+#define MVPL_INLINE
 #endif
 
 const float kPi = 3.14159265358979323846f;

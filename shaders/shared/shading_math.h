@@ -7,10 +7,11 @@
 // passes the world-space normal (the cross product keeps the small sines of glossy lobes free of
 // the cancellation in 1 − cos²). engine/material/microfacet.h and fresnel.h give C++ its
 // local-frame names; engine/material/glsl_library.cpp emits this file's text into the shaders
-// that evaluate closures, after shading_constants.h.
+// that evaluate closures, after shading_constants.h, without its C++ blocks.
 //
 // Written in the common subset: float literals with f, functions MVPL_INLINE (inline in C++), no
-// out parameters, GLSL's built-in names (glm's in C++).
+// out parameters, GLSL's built-in names (glm's in C++); C++-only code in flat
+// `#ifdef __cplusplus` blocks (glsl_library.cpp drops them).
 #ifndef MVPL_SHADERS_SHARED_SHADING_MATH_H
 #define MVPL_SHADERS_SHARED_SHADING_MATH_H
 
@@ -19,7 +20,6 @@
 
 #include "shaders/shared/shading_constants.h"
 
-#define MVPL_INLINE inline
 namespace mvpl::shared::math {
 using vec3 = glm::vec3;
 using glm::abs;
@@ -29,8 +29,6 @@ using glm::dot;
 using glm::max;
 using glm::min;
 using glm::sqrt;
-#else
-#define MVPL_INLINE
 #endif
 
 // (1 − |cos|)^5, glTF's `fresnel_w`.
@@ -91,6 +89,18 @@ MVPL_INLINE float ggx_visibility(vec3 n, vec3 wo, vec3 wi, float alpha) {
     const float ci = max(dot(n, wi), kMinCos);
     return 0.5f /
            (ci * ggx_stretched_length(n, wo, alpha) + co * ggx_stretched_length(n, wi, alpha));
+}
+
+// The microfacet reflection of the pair (wo, wi): (D·V, wo·h, 1) with h = normalize(wo + wi), or
+// (0, 0, 0) where h is undefined (wo = −wi, or a sum that underflows: 1e-30 keeps 1/√len2 well
+// inside the float range, and only pairs within ~1e-15 of wo = −wi land there).
+MVPL_INLINE vec3 ggx_reflection(vec3 n, vec3 wo, vec3 wi, float alpha) {
+    const vec3 sum = wo + wi;
+    const float len2 = dot(sum, sum);
+    if (!(len2 > 1e-30f)) return vec3(0.0f);
+    const vec3 h = sum / sqrt(len2);
+    return vec3(ggx_d(n, h, alpha) * ggx_visibility(n, wo, wi, alpha),
+                clamp(dot(wo, h), 0.0f, 1.0f), 1.0f);
 }
 
 #ifdef __cplusplus
