@@ -1,8 +1,6 @@
 #include "engine/material/glsl_library.h"
 
 #include <array>
-#include <iterator>
-#include <string>
 #include <vector>
 
 #include "engine/material/node_kind.h"
@@ -151,47 +149,16 @@ vec3 dielectric_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
 )"},
 };
 
-// A shaders/shared header's text without its `#ifdef __cplusplus` blocks (their #else branches
-// kept): the GLSL of it. The headers keep those blocks flat (shading_math.h), so the first #else
-// or #endif closes one.
-std::string without_cplusplus_blocks(std::string_view text) {
-    enum class Block { None, Cplusplus, Else };
-    Block block = Block::None;
-    std::string out;
-    size_t pos = 0;
-    while (pos < text.size()) {
-        const size_t newline = text.find('\n', pos);
-        const size_t end = newline == std::string_view::npos ? text.size() : newline + 1;
-        const std::string_view line = text.substr(pos, end - pos);
-        pos = end;
-        if (line.starts_with("#ifdef __cplusplus")) {
-            block = Block::Cplusplus;
-        } else if (block != Block::None && line.starts_with("#else")) {
-            block = Block::Else;
-        } else if (block != Block::None && line.starts_with("#endif")) {
-            block = Block::None;
-        } else if (block != Block::Cplusplus) {
-            out += line;
-        }
-    }
-    return out;
-}
-
 }  // namespace
 
 const GlslFunction* find_glsl_function(std::string_view name) {
     static const auto functions = [] {
-        // The entries' code as GLSL, where the views below point.
-        static std::vector<std::string> code;
-        code.reserve(std::size(kEntries));
         std::vector<GlslFunction> out;
         for (const Entry& e : kEntries) {
             size_t n = 0;
             while (n < e.deps.size() && !e.deps[n].empty())
                 ++n;
-            code.push_back(without_cplusplus_blocks(e.code));
-            out.push_back(
-                {e.name, std::span<const std::string_view>(e.deps.data(), n), code.back()});
+            out.push_back({e.name, std::span<const std::string_view>(e.deps.data(), n), e.code});
         }
         // Each node kind's own function (nodes/*.cpp); constants have none.
         for (const NodeKind* kind : node_kinds()) {

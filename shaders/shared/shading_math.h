@@ -7,11 +7,11 @@
 // passes the world-space normal (the cross product keeps the small sines of glossy lobes free of
 // the cancellation in 1 − cos²). engine/material/microfacet.h and fresnel.h give C++ its
 // local-frame names; engine/material/glsl_library.cpp emits this file's text into the shaders
-// that evaluate closures, after shading_constants.h, without its C++ blocks.
+// that evaluate closures, after shading_constants.h.
 //
 // Written in the common subset: float literals with f, functions MVPL_INLINE (inline in C++), no
-// out parameters, GLSL's built-in names (glm's in C++); C++-only code in flat
-// `#ifdef __cplusplus` blocks (glsl_library.cpp drops them).
+// out parameters, GLSL's built-in names (glm's in C++); C++-only code in `#ifdef __cplusplus`
+// blocks, which the template expansion drops (engine/render/shader_program.cpp) and glslang skips.
 #ifndef MVPL_SHADERS_SHARED_SHADING_MATH_H
 #define MVPL_SHADERS_SHARED_SHADING_MATH_H
 
