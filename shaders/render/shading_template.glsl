@@ -27,7 +27,7 @@
 // sphere of spread s² = spread2.
 Closure widen_closure(Closure c, float spread2) {
     Closure w = c;
-    w.roughness = sqrt(vsl_alpha(roughness_to_alpha(c.roughness), spread2));
+    w.roughness = vsl_roughness(roughness_to_alpha(c.roughness), spread2);
     return w;
 }
 //@endif
