@@ -13,6 +13,7 @@ extern const std::string_view kShadingConstantsGlsl;
 extern const std::string_view kShadingMathGlsl;
 extern const std::string_view kLambertianGlsl;
 extern const std::string_view kClosureEvalGlsl;
+extern const std::string_view kClosureRangesGlsl;
 
 namespace {
 
@@ -39,8 +40,9 @@ const Entry kEntries[] = {
     {"ggx_d", {"shading_math"}, ""},
     {"ggx_visibility", {"shading_math"}, ""},
     {"ggx_reflection", {"ggx_d", "ggx_visibility"}, ""},
-    // shaders/shared/lambertian.h and closure_eval.h.
+    // shaders/shared/lambertian.h, closure_eval.h and closure_ranges.h.
     {"lambertian_reflection", {"constants"}, kLambertianGlsl},
+    {"closure_ranges", {"constants"}, kClosureRangesGlsl},
     {"closure_eval",
      {"Closure", "max_component", "lambertian_reflection", "fresnel_schlick", "ggx_reflection"},
      kClosureEvalGlsl},
@@ -80,10 +82,8 @@ float alpha_hash(vec3 p, uint seed) {
 }
 )"},
     {"clamp_closure",
-     {"Closure"},
-     R"(// closure.h: clamp_to_valid_ranges and closure_type.
-float clamp_unit(float x) { return x > 0.0 ? min(x, 1.0) : 0.0; }
-float clamp_non_negative(float x) { return x > 0.0 ? min(x, 1e6) : 0.0; }
+     {"Closure", "closure_ranges"},
+     R"(// closure.h: make_closure, clamp_to_valid_ranges and closure_type.
 Closure clamp_closure(vec3 base_color, float metallic, float roughness, float specular,
                       vec3 specular_color, float ior) {
     Closure c;
@@ -95,10 +95,7 @@ Closure clamp_closure(vec3 base_color, float metallic, float roughness, float sp
                             clamp_non_negative(specular_color.g),
                             clamp_non_negative(specular_color.b));
     c.ior = clamp_non_negative(ior);
-    if (c.metallic <= 0.0 && c.specular <= 0.0) c.type = 0u;
-    else if (c.metallic >= 1.0) c.type = 1u;
-    else if (c.metallic <= 0.0) c.type = 2u;
-    else c.type = 3u;
+    c.type = closure_type_of(c.metallic, c.specular);
     return c;
 }
 )"},
