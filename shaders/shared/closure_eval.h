@@ -81,7 +81,15 @@ MVPL_INLINE vec3 metal_rough_fresnel(ReflectionLobes l, vec3 dielectric_fresnel,
 // macro-surface's max_value(F) towards wo and wi.
 MVPL_INLINE vec3 metal_rough_diffuse_lobe(ReflectionLobes l, float fresnel_o, float fresnel_i) {
     const float w_d = (1.0f - fresnel_o) * (1.0f - fresnel_i);
-    return (1.0f - l.metallic) * w_d * (l.base_color * kInvPi);
+    return (1.0f - l.metallic) * w_d * lambertian_f(l.base_color);
+}
+
+// The diffuse lobe for the cosines co = n·wo > 0 and ci = n·wi > 0 (each computed once).
+MVPL_INLINE vec3 metal_rough_diffuse_of(ReflectionLobes l, float co, float ci) {
+    if (l.lambertian) return lambertian_f(l.base_color);
+    if (!l.has_diffuse) return vec3(0.0f);
+    return metal_rough_diffuse_lobe(l, fresnel_schlick(l.f0_max, l.f90, co),
+                                    fresnel_schlick(l.f0_max, l.f90, ci));
 }
 
 // The diffuse lobe of metal_rough_reflection alone (Bsdf::eval_diffuse): all of a Lambertian
@@ -90,17 +98,16 @@ MVPL_INLINE vec3 metal_rough_diffuse(ReflectionLobes l, vec3 n, vec3 wo, vec3 wi
     const float co = dot(n, wo);
     const float ci = dot(n, wi);
     if (!(co > 0.0f) || !(ci > 0.0f)) return vec3(0.0f);
-    if (l.lambertian) return lambertian_reflection(l.base_color, n, wo, wi);
-    if (!l.has_diffuse) return vec3(0.0f);
-    return metal_rough_diffuse_lobe(l, fresnel_schlick(l.f0_max, l.f90, co),
-                                    fresnel_schlick(l.f0_max, l.f90, ci));
+    return metal_rough_diffuse_of(l, co, ci);
 }
 
-// f = (1 − m)·(w_d·base/π + F_d·D·V) + m·F_c·D·V, the microfacet term D·V shared by both layers.
+// f = (1 − m)·(w_d·base/π + F_d·D·V) + m·F_c·D·V, the microfacet term D·V shared by both layers;
+// a Lambertian closure (no microfacet lobe) is its diffuse lobe alone.
 MVPL_INLINE vec3 metal_rough_reflection(ReflectionLobes l, vec3 n, vec3 wo, vec3 wi) {
-    if (!(dot(n, wo) > 0.0f) || !(dot(n, wi) > 0.0f)) return vec3(0.0f);
-    if (l.lambertian) return lambertian_reflection(l.base_color, n, wo, wi);
-    vec3 f = metal_rough_diffuse(l, n, wo, wi);
+    const float co = dot(n, wo);
+    const float ci = dot(n, wi);
+    if (!(co > 0.0f) || !(ci > 0.0f)) return vec3(0.0f);
+    vec3 f = metal_rough_diffuse_of(l, co, ci);
     if (l.has_specular) {
         const vec3 r = ggx_reflection(n, wo, wi, l.alpha);
         if (r.z > 0.0f)

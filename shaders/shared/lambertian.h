@@ -16,8 +16,13 @@ using vec3 = glm::vec3;
 using glm::dot;
 #endif
 
+// f of a pair known to be above n.
+MVPL_INLINE vec3 lambertian_f(vec3 albedo) {
+    return albedo * kInvPi;
+}
+
 MVPL_INLINE vec3 lambertian_reflection(vec3 albedo, vec3 n, vec3 wo, vec3 wi) {
-    return dot(n, wo) > 0.0f && dot(n, wi) > 0.0f ? albedo * kInvPi : vec3(0.0f);
+    return dot(n, wo) > 0.0f && dot(n, wi) > 0.0f ? lambertian_f(albedo) : vec3(0.0f);
 }
 
 #ifdef __cplusplus
