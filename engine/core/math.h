@@ -50,10 +50,6 @@ struct Frame {
     Vec3 to_world(const Vec3& v) const { return s * v.x + t * v.y + n * v.z; }
 };
 
-// The normal of a local frame (Frame::to_local): the shared shading functions
-// (shaders/shared/*.h) take the normal, which is z there.
-inline constexpr Vec3 kLocalNormal{0.0f, 0.0f, 1.0f};
-
 // Trigonometry of a direction in a local frame whose z axis is the normal.
 inline float cos_theta(const Vec3& w) {
     return w.z;

@@ -8,6 +8,8 @@
 
 namespace mvpl::material {
 
+using shared::math::kLocalNormal;
+
 // f itself, shaders/shared/lambertian.h's (which the GPU evaluates too).
 inline Rgb lambertian_eval(const Rgb& albedo, const Vec3& wo, const Vec3& wi) {
     return shared::math::lambertian_reflection(albedo, kLocalNormal, wo, wi);

@@ -64,7 +64,7 @@ MVPL_INLINE vec3 conductor_fresnel(vec3 f0, float cos_oh) {
 }
 
 // The conductor alone (metallic 1): F·D·V.
-MVPL_INLINE vec3 conductor_reflection(vec3 f0, float alpha, vec3 n, vec3 wo, vec3 wi) {
+MVPL_INLINE vec3 conductor_reflection(vec3 f0, float alpha, MVPL_NORMAL n, vec3 wo, vec3 wi) {
     if (!(dot(n, wo) > 0.0f) || !(dot(n, wi) > 0.0f)) return vec3(0.0f);
     const vec3 r = ggx_reflection(n, wo, wi, alpha);
     return r.z > 0.0f ? conductor_fresnel(f0, r.y) * r.x : vec3(0.0f);
@@ -94,7 +94,7 @@ MVPL_INLINE vec3 metal_rough_diffuse_of(ReflectionLobes l, float co, float ci) {
 
 // The diffuse lobe of metal_rough_reflection alone (Bsdf::eval_diffuse): all of a Lambertian
 // closure's f, none of a conductor's; independent of the roughness.
-MVPL_INLINE vec3 metal_rough_diffuse(ReflectionLobes l, vec3 n, vec3 wo, vec3 wi) {
+MVPL_INLINE vec3 metal_rough_diffuse(ReflectionLobes l, MVPL_NORMAL n, vec3 wo, vec3 wi) {
     const float co = dot(n, wo);
     const float ci = dot(n, wi);
     if (!(co > 0.0f) || !(ci > 0.0f)) return vec3(0.0f);
@@ -103,7 +103,7 @@ MVPL_INLINE vec3 metal_rough_diffuse(ReflectionLobes l, vec3 n, vec3 wo, vec3 wi
 
 // f = (1 − m)·(w_d·base/π + F_d·D·V) + m·F_c·D·V, the microfacet term D·V shared by both layers;
 // a Lambertian closure (no microfacet lobe) is its diffuse lobe alone.
-MVPL_INLINE vec3 metal_rough_reflection(ReflectionLobes l, vec3 n, vec3 wo, vec3 wi) {
+MVPL_INLINE vec3 metal_rough_reflection(ReflectionLobes l, MVPL_NORMAL n, vec3 wo, vec3 wi) {
     const float co = dot(n, wo);
     const float ci = dot(n, wi);
     if (!(co > 0.0f) || !(ci > 0.0f)) return vec3(0.0f);

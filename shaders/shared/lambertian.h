@@ -7,13 +7,9 @@
 #define MVPL_SHADERS_SHARED_LAMBERTIAN_H
 
 #ifdef __cplusplus
-#include <glm/glm.hpp>
-
-#include "shaders/shared/shading_constants.h"
+#include "shaders/shared/shading_math.h"  // C++ only: its LocalNormal
 
 namespace mvpl::shared::math {
-using vec3 = glm::vec3;
-using glm::dot;
 #endif
 
 // f of a pair known to be above n.
@@ -21,7 +17,7 @@ MVPL_INLINE vec3 lambertian_f(vec3 albedo) {
     return albedo * kInvPi;
 }
 
-MVPL_INLINE vec3 lambertian_reflection(vec3 albedo, vec3 n, vec3 wo, vec3 wi) {
+MVPL_INLINE vec3 lambertian_reflection(vec3 albedo, MVPL_NORMAL n, vec3 wo, vec3 wi) {
     return dot(n, wo) > 0.0f && dot(n, wi) > 0.0f ? lambertian_f(albedo) : vec3(0.0f);
 }
 
