@@ -7,15 +7,12 @@
 
 #include "engine/core/sampling.h"
 #include "engine/trace/interaction.h"
+#include "shaders/shared/spot_falloff.h"
 
 namespace mvpl::light {
 
 float spot_attenuation(const scene::Light& light, float cos_angle) {
-    const float cos_outer = std::cos(light.outer_cone);
-    const float cos_inner = std::cos(light.inner_cone);
-    const float scale = 1.0f / std::max(1e-3f, cos_inner - cos_outer);
-    const float t = std::clamp((cos_angle - cos_outer) * scale, 0.0f, 1.0f);
-    return t * t;
+    return shared::spot_falloff(std::cos(light.inner_cone), std::cos(light.outer_cone), cos_angle);
 }
 
 namespace {

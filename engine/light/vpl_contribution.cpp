@@ -5,47 +5,35 @@
 
 #include "engine/light/virtual_sphere.h"
 #include "engine/trace/interaction.h"
+#include "shaders/shared/lobe_clamp.h"
+#include "shaders/shared/spot_falloff.h"
 #include "shaders/shared/virtual_sphere.h"
+#include "shaders/shared/vpl_pair.h"
 
 namespace mvpl::light {
 namespace {
 
-// The VPL's own factor towards the receiver: spot(axis·ω), max(0, n_j·ω) or
-// f_j(ω_in, ω)·max(0, n_j·ω) (vpl.h), ω the unit direction from the VPL to the receiver; f_j's
-// lobe integrated over the virtual sphere of spread s² = spread2 (virtual_sphere.h). `diffuse`,
-// if given, receives the part through f_j's diffuse lobe alone (all of an area VPL's factor,
-// whose emission counts as diffuse).
-Rgb emitter_factor(const PreparedVpl& pv, const Vec3& w, float spread2, Rgb* diffuse = nullptr) {
+using shared::math::VplFactors;
+
+// The VPL's own factors towards the receiver (shaders/shared/vpl_pair.h), ω = w the unit
+// direction from the VPL to the receiver: f_j's lobes integrated over the virtual sphere of
+// spread s² = spread2 (virtual_sphere.h); f_diffuse only where the pair is clamped lobe by lobe.
+VplFactors vpl_factors(const PreparedVpl& pv, const Vec3& w, float spread2, bool by_lobe) {
     const Vpl& v = *pv.vpl;
-    switch (v.type) {
-        case VplType::Point:
-            return Rgb(1.0f);
-        case VplType::Spot: {
-            // KHR_lights_punctual falloff from the VPL's own cone (spot_attenuation's).
-            const float scale = 1.0f / std::max(1e-3f, v.cos_inner - v.cos_outer);
-            const float t = std::clamp((glm::dot(v.normal, w) - v.cos_outer) * scale, 0.0f, 1.0f);
-            return Rgb(t * t);
-        }
-        case VplType::Area: {
-            const Rgb f(std::max(0.0f, glm::dot(v.normal, w)));
-            if (diffuse) *diffuse = f;
-            return f;
-        }
-        case VplType::Surface: {
-            const float cos_j = glm::dot(v.normal, w);
-            if (!(cos_j > 0.0f)) return Rgb(0.0f);
-            const Vec3 w_local = pv.frame.to_local(w);
-            if (diffuse) *diffuse = pv.bsdf->eval_diffuse(pv.wi_local, w_local) * cos_j;
-            if (spread2 > 0.0f && !v.closure.is_lambertian()) {
-                const material::Bsdf widened(widen_closure(v.closure, spread2));
-                return widened.eval(pv.wi_local, w_local) * cos_j;
-            }
-            return pv.bsdf->eval(pv.wi_local, w_local) * cos_j;
-        }
-        case VplType::Directional:
-            break;
+    VplFactors e{1.0f, Rgb(1.0f), Rgb(1.0f)};
+    if (v.type == VplType::Spot)
+        e.emitter = shared::spot_falloff(v.cos_inner, v.cos_outer, glm::dot(v.normal, w));
+    if (v.type == VplType::Area || v.type == VplType::Surface)
+        e.emitter = std::max(0.0f, glm::dot(v.normal, w));
+    if (v.type != VplType::Surface || !(e.emitter > 0.0f)) return e;
+    const Vec3 w_local = pv.frame.to_local(w);
+    if (by_lobe) e.f_diffuse = pv.bsdf->eval_diffuse(pv.wi_local, w_local);
+    if (spread2 > 0.0f && !v.closure.is_lambertian()) {
+        e.f = material::Bsdf(widen_closure(v.closure, spread2)).eval(pv.wi_local, w_local);
+    } else {
+        e.f = pv.bsdf->eval(pv.wi_local, w_local);
     }
-    return Rgb(0.0f);
+    return e;
 }
 
 }  // namespace
@@ -93,29 +81,26 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
                      float d_min2, float vsl_r2) {
     const trace::ShadingPoint& sp = receiver.sp;
     const Vpl& v = *pv.vpl;
-    Vec3 to_light;  // unit, receiver → VPL
-    float inv_d2 = 1.0f;
-    Rgb factor(1.0f);
-    float spread2 = 0.0f;  // of the virtual sphere, for both lobes (virtual_sphere.h)
-    // A VSL pair with a glossy lobe in it, clamped lobe by lobe (lobe_clamp): its diffuse part.
+    Vec3 to_light = -v.normal;  // unit, receiver → VPL
+    float d2 = 1.0f;            // a directional VPL's, unclamped (vpl_pair.h)
+    float spread2 = 0.0f;       // of the virtual sphere, for both lobes (virtual_sphere.h)
+    // A VSL pair with a glossy lobe in it, clamped lobe by lobe (lobe_clamp.h).
     bool by_lobe = false;
-    Rgb factor_diffuse(0.0f);
-    float inv_glossy_d2 = 1.0f;
-    if (v.type == VplType::Directional) {
-        to_light = -v.normal;
-    } else {
+    VplFactors e{1.0f, Rgb(1.0f), Rgb(1.0f)};
+    if (v.type != VplType::Directional) {
         const Vec3 d = v.position - sp.p;
-        const float dist2 = glm::dot(d, d);
-        if (!(dist2 > 0.0f)) return Rgb(0.0f);
-        to_light = d / std::sqrt(dist2);
-        inv_d2 = 1.0f / std::max(dist2, d_min2);
-        if (is_spherical(v.type)) spread2 = shared::vsl_spread2(vsl_r2, dist2);
-        by_lobe = spread2 > 0.0f && d_min2 > 0.0f &&
-                  (sp.bsdf.has_glossy() || (v.type == VplType::Surface && pv.bsdf->has_glossy()));
-        if (by_lobe) inv_glossy_d2 = 1.0f / shared::vsl_glossy_d2(dist2, vsl_r2, d_min2);
-        factor = emitter_factor(pv, -to_light, spread2, by_lobe ? &factor_diffuse : nullptr);
+        d2 = glm::dot(d, d);
+        if (!(d2 > 0.0f)) return Rgb(0.0f);
+        to_light = d / std::sqrt(d2);
+        if (is_spherical(v.type)) spread2 = shared::vsl_spread2(vsl_r2, d2);
+        by_lobe = shared::math::clamps_by_lobe(
+            spread2, d_min2,
+            sp.bsdf.has_glossy() || (v.type == VplType::Surface && pv.bsdf->has_glossy()));
+        e = vpl_factors(pv, -to_light, spread2, by_lobe);
+    } else {
+        d_min2 = 0.0f;  // at infinity: the unclamped d² = 1 of vpl_pair.h
     }
-    if (is_black(factor)) return Rgb(0.0f);
+    if (!(e.emitter > 0.0f) || is_black(e.f)) return Rgb(0.0f);
     if (!(glm::dot(to_light, sp.ng) > 0.0f)) return Rgb(0.0f);  // below the geometric surface
     const Vec3 wi = sp.frame.to_local(to_light);
     if (!(wi.z > 0.0f)) return Rgb(0.0f);  // cos θ' = max(0, n'·(−ω))
@@ -124,16 +109,10 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
             ? material::Bsdf(widen_closure(sp.bsdf.params(), spread2)).eval(receiver.wo, wi)
             : sp.bsdf.eval(receiver.wo, wi);
     if (is_black(f)) return Rgb(0.0f);
-    Rgb c;
-    if (by_lobe) {
-        // The diffuse × diffuse product clamped by d_min, the rest (every product with a widened
-        // glossy lobe) by the sphere (shared::vsl_glossy_d2).
-        const Rgb diffuse = sp.bsdf.eval_diffuse(receiver.wo, wi) * factor_diffuse;
-        const Rgb glossy = glm::max(f * factor - diffuse, Rgb(0.0f));
-        c = v.power * (diffuse * (wi.z * inv_d2) + glossy * (wi.z * inv_glossy_d2));
-    } else {
-        c = v.power * f * factor * (wi.z * inv_d2);
-    }
+    const Rgb c =
+        by_lobe ? shared::math::vpl_pair_by_lobe(v.power, f, sp.bsdf.eval_diffuse(receiver.wo, wi),
+                                                 wi.z, e, d2, vsl_r2, d_min2)
+                : shared::math::vpl_pair(v.power, f, wi.z, e, d2, d_min2);
     if (is_black(c)) return Rgb(0.0f);
     const bool on_surface = v.type == VplType::Area || v.type == VplType::Surface;
     const trace::Ray shadow =

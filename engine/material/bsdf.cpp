@@ -23,27 +23,22 @@ struct Bsdf::Oriented {
     Vec3 wo;
     float flip = 1.0f;
     Interface side;
+    // Outside a solid (or thin-walled): the dielectric layer's Fresnel is Schlick's of the
+    // cosine with wo, as the GPU shades it.
+    bool outside() const { return side.eta_o <= side.eta_t; }
 };
 
 Bsdf::Bsdf(const ClosureParams& params) : m_params(params) {
     const ClosureParams p = clamp_to_valid_ranges(params);
-    m_base_color = p.base_color;
-    m_metallic = p.metallic;
-    m_alpha = roughness_to_alpha(p.roughness);
     m_layer = dielectric_layer(p.specular_color, p.specular, p.ior);
     m_transmits = p.transmits();
-    m_transmission = m_transmits ? (1.0f - m_metallic) * p.transmission : Rgb(0.0f);
+    m_lobes =
+        shared::math::reflection_lobes(p.base_color, p.metallic, roughness_to_alpha(p.roughness),
+                                       m_layer.f0, m_layer.f90, m_transmits);
+    m_transmission = m_transmits ? (1.0f - p.metallic) * p.transmission : Rgb(0.0f);
     // ior 0 (F0 = 1, allowed by KHR_materials_ior) has no refracted direction: thin.
     m_thin = p.thin_walled || !(p.ior > 0.0f);
     m_ior = p.ior;
-    m_lambertian = p.is_lambertian() && !m_transmits;
-    // The conductor always reflects (its F90 is 1); the dielectric layer only when F90 > 0; the
-    // transmission lobe whenever it is there.
-    m_has_specular = !m_lambertian && (m_metallic > 0.0f || m_layer.f90 > 0.0f || m_transmits);
-    // The base is visible unless the material is all metal, black, or fully covered by a layer
-    // with F0 = F90 = 1.
-    m_has_diffuse = m_metallic < 1.0f && max_component(m_base_color) > 0.0f &&
-                    (m_lambertian || m_layer.f0_max < 1.0f);
 }
 
 std::optional<Bsdf::Oriented> Bsdf::orient(const Vec3& wo) const {
@@ -64,13 +59,13 @@ float Bsdf::macro_fresnel(float cos_theta, const Oriented& o) const {
     // dielectric_max_fresnel outside (dielectric_diffuse.h's w_d); inside a solid, total internal
     // reflection keeps the base's light in: the same Schlick of max(F0) with the interface's
     // cosine, so that the diffuse base never adds to what the reflection already returns.
-    if (o.side.eta_o <= o.side.eta_t) return dielectric_max_fresnel(m_layer, cos_theta);
+    if (o.outside()) return dielectric_max_fresnel(m_layer, cos_theta);
     return max_component(interface_fresnel(m_layer, cos_theta, o.side));
 }
 
 Rgb Bsdf::reflection_fresnel(float cos_oh, const Oriented& o) const {
-    return (1.0f - m_metallic) * interface_fresnel(m_layer, cos_oh, o.side) +
-           m_metallic * conductor_fresnel(m_base_color, cos_oh);
+    return shared::math::metal_rough_fresnel(m_lobes, interface_fresnel(m_layer, cos_oh, o.side),
+                                             cos_oh);
 }
 
 float Bsdf::reflect_probability(float cos_oh, const Oriented& o) const {
@@ -92,18 +87,16 @@ Rgb Bsdf::eval(const Vec3& wo, const Vec3& wi, Transport mode) const {
 Rgb Bsdf::eval_oriented(const Oriented& o, const Vec3& wi, Transport mode) const {
     const Vec3& wo = o.wo;
     if (wi.z > 0.0f) {
-        if (m_lambertian) return lambertian_eval(m_base_color, wo, wi);
-        // f = (1 − m)·(w_d·base/π + F_d·DV) + m·F_c·DV, the microfacet term D·V shared by both
-        // layers.
+        // Outside (or thin): what the GPU shades, shaders/shared/closure_eval.h.
+        if (o.outside()) return shared::math::metal_rough_reflection(m_lobes, kLocalNormal, wo, wi);
+        // Inside a solid: the same mix with the interface's Fresnel.
         Rgb f = eval_diffuse_oriented(o, wi);
-        if (m_has_specular) {
-            if (const std::optional<MicrofacetReflection> r = ggx_reflection(wo, wi, m_alpha))
-                f += reflection_fresnel(r->cos_oh, o) * r->dv;
-        }
+        if (const std::optional<MicrofacetReflection> r = ggx_reflection(wo, wi, m_lobes.alpha))
+            f += reflection_fresnel(r->cos_oh, o) * r->dv;
         return f;
     }
     if (!m_transmits || !(wi.z < 0.0f)) return Rgb(0.0f);
-    const std::optional<MicrofacetTransmission> t = ggx_transmission(wo, wi, m_alpha, o.side);
+    const std::optional<MicrofacetTransmission> t = ggx_transmission(wo, wi, m_lobes.alpha, o.side);
     if (!t) return Rgb(0.0f);
     const Rgb fresnel = interface_fresnel(m_layer, t->cos_oh, o.side, t->cos_ih);
     Rgb f = m_transmission * (Rgb(1.0f) - fresnel) * t->dv;
@@ -120,15 +113,15 @@ Rgb Bsdf::eval_diffuse(const Vec3& wo, const Vec3& wi) const {
 
 Rgb Bsdf::eval_diffuse_oriented(const Oriented& o, const Vec3& wi) const {
     const Vec3& wo = o.wo;
-    if (!(wi.z > 0.0f)) return Rgb(0.0f);
-    if (m_lambertian) return lambertian_eval(m_base_color, wo, wi);
-    if (!m_has_diffuse) return Rgb(0.0f);
-    const float w_d = (1.0f - macro_fresnel(wo.z, o)) * (1.0f - macro_fresnel(wi.z, o));
-    return (1.0f - m_metallic) * w_d * lambertian_eval(m_base_color, wo, wi);
+    if (o.outside()) return shared::math::metal_rough_diffuse(m_lobes, kLocalNormal, wo, wi);
+    // Inside a solid (never Lambertian: it transmits).
+    if (!(wi.z > 0.0f) || !m_lobes.has_diffuse) return Rgb(0.0f);
+    return shared::math::metal_rough_diffuse_lobe(m_lobes, macro_fresnel(wo.z, o),
+                                                  macro_fresnel(wi.z, o));
 }
 
 float Bsdf::pdf_diffuse(const Vec3& wo, const Vec3& wi) const {
-    if (!m_lambertian && !m_has_diffuse) return 0.0f;
+    if (!m_lobes.lambertian && !m_lobes.has_diffuse) return 0.0f;
     const std::optional<Oriented> o = orient(wo);
     if (!o) return 0.0f;
     const Vec3 w = o->flip > 0.0f ? wi : mirror_z(wi);
@@ -137,7 +130,7 @@ float Bsdf::pdf_diffuse(const Vec3& wo, const Vec3& wi) const {
 
 std::optional<BsdfSample> Bsdf::sample_diffuse(const Vec3& wo, const Vec2& u,
                                                float /*u_lobe*/) const {
-    if (!m_lambertian && !m_has_diffuse) return std::nullopt;
+    if (!m_lobes.lambertian && !m_lobes.has_diffuse) return std::nullopt;
     const std::optional<Oriented> o = orient(wo);
     if (!o) return std::nullopt;
     // As sample() does when it picks the diffuse lobe.
@@ -156,19 +149,20 @@ float Bsdf::specular_probability(const Vec3& wo) const {
 }
 
 float Bsdf::specular_probability(const Oriented& o) const {
-    if (!m_has_specular) return 0.0f;
-    if (!m_has_diffuse) return 1.0f;
+    if (!m_lobes.has_specular) return 0.0f;
+    if (!m_lobes.has_diffuse) return 1.0f;
     // Expected share of each lobe in the scattered energy, estimated with the Fresnel of the
     // macro-surface at wo: the dielectric layer reflects ~F_d(cos θo) and transmits the rest of
     // the transmission share, the base returns what the layer transmits times its albedo, the
     // conductor reflects ~F_c(cos θo).
     const float c = std::clamp(o.wo.z, 0.0f, 1.0f);
     const Rgb f = interface_fresnel(m_layer, c, o.side);
-    const float e_specular = (1.0f - m_metallic) * luminance(f) +
-                             m_metallic * luminance(conductor_fresnel(m_base_color, c)) +
-                             luminance(m_transmission) * (1.0f - max_component(f));
+    const float e_specular =
+        (1.0f - m_lobes.metallic) * luminance(f) +
+        m_lobes.metallic * luminance(conductor_fresnel(m_lobes.base_color, c)) +
+        luminance(m_transmission) * (1.0f - max_component(f));
     const float e_diffuse =
-        (1.0f - m_metallic) * (1.0f - macro_fresnel(c, o)) * luminance(m_base_color);
+        (1.0f - m_lobes.metallic) * (1.0f - macro_fresnel(c, o)) * luminance(m_lobes.base_color);
     const float total = e_specular + e_diffuse;
     const float p = total > 0.0f ? e_specular / total : 0.5f;
     return std::clamp(p, kMinLobeProbability, kMaxLobeProbability);
@@ -181,10 +175,10 @@ float Bsdf::transmission_share(const Vec3& wo) const {
     const float c = std::clamp(o->wo.z, 0.0f, 1.0f);
     const Rgb f = interface_fresnel(m_layer, c, o->side);
     const float e_transmit = luminance(m_transmission) * (1.0f - max_component(f));
-    const float e_reflect = (1.0f - m_metallic) * luminance(f) +
-                            m_metallic * luminance(conductor_fresnel(m_base_color, c));
+    const float e_reflect = (1.0f - m_lobes.metallic) * luminance(f) +
+                            m_lobes.metallic * luminance(conductor_fresnel(m_lobes.base_color, c));
     const float e_diffuse =
-        (1.0f - m_metallic) * (1.0f - macro_fresnel(c, *o)) * luminance(m_base_color);
+        (1.0f - m_lobes.metallic) * (1.0f - macro_fresnel(c, *o)) * luminance(m_lobes.base_color);
     const float total = e_transmit + e_reflect + e_diffuse;
     return total > 0.0f ? e_transmit / total : 0.0f;
 }
@@ -197,14 +191,14 @@ float Bsdf::pdf(const Vec3& wo, const Vec3& wi) const {
 
 float Bsdf::pdf_oriented(const Oriented& o, const Vec3& wi) const {
     const Vec3& wo = o.wo;
-    if (m_lambertian) return wi.z > 0.0f ? lambertian_pdf(wo, wi) : 0.0f;
+    if (m_lobes.lambertian) return wi.z > 0.0f ? lambertian_pdf(wo, wi) : 0.0f;
     // The full mixture density, whichever lobe a sample came from (needed for MIS).
     const float p = specular_probability(o);
     if (wi.z > 0.0f) {
         float density = 0.0f;
         if (p > 0.0f) {
             if (const std::optional<Vec3> h = reflection_half_vector(wo, wi)) {
-                density += p * ggx_reflection_pdf(wo, wi, m_alpha) *
+                density += p * ggx_reflection_pdf(wo, wi, m_lobes.alpha) *
                            reflect_probability(glm::dot(wo, *h), o);
             }
         }
@@ -214,7 +208,7 @@ float Bsdf::pdf_oriented(const Oriented& o, const Vec3& wi) const {
     if (!m_transmits || !(wi.z < 0.0f) || !(p > 0.0f)) return 0.0f;
     const std::optional<Vec3> h = transmission_half_vector(wo, wi, o.side);
     if (!h) return 0.0f;
-    return p * ggx_transmission_pdf(wo, wi, m_alpha, o.side) *
+    return p * ggx_transmission_pdf(wo, wi, m_lobes.alpha, o.side) *
            (1.0f - reflect_probability(glm::dot(wo, *h), o));
 }
 
@@ -222,13 +216,13 @@ std::optional<BsdfSample> Bsdf::sample(const Vec3& wo, const Vec2& u, float u_lo
                                        Transport mode) const {
     const std::optional<Oriented> o = orient(wo);
     if (!o) return std::nullopt;
-    const float p = m_lambertian ? 0.0f : specular_probability(*o);
+    const float p = m_lobes.lambertian ? 0.0f : specular_probability(*o);
     Vec3 wi;
     bool transmitted = false;
     if (u_lobe >= p) {
         wi = sample_cosine_hemisphere(u);
     } else {
-        const Vec3 h = ggx_sample_visible_normal(o->wo, m_alpha, u);
+        const Vec3 h = ggx_sample_visible_normal(o->wo, m_lobes.alpha, u);
         // u_lobe / p is uniform in [0, 1) given that this lobe was picked: it picks reflection or
         // transmission at the facet.
         if (u_lobe / p < reflect_probability(glm::dot(o->wo, h), *o)) {

@@ -27,6 +27,7 @@
 #include "engine/core/math.h"
 #include "engine/material/closure.h"
 #include "engine/material/dielectric_diffuse.h"
+#include "shaders/shared/closure_eval.h"
 
 namespace mvpl::material {
 
@@ -60,7 +61,7 @@ public:
     std::optional<BsdfSample> sample_diffuse(const Vec3& wo, const Vec2& u,
                                              float u_lobe = 0.0f) const;
     // Whether some lobe besides the diffuse one can be non-zero.
-    bool has_glossy() const { return m_has_specular; }
+    bool has_glossy() const { return m_lobes.has_specular; }
     float pdf(const Vec3& wo, const Vec3& wi) const;
     // u_lobe picks the lobe (and reflection or transmission at the sampled facet); u samples the
     // direction within it.
@@ -94,16 +95,12 @@ private:
     float pdf_oriented(const Oriented& o, const Vec3& wi) const;
 
     ClosureParams m_params;  // as given
-    // Derived from the clamped parameters in the constructor.
-    Rgb m_base_color{0.0f};
+    // Derived from the clamped parameters in the constructor: the reflection lobes that the GPU
+    // shades too (shaders/shared/closure_eval.h), and what only the CPU does.
+    shared::math::ReflectionLobes m_lobes;
     Rgb m_transmission{0.0f};  // (1 − metallic) · t · base colour
-    float m_metallic = 0.0f;
-    float m_alpha = 1.0f;
     float m_ior = 1.5f;
     DielectricLayer m_layer;
-    bool m_lambertian = true;
-    bool m_has_specular = false;  // some lobe with a microfacet term is non-zero
-    bool m_has_diffuse = true;    // the Lambertian base is non-zero somewhere
     bool m_transmits = false;
     bool m_thin = true;
 };

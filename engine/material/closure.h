@@ -6,6 +6,7 @@
 
 #include "engine/core/color.h"
 #include "shaders/shared/closure.h"
+#include "shaders/shared/closure_ranges.h"
 
 namespace mvpl::material {
 
@@ -33,10 +34,11 @@ struct ClosureParams {
 // The parameters limited to the ranges glTF allows (NaN becomes the lower bound): base_color,
 // metallic, roughness and specular in [0, 1]; specular_color and ior in [0, 1e6] (specular_color
 // may exceed 1 by KHR_materials_specular; the cap only keeps infinities out, since F0 saturates
-// at 1 long before). Bsdf applies this itself; every closure node returns it.
+// at 1 long before). Bsdf applies this itself; every closure node returns it. The bounds are
+// shaders/shared/closure_ranges.h's, which the GPU's clamp_closure applies too.
 inline ClosureParams clamp_to_valid_ranges(const ClosureParams& p) {
-    const auto unit = [](float x) { return x > 0.0f ? std::min(x, 1.0f) : 0.0f; };
-    const auto non_negative = [](float x) { return x > 0.0f ? std::min(x, 1e6f) : 0.0f; };
+    const auto unit = shared::math::clamp_unit;
+    const auto non_negative = shared::math::clamp_non_negative;
     ClosureParams c = p;
     c.base_color = Rgb(unit(p.base_color.r), unit(p.base_color.g), unit(p.base_color.b));
     c.metallic = unit(p.metallic);
@@ -73,10 +75,7 @@ inline constexpr uint32_t closure_type_bit(ClosureType t) {
 
 inline ClosureType closure_type(const ClosureParams& params) {
     const ClosureParams c = clamp_to_valid_ranges(params);
-    if (c.is_lambertian()) return ClosureType::Lambertian;
-    if (c.metallic >= 1.0f) return ClosureType::Conductor;
-    if (c.metallic <= 0.0f) return ClosureType::Dielectric;
-    return ClosureType::MetalRough;
+    return ClosureType(shared::math::closure_type_of(c.metallic, c.specular));
 }
 
 }  // namespace mvpl::material

@@ -42,7 +42,8 @@ struct DielectricLayer {
     float f0_max = 0.0f;  // max_value(f0): the F that the diffuse weight uses (monotone in F0)
 };
 
-// Inputs are expected clamped (specular ∈ [0, 1], specular_color ≥ 0, ior ≥ 0).
+// Inputs are expected clamped (specular ∈ [0, 1], specular_color ≥ 0, ior ≥ 0). F0 is
+// shaders/shared/closure_eval.h's dielectric_f0.
 DielectricLayer dielectric_layer(const Rgb& specular_color, float specular, float ior);
 
 inline Rgb dielectric_fresnel(const DielectricLayer& layer, float cos_oh) {
@@ -55,13 +56,8 @@ inline float dielectric_max_fresnel(const DielectricLayer& layer, float cos_thet
     return fresnel_schlick(layer.f0_max, layer.f90, cos_theta);
 }
 
-// w_d above: the fraction of the Lambertian base that the layer lets through.
-inline float dielectric_diffuse_weight(const DielectricLayer& layer, float cos_o, float cos_i) {
-    return (1.0f - dielectric_max_fresnel(layer, cos_o)) *
-           (1.0f - dielectric_max_fresnel(layer, cos_i));
-}
-
-// The full dielectric-over-diffuse lobe f_spec + f_diff for one pair of directions.
+// The full dielectric-over-diffuse lobe f_spec + f_diff for one pair of directions: the formulas
+// above as shaders/shared/closure_eval.h writes them once for C++ and GLSL.
 Rgb dielectric_diffuse_eval(const Rgb& base_color, const DielectricLayer& layer, float alpha,
                             const Vec3& wo, const Vec3& wi);
 

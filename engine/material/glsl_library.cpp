@@ -11,6 +11,9 @@ namespace mvpl::material {
 // shading_math_glsl.cpp.in
 extern const std::string_view kShadingConstantsGlsl;
 extern const std::string_view kShadingMathGlsl;
+extern const std::string_view kLambertianGlsl;
+extern const std::string_view kClosureEvalGlsl;
+extern const std::string_view kClosureRangesGlsl;
 
 namespace {
 
@@ -22,10 +25,9 @@ struct Entry {
     std::string_view code;
 };
 
-// Fresnel and the GGX terms are shaders/shared/shading_math.h's, which C++ compiles too; the
-// closures' evaluation below is line for line the C++ of lambertian.h, conductor.*,
-// dielectric_diffuse.*, bsdf.cpp and closure.h, in world space where the CPU uses the local frame
-// (shading_math.h says why).
+// Fresnel, the GGX terms and the closures' reflection are shaders/shared/*.h's, which C++
+// compiles too (the CPU in its local frame, n = (0, 0, 1); shading_math.h says why); the closure
+// types' functions below only read a Closure into them.
 const Entry kEntries[] = {
     // shaders/shared/shading_constants.h and shading_math.h, as C++ compiles them: the
     // functions by name below.
@@ -37,6 +39,13 @@ const Entry kEntries[] = {
     {"roughness_to_alpha", {"shading_math"}, ""},
     {"ggx_d", {"shading_math"}, ""},
     {"ggx_visibility", {"shading_math"}, ""},
+    {"ggx_reflection", {"ggx_d", "ggx_visibility"}, ""},
+    // shaders/shared/lambertian.h, closure_eval.h and closure_ranges.h.
+    {"lambertian_reflection", {"constants"}, kLambertianGlsl},
+    {"closure_ranges", {"constants"}, kClosureRangesGlsl},
+    {"closure_eval",
+     {"Closure", "max_component", "lambertian_reflection", "fresnel_schlick", "ggx_reflection"},
+     kClosureEvalGlsl},
     {"Closure", {}, shared::kClosureGlsl},
     {"SurfacePoint",
      {},
@@ -72,24 +81,9 @@ float alpha_hash(vec3 p, uint seed) {
     return max(v.r, max(v.g, v.b));
 }
 )"},
-    {"ggx_reflection",
-     {"ggx_d", "ggx_visibility"},
-     R"(// microfacet.h ggx_reflection: (D·V, wo·h), or false where h is undefined.
-bool ggx_reflection(vec3 n, vec3 wo, vec3 wi, float alpha, out float dv, out float cos_oh) {
-    const vec3 sum = wo + wi;
-    const float len2 = dot(sum, sum);
-    if (!(len2 > 1e-30)) return false;
-    const vec3 h = sum / sqrt(len2);
-    dv = ggx_d(n, h, alpha) * ggx_visibility(n, wo, wi, alpha);
-    cos_oh = clamp(dot(wo, h), 0.0, 1.0);
-    return true;
-}
-)"},
     {"clamp_closure",
-     {"Closure"},
-     R"(// closure.h: clamp_to_valid_ranges and closure_type.
-float clamp_unit(float x) { return x > 0.0 ? min(x, 1.0) : 0.0; }
-float clamp_non_negative(float x) { return x > 0.0 ? min(x, 1e6) : 0.0; }
+     {"Closure", "closure_ranges"},
+     R"(// closure.h: make_closure, clamp_to_valid_ranges and closure_type.
 Closure clamp_closure(vec3 base_color, float metallic, float roughness, float specular,
                       vec3 specular_color, float ior) {
     Closure c;
@@ -101,28 +95,44 @@ Closure clamp_closure(vec3 base_color, float metallic, float roughness, float sp
                             clamp_non_negative(specular_color.g),
                             clamp_non_negative(specular_color.b));
     c.ior = clamp_non_negative(ior);
-    if (c.metallic <= 0.0 && c.specular <= 0.0) c.type = 0u;
-    else if (c.metallic >= 1.0) c.type = 1u;
-    else if (c.metallic <= 0.0) c.type = 2u;
-    else c.type = 3u;
+    c.type = closure_type_of(c.metallic, c.specular);
     return c;
 }
 )"},
-    // The closure types' evaluation f(wo, wi) without the cosine (shading).
+    // The closure types' evaluation f(wo, wi) without the cosine (shading), the shared
+    // functions of closure_eval.h applied to a Closure.
     {"lambertian_eval",
-     {"Closure", "constants"},
+     {"Closure", "lambertian_reflection"},
      R"(vec3 lambertian_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
-    if (dot(n, wo) <= 0.0 || dot(n, wi) <= 0.0) return vec3(0.0);
-    return c.base_color * kInvPi;
+    return lambertian_reflection(c.base_color, n, wo, wi);
 }
 )"},
     {"ggx_conductor_eval",
-     {"Closure", "roughness_to_alpha", "fresnel_schlick", "ggx_reflection"},
+     {"closure_eval"},
      R"(vec3 ggx_conductor_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
-    if (dot(n, wo) <= 0.0 || dot(n, wi) <= 0.0) return vec3(0.0);
-    float dv, cos_oh;
-    if (!ggx_reflection(n, wo, wi, roughness_to_alpha(c.roughness), dv, cos_oh)) return vec3(0.0);
-    return fresnel_schlick(c.base_color, vec3(1.0), cos_oh) * dv;
+    return conductor_reflection(c.base_color, roughness_to_alpha(c.roughness), n, wo, wi);
+}
+)"},
+    {"closure_lobes",
+     {"closure_eval"},
+     R"(// A clamped closure's lobes, as Bsdf's constructor derives them (no transmission here).
+ReflectionLobes closure_lobes(Closure c) {
+    return reflection_lobes(c.base_color, c.metallic, roughness_to_alpha(c.roughness),
+                            dielectric_f0(c.specular_color, c.specular, c.ior), c.specular, false);
+}
+)"},
+    {"metal_rough_diffuse_eval",
+     {"closure_lobes"},
+     R"(// Bsdf::eval_diffuse: the diffuse lobe of metal_rough_eval alone.
+vec3 metal_rough_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
+    return metal_rough_diffuse(closure_lobes(c), n, wo, wi);
+}
+)"},
+    {"metal_rough_eval",
+     {"closure_lobes"},
+     R"(// Bsdf::eval outside a solid; a Lambertian closure is its diffuse lobe alone.
+vec3 metal_rough_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
+    return metal_rough_reflection(closure_lobes(c), n, wo, wi);
 }
 )"},
     {"dielectric_diffuse_eval",
@@ -134,54 +144,6 @@ vec3 dielectric_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
     return metal_rough_eval(d, n, wo, wi);
 }
 )"},
-    {"metal_rough_f0",
-     {"Closure", "f0_from_ior"},
-     R"(// bsdf.cpp, dielectric_layer(): the dielectric's normal-incidence reflectance, clamped to 1
-// before the multiplication by specular.
-vec3 metal_rough_f0(Closure c) {
-    return min(f0_from_ior(c.ior) * c.specular_color, vec3(1.0)) * c.specular;
-}
-)"},
-    {"metal_rough_diffuse_eval",
-     {"Closure", "metal_rough_f0", "dielectric_helpers"},
-     R"(// bsdf.cpp, Bsdf::eval_diffuse: the diffuse lobe of metal_rough_eval alone (all of a
-// Lambertian closure's f, none of a conductor's); independent of the roughness.
-vec3 metal_rough_diffuse_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
-    const float co = dot(n, wo);
-    const float ci = dot(n, wi);
-    if (co <= 0.0 || ci <= 0.0) return vec3(0.0);
-    if (c.metallic <= 0.0 && c.specular <= 0.0) return c.base_color * kInvPi;
-    const float f90 = c.specular;
-    const float f0_max = max_component(metal_rough_f0(c));
-    const bool has_diffuse = c.metallic < 1.0 && max_component(c.base_color) > 0.0 && f0_max < 1.0;
-    if (!has_diffuse) return vec3(0.0);
-    const float w_d = (1.0 - fresnel_schlick(f0_max, f90, co)) *
-                      (1.0 - fresnel_schlick(f0_max, f90, ci));
-    return (1.0 - c.metallic) * w_d * (c.base_color * kInvPi);
-}
-)"},
-    {"metal_rough_eval",
-     {"Closure", "roughness_to_alpha", "metal_rough_f0", "metal_rough_diffuse_eval",
-      "dielectric_helpers"},
-     R"(// bsdf.cpp, Bsdf::eval with the derived members of its constructor; a Lambertian closure
-// (metallic and specular 0) is its diffuse lobe alone.
-vec3 metal_rough_eval(Closure c, vec3 n, vec3 wo, vec3 wi) {
-    if (dot(n, wo) <= 0.0 || dot(n, wi) <= 0.0) return vec3(0.0);
-    const vec3 f0 = metal_rough_f0(c);
-    const float f90 = c.specular;
-    const float alpha = roughness_to_alpha(c.roughness);
-    const bool has_specular = c.metallic > 0.0 || f90 > 0.0;
-    vec3 f = metal_rough_diffuse_eval(c, n, wo, wi);
-    float dv, cos_oh;
-    if (has_specular && ggx_reflection(n, wo, wi, alpha, dv, cos_oh)) {
-        const vec3 fresnel = (1.0 - c.metallic) * fresnel_schlick(f0, vec3(f90), cos_oh) +
-                             c.metallic * fresnel_schlick(c.base_color, vec3(1.0), cos_oh);
-        f += fresnel * dv;
-    }
-    return f;
-}
-)"},
-    {"dielectric_helpers", {"constants", "max_component", "fresnel_schlick", "ggx_reflection"}, ""},
 };
 
 }  // namespace

@@ -61,17 +61,15 @@ float ggx_reflection_pdf(const Vec3& wo, const Vec3& wi, float alpha) {
 
 std::optional<MicrofacetReflection> ggx_reflection(const Vec3& wo, const Vec3& wi, float alpha) {
     if (wo.z <= 0.0f || wi.z <= 0.0f) return std::nullopt;
-    const std::optional<Vec3> h = reflection_half_vector(wo, wi);
-    if (!h) return std::nullopt;
-    return MicrofacetReflection{ggx_d(*h, alpha) * ggx_visibility(wo, wi, alpha),
-                                std::clamp(glm::dot(wo, *h), 0.0f, 1.0f)};
+    const Vec3 r = shared::math::ggx_reflection(kLocalNormal, wo, wi, alpha);
+    if (!(r.z > 0.0f)) return std::nullopt;
+    return MicrofacetReflection{r.x, r.y};
 }
 
 std::optional<Vec3> reflection_half_vector(const Vec3& wo, const Vec3& wi) {
     const Vec3 sum = wo + wi;
     const float len2 = glm::dot(sum, sum);
-    // 1e-30 keeps 1/√len2 well inside the float range; only pairs within ~1e-15 of wo = −wi land
-    // here, and for those the reflection has no meaningful half vector.
+    // The bound of shared::math::ggx_reflection (shading_math.h), which says why.
     if (!(len2 > 1e-30f)) return std::nullopt;
     return sum / std::sqrt(len2);
 }

@@ -31,8 +31,8 @@ using shared::math::kMinCos;
 
 using shared::math::roughness_to_alpha;
 
-// The local frame's normal: shading_math.h's functions take the normal, which is z here.
-inline constexpr Vec3 kLocalNormal{0.0f, 0.0f, 1.0f};
+// The local frame's normal z, as the shared functions take it (shading_math.h).
+using shared::math::kLocalNormal;
 
 // D(h) = α² / (π (h.x² + h.y² + α² h.z²)²), which is Walter et al. eq. 33 rewritten for a unit h
 // without tan θ, so that h = n (tan θ = 0) and h at the horizon (cos θ = 0) need no special case

@@ -126,7 +126,9 @@ std::string expand(std::string_view text, const std::string& dir,
                                          [&](const auto& kv) { return kv.first == name; });
             if (it == inserts.end())
                 throw gpu::GpuError("shader template: nothing to insert for '" + name + "'");
-            out += it->second;
+            // Generated code holds shared headers' text too (material/glsl_library.cpp): expanded
+            // as they are when included, without their C++ branches.
+            out += expand(it->second, dir, enabled, {}, included);
             continue;
         }
         if (t.starts_with("#extension GL_GOOGLE_include_directive")) continue;

@@ -14,14 +14,20 @@
 #include "shared/chain_record.h"
 //@endif
 //@insert closures
+// After the closures: their shading_constants.h defines MVPL_INLINE.
+#include "shared/vpl_pair.h"
+//@if spot
+#include "shared/spot_falloff.h"
+//@endif
 //@if glossy
 #include "shared/virtual_sphere.h"
+#include "shared/lobe_clamp.h"
 
 // light::widen_closure (engine/light/virtual_sphere.cpp): the lobe integrated over a virtual
 // sphere of spread s² = spread2.
 Closure widen_closure(Closure c, float spread2) {
     Closure w = c;
-    w.roughness = sqrt(vsl_alpha(roughness_to_alpha(c.roughness), spread2));
+    w.roughness = vsl_roughness(roughness_to_alpha(c.roughness), spread2);
     return w;
 }
 //@endif
@@ -47,15 +53,6 @@ layout(std430, set = 0, binding = 5) readonly buffer ChainRecords { ChainRecord 
 layout(push_constant) uniform ShadingPushBlock { ShadingPush pc; };
 
 #include "shadow_lookup.glsl"
-
-//@if spot
-float spot_falloff(GpuVpl v, float cos_angle) {
-    // light::spot_attenuation
-    const float scale = 1.0 / max(1e-3, v.cos_inner - v.cos_outer);
-    const float t = clamp((cos_angle - v.cos_outer) * scale, 0.0, 1.0);
-    return t * t;
-}
-//@endif
 
 // The point that receives the VPLs: the pixel's surface, or the rough end of its specular chain.
 struct Receiver {
@@ -137,24 +134,16 @@ void add_directional_vpl(uint i, GpuVpl v, Receiver r, inout vec3 sum) {
     const vec3 f_r = closure_eval(r.closure, r.n, r.wo, to_light);
     if (max_component(f_r) <= 0.0) return;
     const float vis = (pc.flags & kShadows) != 0u ? directional_visibility(i, v, r.p, r.ng) : 1.0;
-    sum += v.power * vis * f_r * cos_r;
+    sum += vpl_pair(v.power * vis, f_r, cos_r, VplFactors(1.0, vec3(1.0), vec3(1.0)), 1.0, 0.0);
 }
 //@endif
 
 //@if point|spot|area|surface
-// A VPL's own factors towards w (VPL → receiver): `emitter`, the spot falloff or max(0, n_j·ω) (1
-// for a point VPL); `f`, a surface VPL's BSDF (1 for the others), its lobes widened by spread2;
-// `f_diffuse`, its diffuse lobe alone, where the pair is clamped lobe by lobe (by_lobe).
-struct VplFactors {
-    float emitter;
-    vec3 f;
-    vec3 f_diffuse;
-};
-
+// A VPL's own factors towards w, VPL → receiver (shared/vpl_pair.h); f widened by spread2.
 VplFactors vpl_factors(GpuVpl v, vec3 w, float spread2, bool by_lobe) {
     VplFactors e = VplFactors(1.0, vec3(1.0), vec3(1.0));
 //@if spot
-    if (v.type == kVplSpot) e.emitter = spot_falloff(v, dot(v.normal, w));
+    if (v.type == kVplSpot) e.emitter = spot_falloff(v.cos_inner, v.cos_outer, dot(v.normal, w));
 //@endif
 //@if area|surface
     if (v.type == kVplArea || v.type == kVplSurface) e.emitter = max(0.0, dot(v.normal, w));
@@ -195,8 +184,9 @@ void add_local_vpl(uint i, GpuVpl v, Receiver r, float shadow_res, inout vec3 su
     // A pair with a widened glossy lobe in it is clamped lobe by lobe (light::vpl_contribution;
     // shared::vsl_glossy_d2): f_vpl's diffuse lobe alone, an area VPL's emission counting as
     // diffuse.
-    by_lobe = spread2 > 0.0 && pc.d_min2 > 0.0 &&
-              (r.closure.type != 0u || (v.type == kVplSurface && v.closure_type != 0u));
+    by_lobe = clamps_by_lobe(spread2, pc.d_min2,
+                             r.closure.type != 0u ||
+                                 (v.type == kVplSurface && v.closure_type != 0u));
 //@endif
     const VplFactors e = vpl_factors(v, w, spread2, by_lobe);
     if (e.emitter <= 0.0 || max_component(e.f) <= 0.0) return;
@@ -214,14 +204,12 @@ void add_local_vpl(uint i, GpuVpl v, Receiver r, float shadow_res, inout vec3 su
         (pc.flags & kShadows) != 0u ? visibility(i, to_receiver, d, r.ng, shadow_res) : 1.0;
 //@if glossy
     if (by_lobe) {
-        const vec3 diffuse = closure_eval_diffuse(r.closure, r.n, r.wo, -w) * e.f_diffuse;
-        const vec3 glossy = max(f_r * e.f - diffuse, vec3(0.0));
-        sum += v.power * vis * cos_r * e.emitter *
-               (diffuse / max(d2, pc.d_min2) + glossy / vsl_glossy_d2(d2, pc.vsl_r2, pc.d_min2));
+        sum += vpl_pair_by_lobe(v.power * vis, f_r, closure_eval_diffuse(r.closure, r.n, r.wo, -w),
+                                cos_r, e, d2, pc.vsl_r2, pc.d_min2);
         return;
     }
 //@endif
-    sum += v.power * vis * f_r * cos_r * e.f * e.emitter / max(d2, pc.d_min2);
+    sum += vpl_pair(v.power * vis, f_r, cos_r, e, d2, pc.d_min2);
 }
 //@endif
 

@@ -49,6 +49,12 @@ MVPL_VSL_FN float vsl_alpha(float alpha, float spread2) {
     return min(1.0f, sqrt(alpha * alpha + spread2));
 }
 
+// The perceptual roughness (α = roughness², shading_math.h) of that widened lobe: what a widened
+// closure holds (light::widen_closure; widen_closure of shading_template.glsl).
+MVPL_VSL_FN float vsl_roughness(float alpha, float spread2) {
+    return sqrt(vsl_alpha(alpha, spread2));
+}
+
 // The squared distance that divides the glossy products of a VSL pair (issue 15): clamping
 // lobe by lobe. Only the diffuse × diffuse product of a pair keeps the clamp max(d², d_min²);
 // every product with a widened glossy lobe in it is bounded by the sphere itself. A widened

@@ -138,15 +138,15 @@ TEST(LobeClamp, WithoutSpheresOrClampTheFormulaIsUnchanged) {
         const Vec3 d = v.position - r.sp.p;
         const float dist2 = glm::dot(d, d);
         const Vec3 to_light = d / std::sqrt(dist2);
-        const float inv_d2 = 1.0f / std::max(dist2, d_min2);
         const float spread2 = shared::vsl_spread2(r2, dist2);
-        const Rgb factor(std::max(0.0f, glm::dot(v.normal, -to_light)));
+        const float emitter = std::max(0.0f, glm::dot(v.normal, -to_light));
         const Vec3 wi = r.sp.frame.to_local(to_light);
         const Rgb f =
             spread2 > 0.0f
                 ? material::Bsdf(widen_closure(r.sp.bsdf.params(), spread2)).eval(r.wo, wi)
                 : r.sp.bsdf.eval(r.wo, wi);
-        const Rgb before = v.power * f * factor * (wi.z * inv_d2);
+        // Φ f_r cos θr · e / max(d², d_min²), in shaders/shared/vpl_pair.h's order of operations.
+        const Rgb before = v.power * f * wi.z * emitter / std::max(dist2, d_min2);
         EXPECT_EQ(vpl_contribution(accel, r, prepare_vpl(v), d_min2, r2), before) << d_min2;
     }
 }

@@ -10,7 +10,6 @@
 // BRDF is the closure's own: its diffuse base is weighted by the macro-surface Fresnel
 // transmittance both ways instead of (1 − F(v·h)) (dielectric_diffuse.h says why), as for every
 // glTF dielectric here.
-#include <algorithm>
 
 #include "engine/material/node_graph.h"
 
@@ -21,13 +20,11 @@ constexpr std::string_view kInputs[] = {"diffuse (rgb)", "specular (rgb)", "glos
 
 // The specular colour limited to [0, 1] (the extension's range; NaN to 0) before max() reads it,
 // as clamp_to_valid_ranges limits a base colour.
-float unit(float x) {
-    return x > 0.0f ? std::min(x, 1.0f) : 0.0f;
-}
+using shared::math::clamp_unit;
 
 ClosureParams evaluate(const NodeContext& c) {
     const Rgb s = c.rgb(1);
-    const Rgb f0(unit(s.r), unit(s.g), unit(s.b));
+    const Rgb f0(clamp_unit(s.r), clamp_unit(s.g), clamp_unit(s.b));
     const Rgb c_diff = c.rgb(0) * (1.0f - max_component(f0));
     return make_closure(c_diff, 0.0f, 1.0f - c.scalar(2), 1.0f, f0, 0.0f);
 }
