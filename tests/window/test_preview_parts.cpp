@@ -160,7 +160,7 @@ TEST(PreviewScript, RejectsMalformedLinesWithTheirNumber) {
         {"1 orbit 1\n", "line 1: orbit needs 2 numbers"},
         {"\n1 zoom 0\n", "line 2: zoom needs a positive factor"},
         {"1 key q\n", "line 1: key needs one of r, plus, minus, m, c, p, v, tab, escape"},
-        {"1 view albedos\n", "line 1: view needs image, albedo, normal, depth or vpls"},
+        {"1 view albedos\n", "line 1: view needs image, albedo, normal, depth, vpls or error"},
         {"1 resize 0 10\n", "line 1: resize needs a size"},
         {"1 pan 1 2 3\n", "line 1: unexpected '3'"},
         {"-1 zoom 2\n", "line 1: expected a frame number"},
