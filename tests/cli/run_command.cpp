@@ -12,6 +12,12 @@
 
 namespace mvpl::test {
 
+std::string temp_file(const std::string& prefix, const std::string& name) {
+    return (std::filesystem::temp_directory_path() /
+            (prefix + "_" + std::to_string(::getpid()) + "_" + name))
+        .string();
+}
+
 std::string shell_quote(const std::string& s) {
     std::string q = "'";
     for (char c : s) {

@@ -25,5 +25,7 @@ CommandResult run_mvpl_gpu(const std::string& args, const std::string& prefix = 
 void expect_one_line_error(const CommandResult& r, const std::string& must_contain);
 // Single-quotes a string for the shell.
 std::string shell_quote(const std::string& s);
+// A path in the temporary folder of this test process's own: PREFIX_PID_NAME.
+std::string temp_file(const std::string& prefix, const std::string& name);
 
 }  // namespace mvpl::test

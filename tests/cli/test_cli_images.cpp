@@ -25,9 +25,7 @@ using test::shell_quote;
 const std::string kCbox = MVPL_ASSETS_DIR "/cornell-box/cbox.gltf";
 
 std::string temp_file(const std::string& name) {
-    return (std::filesystem::temp_directory_path() /
-            ("mvpl_cli_" + std::to_string(::getpid()) + "_" + name))
-        .string();
+    return test::temp_file("mvpl_cli", name);
 }
 
 TEST(Cli, ReferenceWritesExrAndPng) {

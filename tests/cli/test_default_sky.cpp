@@ -26,8 +26,7 @@ using test::shell_quote;
 const fs::path kSamples = fs::path(MVPL_SOURCE_DIR) / ".." / "shared" / "gltf-samples";
 
 std::string temp_file(const std::string& name) {
-    return (fs::temp_directory_path() / ("mvpl_sky_" + std::to_string(::getpid()) + "_" + name))
-        .string();
+    return test::temp_file("mvpl_sky", name);
 }
 
 // The thresholds. Under the unit sky the background alone is radiance 1 wherever the model is
