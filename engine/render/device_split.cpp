@@ -8,9 +8,14 @@
 
 namespace mvpl::render {
 
-std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
-                                         std::span<const uint64_t> index, uint64_t first,
-                                         uint64_t batch, uint32_t devices) {
+namespace {
+
+// The shares of `vpls` when batch j of the call (j = 0 … batches − 1) goes to device
+// device_of(j, batches).
+template <class DeviceOf>
+std::vector<DeviceShare> share_batches(std::span<const light::Vpl> vpls,
+                                       std::span<const uint64_t> index, uint64_t first,
+                                       uint64_t batch, uint32_t devices, DeviceOf device_of) {
     std::vector<DeviceShare> shares(std::max<uint32_t>(devices, 1));
     if (vpls.empty()) return shares;
     const uint64_t b = std::max<uint64_t>(batch, 1);
@@ -21,12 +26,34 @@ std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
     const uint64_t batches = index_of(vpls.size() - 1) / b - first_batch + 1;
     for (size_t i = 0; i < vpls.size(); ++i) {
         const uint64_t k = index_of(i);
-        // Batch j of the call goes to device ⌊j·n / batches⌋: runs in order, lengths within one.
-        DeviceShare& share = shares[size_t((k / b - first_batch) * shares.size() / batches)];
+        DeviceShare& share = shares[size_t(device_of(k / b, first_batch, batches, shares.size()))];
         share.vpls.push_back(vpls[i]);
         share.index.push_back(k);
     }
     return shares;
+}
+
+}  // namespace
+
+uint32_t default_render_devices(const gpu::DeviceInfo& device) {
+    return device.type == gpu::DeviceType::cpu ? 2u : 1u;
+}
+
+std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
+                                         std::span<const uint64_t> index, uint64_t first,
+                                         uint64_t batch, uint32_t devices) {
+    // Batch j of the call goes to device ⌊j·n / batches⌋: runs in order, lengths within one.
+    return share_batches(vpls, index, first, batch, devices,
+                         [](uint64_t k, uint64_t first_batch, uint64_t batches, size_t n) {
+                             return (k - first_batch) * n / batches;
+                         });
+}
+
+std::vector<DeviceShare> deal_batches(std::span<const light::Vpl> vpls,
+                                      std::span<const uint64_t> index, uint64_t first,
+                                      uint64_t batch, uint32_t devices) {
+    return share_batches(vpls, index, first, batch, devices,
+                         [](uint64_t k, uint64_t, uint64_t, size_t n) { return k % n; });
 }
 
 // Every field of RenderTimings is summed below: a new one must be added there too.

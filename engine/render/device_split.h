@@ -14,6 +14,7 @@
 #include <span>
 #include <vector>
 
+#include "engine/gpu/device_info.h"
 #include "engine/light/vpl.h"
 #include "engine/render/vpl_renderer.h"
 
@@ -21,6 +22,11 @@ namespace mvpl::render {
 
 // The most devices one renderer drives (each holds a copy of every pass's images).
 inline constexpr uint32_t kMaxRenderDevices = 8;
+
+// The devices a renderer runs on where the user does not say: 2 on a CPU implementation
+// (lavapipe), where one device's shadow geometry runs beside the other's rasterisation and shading
+// (docs/results.md, "Two devices"), and 1 on a GPU, which overlaps its own work.
+uint32_t default_render_devices(const gpu::DeviceInfo& device);
 
 struct DeviceShare {
     std::vector<light::Vpl> vpls;
@@ -33,6 +39,13 @@ struct DeviceShare {
 std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
                                          std::span<const uint64_t> index, uint64_t first,
                                          uint64_t batch, uint32_t devices);
+
+// With kept shadow maps (RenderOptions::kept_shadow_bytes) a VPL shaded again after a restart
+// (the preview's replay) must fall on the device that kept its map, whatever the calls' lengths:
+// deal_batches() deals batch k (index / batch) to device k mod n instead (the same arguments).
+std::vector<DeviceShare> deal_batches(std::span<const light::Vpl> vpls,
+                                      std::span<const uint64_t> index, uint64_t first,
+                                      uint64_t batch, uint32_t devices);
 
 // sum += t, every count and GPU time (wall_ms too: the caller sets the group's own).
 void add_timings(RenderTimings& sum, const RenderTimings& t);

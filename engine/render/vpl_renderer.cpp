@@ -89,6 +89,10 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
         memory_shortfall(options, m.context->device_info(), host_memory_bytes(), m.devices());
     if (!shortfall.empty()) throw UsageError(shortfall);
     RenderOptions shared = options;
+    // The devices share the kept maps' budget (each keeps the maps of the VPLs dealt to it).
+    shared.kept_shadow_bytes =
+        kept_maps_budget(options.kept_shadow_bytes, m.context->device_info(), host_memory_bytes()) /
+        m.devices();
     if (options.on_batch) {
         // The devices report from their own threads.
         auto mutex = std::make_shared<std::mutex>();
@@ -121,8 +125,9 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
         throw gpu::GpuError("VplRenderer::accumulate: one index per VPL");
     if (vpls.empty()) return;
     const auto start = std::chrono::steady_clock::now();
+    const auto split = m.options.kept_shadow_bytes > 0 ? deal_batches : split_into_runs;
     const std::vector<DeviceShare> shares =
-        split_into_runs(vpls, index, m.group_shaded, m.options.batch, m.devices());
+        split(vpls, index, m.group_shaded, m.options.batch, m.devices());
     run_on_devices(m.devices(), [&](uint32_t d) {
         if (!shares[d].vpls.empty()) m.device(d).accumulate(shares[d].vpls, shares[d].index);
     });
@@ -209,7 +214,17 @@ uint32_t VplRenderer::devices() const {
 }
 
 KeptMapStats VplRenderer::kept_maps() const {
-    return m_impl->shadow ? m_impl->shadow->kept() : KeptMapStats{};
+    KeptMapStats sum;
+    for (uint32_t d = 0; d < m_impl->devices(); ++d) {
+        const Impl& device = m_impl->device(d);
+        if (!device.shadow) continue;
+        const KeptMapStats kept = device.shadow->kept();
+        sum.maps += kept.maps;
+        sum.capacity += kept.capacity;
+        sum.budget_bytes += kept.budget_bytes;
+        sum.restored += kept.restored;
+    }
+    return sum;
 }
 
 uint64_t VplRenderer::peak_device_bytes() const {
@@ -227,6 +242,17 @@ const gpu::Image& VplRenderer::accumulation() const {
 const gpu::Image& VplRenderer::emission() const {
     if (!m_impl->emission) throw gpu::GpuError("VplRenderer::emission before begin");
     return m_impl->emission->image();
+}
+
+VplRenderer::Presented VplRenderer::presented() {
+    Impl& m = *m_impl;
+    if (m.partners.empty()) return {&accumulation(), &emission()};
+    m.require_begun("VplRenderer::presented");
+    m.present_sum(m.presented_accumulation, accumulation(),
+                  [](const Impl& d) -> const gpu::Image& { return d.shading->accumulation(); });
+    m.present_sum(m.presented_emission, emission(),
+                  [](const Impl& d) -> const gpu::Image& { return d.emission->image(); });
+    return {&m.presented_accumulation, &m.presented_emission};
 }
 
 const gpu::Image& VplRenderer::g_buffer() const {

@@ -64,6 +64,7 @@ struct RenderOptions {
     bool hemicube = true;
     // Device memory for shadow maps kept from one begin() to the next and copied back when the
     // same VPL is shaded again (kept_shadow_maps.h: the preview after a camera move); 0: none.
+    // On several devices, the budget (capped by render_memory.h) is shared equally among them.
     uint64_t kept_shadow_bytes = 0;
     // Area and Surface VPLs whose lit half-space holds no point of the view are neither drawn
     // nor shaded (vpl_culling.h; the image is the same to the bit); false: every VPL.
@@ -133,13 +134,14 @@ public:
                 const trace::Accel* accel = nullptr);
     // The same on `devices` logical devices (1 … kMaxRenderDevices, device_split.h): device 0 is
     // `context`, the others are contexts made from its options, each with a renderer of its own.
-    // accumulate() cuts each call's batches into one run per device and runs the devices at
-    // once; contributions(), resolve() and timings() are their sums, and the image is the one
-    // device's (to rounding). Why: llvmpipe rasterises a context's triangles only after it has
-    // shaded and binned all of them on one thread, and waits for it, so on lavapipe one
-    // device's shadow geometry runs beside the other's rasterisation and shading
-    // (docs/results.md, "Two devices"); on several GPUs it is one device each. The preview's
-    // accessors below are device 0's alone.
+    // accumulate() cuts each call's batches into one run per device (with kept shadow maps, deals
+    // them out by index instead: device_split.h) and runs the devices at once; contributions(),
+    // resolve(), presented() and timings() are their sums, and the image is the one device's (to
+    // rounding). Why: llvmpipe rasterises a context's triangles only after it has shaded and
+    // binned all of them on one thread, and waits for it, so on lavapipe one device's shadow
+    // geometry runs beside the other's rasterisation and shading (docs/results.md, "Two
+    // devices"); on several GPUs it is one device each. accumulation(), emission() and
+    // g_buffer() below are device 0's alone.
     VplRenderer(gpu::Context& context, const scene::Scene& scene, const trace::Accel* accel,
                 uint32_t devices);
     ~VplRenderer();
@@ -184,9 +186,18 @@ public:
     const gpu::Image& accumulation() const;
     const gpu::Image& emission() const;
     const gpu::Image& g_buffer() const;
+    // accumulation() and emission() summed over the devices, for presenting on device 0: on one
+    // device its own images; on several, every device's read back, summed on the host and
+    // uploaded into images of device 0 at each call (16 MB of copies at 512²).
+    struct Presented {
+        const gpu::Image* accumulation = nullptr;
+        const gpu::Image* emission = nullptr;
+    };
+    Presented presented();
     gpu::Context& context() const;
     uint32_t devices() const;
-    // Device 0's kept shadow maps (RenderOptions::kept_shadow_bytes; zero without them).
+    // The kept shadow maps (RenderOptions::kept_shadow_bytes; zero without them), summed over
+    // the devices.
     KeptMapStats kept_maps() const;
     // The most device memory allocated at once, summed over the devices (MemoryAllocator).
     uint64_t peak_device_bytes() const;

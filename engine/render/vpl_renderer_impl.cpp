@@ -89,6 +89,13 @@ std::vector<float> VplRenderer::Impl::summed(const gpu::Image& (*image)(const Im
     return sum;
 }
 
+void VplRenderer::Impl::present_sum(gpu::Image& target, const gpu::Image& like,
+                                    const gpu::Image& (*image)(const Impl&)) {
+    if (!target.valid() || target.width() != like.width() || target.height() != like.height())
+        target = gpu::Image(*context, like.desc(), "presented " + like.name());
+    target.upload(summed(image));
+}
+
 void VplRenderer::Impl::add_timing(std::chrono::steady_clock::time_point start, double shadow_ms,
                                    double shading_ms) {
     timings.shadow_ms += shadow_ms;

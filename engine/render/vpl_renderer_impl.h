@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "engine/gpu/context.h"
+#include "engine/gpu/image.h"
 #include "engine/render/chain_layer.h"
 #include "engine/render/device_split.h"
 #include "engine/render/emission_sum.h"
@@ -103,6 +104,12 @@ struct VplRenderer::Impl {
     void require_begun(const char* what) const;
     // The RGBA32F image that `image` picks on each device, downloaded and summed over them.
     std::vector<float> summed(const gpu::Image& (*image)(const Impl&)) const;
+    // Device 0's images of the sums that VplRenderer::presented() returns on several devices,
+    // made again when `like` (device 0's own) changes size.
+    gpu::Image presented_accumulation, presented_emission;
+    // Uploads summed(image) into `target`, made like `like` where it is not.
+    void present_sum(gpu::Image& target, const gpu::Image& like,
+                     const gpu::Image& (*image)(const Impl&));
     void refresh_group_timings() {
         group_timings = timings;
         for (const Partner& p : partners)

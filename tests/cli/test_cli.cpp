@@ -62,7 +62,7 @@ TEST(Cli, OutOfRangeAndRepeatedOptionsAreRefused) {
                           "--batches-per-position");
     expect_one_line_error(run_mvpl("render " + kCbox + " --devices 9"), "--devices");
     expect_one_line_error(run_mvpl("bench " + kCbox + " --devices -1"), "--devices");
-    expect_one_line_error(run_mvpl("preview " + kCbox + " --devices 2"), "--devices");
+    expect_one_line_error(run_mvpl("preview " + kCbox + " --devices 9"), "--devices");
     expect_one_line_error(run_mvpl("render " + kCbox + " --pool -1"), "--pool");
     expect_one_line_error(run_mvpl("convergence " + kCbox + " --ref x.exr --clusters 0"),
                           "--clusters");

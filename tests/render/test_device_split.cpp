@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <span>
 #include <stdexcept>
 #include <thread>
 #include <vector>
@@ -68,6 +69,34 @@ TEST(SplitIntoRuns, GivenIndicesDecideTheBatches) {
     EXPECT_TRUE(split_into_runs({}, {}, 0, 8, 2)[1].vpls.empty());
     const std::vector<uint64_t> decreasing{9, 3, 4, 5, 6};
     EXPECT_THROW(split_into_runs(vpls, decreasing, 0, 8, 2), gpu::GpuError);
+}
+
+// With kept maps a VPL's device depends on its index alone: the same VPLs cut into calls of any
+// lengths (a replay after a camera move) land on the same devices, batch k on device k mod n.
+TEST(DealBatches, AVplFallsOnTheSameDeviceWhateverTheCalls) {
+    const std::vector<light::Vpl> vpls = numbered(40);
+    for (const uint32_t devices : {1u, 2u, 3u}) {
+        SCOPED_TRACE(devices);
+        std::vector<int> device_of(40, -1);
+        for (const size_t call : {size_t(40), size_t(5), size_t(13)}) {
+            for (size_t begin = 0; begin < vpls.size(); begin += call) {
+                const size_t n = std::min(call, vpls.size() - begin);
+                const std::vector<DeviceShare> shares =
+                    deal_batches(std::span(vpls).subspan(begin, n), {}, begin, 8, devices);
+                ASSERT_EQ(shares.size(), devices);
+                for (uint32_t d = 0; d < devices; ++d) {
+                    for (size_t i = 0; i < shares[d].index.size(); ++i) {
+                        const uint64_t k = shares[d].index[i];
+                        EXPECT_EQ(uint64_t(shares[d].vpls[i].power.r), k);
+                        EXPECT_EQ(k / 8 % devices, d);
+                        if (device_of[k] < 0) device_of[k] = int(d);
+                        EXPECT_EQ(device_of[k], int(d));  // the same in every cut
+                    }
+                }
+            }
+        }
+        EXPECT_EQ(std::count(device_of.begin(), device_of.end(), -1), 0);
+    }
 }
 
 // Every device's work runs, device 0's on the caller's thread, and an error of one device comes

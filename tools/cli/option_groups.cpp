@@ -55,8 +55,7 @@ uint32_t RendererArgs::batches_per_position_for(const scene::Scene& scene) const
 }
 
 uint32_t RendererArgs::devices_for(const gpu::DeviceInfo& device) const {
-    if (devices > 0) return uint32_t(devices);
-    return device.type == gpu::DeviceType::cpu ? 2u : 1u;
+    return devices > 0 ? uint32_t(devices) : render::default_render_devices(device);
 }
 
 void RendererArgs::apply(render::RenderOptions& o) const {

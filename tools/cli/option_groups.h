@@ -60,9 +60,7 @@ struct RendererArgs {
                             uint32_t width, uint32_t height) const;
     // --batches-per-position N as given, or the scene's default.
     uint32_t batches_per_position_for(const scene::Scene& scene) const;
-    // --devices N as given, or 2 on a CPU implementation (lavapipe), where one device's shadow
-    // geometry runs beside the other's rasterisation and shading (render::VplRenderer's
-    // `devices`; docs/results.md, "Two devices"), and 1 on a GPU, which overlaps its own work.
+    // --devices N as given, or render::default_render_devices.
     uint32_t devices_for(const gpu::DeviceInfo& device) const;
     // The radius of the virtual spherical lights (scene diagonals), 0 with --no-vsl.
     float vsl() const { return no_vsl ? 0.0f : vsl_radius; }

@@ -88,8 +88,6 @@ preview::PreviewOptions checked_options(const PreviewArgs& a) {
         throw UsageError("preview: --res must be in 16..8192 on each side");
     if (!(a.budget > 0.0f && a.budget <= 10000.0f))
         throw UsageError("preview: --budget-ms must be in (0, 10000]");
-    // The window presents one device's accumulation and G-buffer (preview_app.h).
-    if (renderer.devices > 1) throw UsageError("preview: --devices must be 0 or 1");
     if (!o.screenshot.empty()) {
         if (o.frames == 0) throw UsageError("preview: --screenshot needs --frames N");
         check_outputs({o.screenshot});
@@ -116,6 +114,7 @@ preview::PreviewOptions checked_options(const PreviewArgs& a) {
     if (!(a.catch_up >= 0.0f && a.catch_up <= 60.0f))
         throw UsageError("preview: --catch-up must be in [0, 60] seconds");
     o.catch_up_seconds = a.catch_up;
+    o.devices = uint32_t(a.renderer.devices);
     o.camera = a.camera.choice;
     o.environment = a.environment.choice;
     o.load = a.scene_file.options;

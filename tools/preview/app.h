@@ -41,6 +41,8 @@ public:
 
 private:
     static gpu::ContextOptions context_options();
+    // The estimate's integrator on m_options.devices devices of m_context's kind, for m_session.
+    std::unique_ptr<integrator::VplIntegrator> make_integrator();
     float clamp() const { return m_clamping ? m_options.clamp : 0.0f; }
     render::RenderOptions render_options(uint32_t width, uint32_t height) const;
     integrator::Estimate estimate(const render::RenderOptions& ro,

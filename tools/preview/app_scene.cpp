@@ -56,8 +56,7 @@ void PreviewApp::load_scene(const std::string& path, const scene::EnvironmentCho
     m_integrator.reset();
     m_session = std::move(session);
     m_environment = environment;
-    m_integrator =
-        std::make_unique<integrator::VplIntegrator>(m_session->view(), &m_context, 1, nullptr);
+    m_integrator = make_integrator();
     if (!keep_camera) {
         m_controller = CameraController(m_session->camera(), m_session->scene().bounds());
         m_window.set_title("mvpl preview: " + std::filesystem::path(path).filename().string());

@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "engine/light/chain_options.h"
+#include "engine/render/device_split.h"
 #include "tools/preview/app.h"
 #include "tools/preview/screenshot_name.h"
 
@@ -28,8 +29,7 @@ PreviewApp::PreviewApp(const PreviewOptions& options)
       m_window("mvpl preview: " + std::filesystem::path(options.scene_path).filename().string(),
                options.width, options.height),
       m_context(context_options()),
-      m_integrator(
-          std::make_unique<integrator::VplIntegrator>(m_session->view(), &m_context, 1, nullptr)),
+      m_integrator(make_integrator()),
       m_swapchain(m_context, m_window.create_surface(m_context.instance()), uint32_t(options.width),
                   uint32_t(options.height)),
       m_present(m_context, m_swapchain.srgb()),
@@ -39,6 +39,14 @@ PreviewApp::PreviewApp(const PreviewOptions& options)
       m_chain_roughness(options.levers.chains.max_roughness >= 0.0f
                             ? options.levers.chains.max_roughness
                             : light::kDefaultChainRoughness) {}
+
+std::unique_ptr<integrator::VplIntegrator> PreviewApp::make_integrator() {
+    const uint32_t devices = m_options.devices > 0
+                                 ? m_options.devices
+                                 : render::default_render_devices(m_context.device_info());
+    return std::make_unique<integrator::VplIntegrator>(m_session->view(), &m_context, devices,
+                                                       nullptr);
+}
 
 gpu::ContextOptions PreviewApp::context_options() {
     gpu::ContextOptions co;
@@ -123,8 +131,9 @@ void PreviewApp::present(uint32_t width, uint32_t height, bool moving, bool firs
         if (shot) save(m_options.screenshot, false);  // no image to present to: resolve instead
         return;
     }
-    const render::VplRenderer& renderer = *m_integrator->renderer();
-    m_present.record(sc, renderer.accumulation(), renderer.emission(), params, capture);
+    // Summed over the renderer's devices (device 0's own images on one).
+    const render::VplRenderer::Presented sum = m_integrator->renderer()->presented();
+    m_present.record(sc, *sum.accumulation, *sum.emission, params, capture);
     if (m_panel) m_panel->record(sc);  // after the capture: screenshots are the picture alone
     m_swapchain.end_frame();
     const double seconds = m_frame_timer.seconds();

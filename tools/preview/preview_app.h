@@ -56,8 +56,12 @@ struct PreviewOptions {
     bool compensate = true;
     uint32_t compensation_passes = 0;
     bool caustics = true;
-    // Device memory for shadow cubes kept across camera moves (render/kept_shadow_maps.h).
+    // Device memory for shadow cubes kept across camera moves (render/kept_shadow_maps.h), shared
+    // by the devices.
     uint64_t kept_shadow_bytes = render::kDefaultKeptBytes;
+    // The renderer's devices, presented summed on the window's (VplRenderer::presented); 0:
+    // render::default_render_devices, as `mvpl render`.
+    uint32_t devices = 0;
     // The first frame at rest after a move shades the recorded VPLs, in whole batches, until
     // it holds 90 % of what the resting picture held before the move, for at most this many
     // seconds (0: the frame budget as any other frame).
