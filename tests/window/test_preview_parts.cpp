@@ -16,6 +16,7 @@
 #include "tools/preview/settings.h"
 #include "tools/preview/settings_panel.h"
 #include "tools/preview/window.h"
+#include "tools/session/vpl_dots.h"
 
 // The preview's headers, like engine/gpu's, keep Vulkan (and GLFW) to their .cpp files.
 #ifdef VULKAN_CORE_H_
@@ -206,6 +207,46 @@ scene::Camera looking_at_origin() {
 // Tolerance: the controller rebuilds the frame with sin/cos/lookAt in float, errors ~1e-6
 // relative per step on values of magnitude ≤ 5: 1e-4 leaves two orders of margin.
 constexpr float kTolerance = 1e-4f;
+
+// The dots' colour says the power against the largest, a decade a step of the ramp; an emitter
+// VPL is ringed white; a VPL off the film or directional draws nothing.
+TEST(VplDots, ColourAndRingSayPowerAndKind) {
+    std::vector<light::Vpl> vpls(5);
+    const float powers[] = {1.0f, 1e-3f, 1e-1f, 1.0f, 1.0f};
+    for (size_t i = 0; i < vpls.size(); ++i) {
+        vpls[i].type = light::VplType::Surface;
+        vpls[i].path_length = 1;
+        vpls[i].power = Rgb(powers[i]);
+        vpls[i].position = Vec3(20.0f + 40.0f * float(i), 20.0f, 0.0f);  // film = (x, y)
+    }
+    vpls[2].path_length = 0;
+    vpls[3].position.x = -100.0f;
+    vpls[4].type = light::VplType::Directional;
+    Image image(200, 40);
+    const size_t drawn = session::draw_vpls(
+        image,
+        [&](const Vec3& p, Vec2& film) {
+            film = Vec2(p.x, p.y);
+            return p.x >= 0.0f;
+        },
+        vpls);
+    EXPECT_EQ(drawn, 3u);
+    const auto at = [&](float x) { return image.at(int(x), 20); };
+    EXPECT_TRUE(at(20.0f) == Rgb(1.0f, 0.0f, 0.0f));  // the largest: red
+    EXPECT_TRUE(at(60.0f) == Rgb(0.0f, 0.0f, 1.0f));  // 10⁻³ of it: blue
+    EXPECT_TRUE(at(100.0f) == session::dot_colour(0.1f));
+    EXPECT_NEAR(session::dot_colour(0.1f).r, 1.0f, 1e-5f);  // 10⁻¹: yellow
+    EXPECT_NEAR(session::dot_colour(0.1f).g, 1.0f, 1e-5f);
+    // The emitter's ring: a white pixel just outside its disc, none beside the others.
+    size_t white = 0;
+    for (int x = 0; x < image.width(); ++x)
+        for (int y = 0; y < image.height(); ++y)
+            if (image.at(x, y) == session::kEmitterRing) {
+                EXPECT_NEAR(float(x), 100.0f, 4.0f);
+                ++white;
+            }
+    EXPECT_GT(white, 4u);
+}
 
 TEST(CameraController, UnmovedCameraIsTheScenesExactly) {
     const scene::Camera c = looking_at_origin();

@@ -117,7 +117,8 @@ int run_vpls(const Args& args) {
     ArgParser parser("vpls",
                      "Draws where a sampler puts its VPLs: dots over a flat-shaded view of SCENE\n"
                      "(top: from above, back faces cut away; camera: the scene camera).\n"
-                     "Yellow: emitter VPLs; orange: surface VPLs; dot area grows with power.");
+                     "Dot area and colour grow with power (red: the largest; yellow, green, blue:\n"
+                     "1/10, 1/100, 1/1000 of it); emitter VPLs ringed white.");
     parser.add_positional("SCENE", &scene_path, "scene (.gltf, .glb, .xml, .ply, .obj)");
     parser.begin_group("VPLs options");  // not "Vpls", the command's name capitalised
     parser.add_uint64("--vpls", &count, "light paths (mc) or chain steps (metropolis)");

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "engine/core/image_metrics.h"
+#include "tools/session/heat_colour.h"
 
 namespace mvpl::preview {
 
@@ -56,16 +57,8 @@ Image heat_map(const Image& relative_error) {
         const Rgb& e = relative_error.pixels()[i];
         const float worst = std::max({e.r, e.g, e.b});
         if (!(worst > 0.0f)) continue;
-        // t: 0 at 10⁻³, 1 at 1; blue → green → yellow → red over its thirds.
-        const float t = std::clamp((std::log10(worst) + 3.0f) / 3.0f, 0.0f, 1.0f);
-        Rgb& p = out.pixels()[i];
-        if (t < 1.0f / 3.0f) {
-            p = Rgb(0.0f, 3.0f * t, 1.0f - 3.0f * t);
-        } else if (t < 2.0f / 3.0f) {
-            p = Rgb(3.0f * t - 1.0f, 1.0f, 0.0f);
-        } else {
-            p = Rgb(1.0f, 3.0f - 3.0f * t, 0.0f);
-        }
+        // t: 0 at 10⁻³, 1 at 1.
+        out.pixels()[i] = session::heat_colour((std::log10(worst) + 3.0f) / 3.0f);
     }
     return out;
 }
