@@ -48,7 +48,8 @@ size_t draw_vpls(Image& image, const std::function<bool(const Vec3&, Vec2&)>& pr
         const float rel = max_power > 0.0f ? luminance(v.power) / max_power : 0.0f;
         const float radius =
             0.8f + 0.004f * float(std::min(image.width(), image.height())) * std::sqrt(rel);
-        draw_dot(image, film, radius, dot_colour(rel), v.path_length == 0 ? &kEmitterRing : nullptr);
+        draw_dot(image, film, radius, dot_colour(rel),
+                 v.path_length == 0 ? &kEmitterRing : nullptr);
         ++drawn;
     }
     return drawn;
