@@ -11,7 +11,8 @@
 #
 # usage: tools/measure_preview_moves.sh [BUILD_DIR [OUT_DIR]]   (defaults: build, a temp dir)
 # Environment: REST (frames at rest before each move, default 60), REF_VPLS (light paths of the
-# converged image, default 2048), SCENES (default: the two above).
+# converged image, default 2048), SCENES (default: the two above), PREVIEW_ARGS (added to every
+# preview, e.g. "--devices 1"; default none: the preview's defaults).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 build=${1:-build}
@@ -22,7 +23,8 @@ mvpl="$build/bin/mvpl"
 helmet=../shared/gltf-samples/DamagedHelmet/glTF/DamagedHelmet.gltf
 read -r -a scenes <<<"${SCENES:-assets/cornell-box/cbox.gltf $helmet}"
 mkdir -p "$out"
-window() { xvfb-run -a -s "-screen 0 1024x768x24" "$mvpl" preview "$@"; }
+read -r -a preview_args <<<"${PREVIEW_ARGS:-}"
+window() { xvfb-run -a -s "-screen 0 1024x768x24" "$mvpl" preview "$@" "${preview_args[@]}"; }
 
 # Three moves: two orbit steps and a reset (back to the first view), then `rest` frames at rest.
 script="$out/moves.txt"
