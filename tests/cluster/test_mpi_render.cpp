@@ -1,7 +1,7 @@
 // `mvpl render` and `mvpl bench` under `mpirun -np 2` (issue 17, engine/cluster): the ranks' image
-// equals the one-process image with the same seed, a time budget ends every rank, the bench counts
-// the job's VPLs, and a rank that fails makes every rank exit with the same code and one error
-// line.
+// equals the one-process image with the same seed (with row-column sampling too, issue 36), a time
+// budget ends every rank, the bench counts the job's VPLs and representatives, and a rank that
+// fails makes every rank exit with the same code and one error line.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
