@@ -11,6 +11,17 @@ namespace mvpl::integrator {
 
 namespace {
 
+// Over ranks that each made counts[r] items, numbered in rank order from `total` (the items
+// before, which it becomes): this rank's first.
+uint64_t first_of_rank(uint64_t& total, const std::vector<uint64_t>& counts, int rank) {
+    uint64_t first = total;
+    for (int r = 0; r < rank; ++r)
+        first += counts[size_t(r)];
+    for (const uint64_t c : counts)
+        total += c;
+    return first;
+}
+
 // Adds `part` into `sum`, pixel by pixel.
 void add_image(Image& sum, const Image& part, float scale = 1.0f) {
     for (size_t i = 0; i < sum.pixels().size(); ++i)
@@ -33,13 +44,12 @@ VplIntegrator::VplIntegrator(const SceneView& view, gpu::Context* context, uint3
 
 void VplIntegrator::begin(const SceneView& view, const Estimate& estimate, Pacing pacing,
                           std::unique_ptr<sampler::VplStream> stream) {
-    // Every rank has the same estimate, so every rank refuses it alike.
-    if (shared() && estimate.many_lights.enabled())
-        throw UsageError("render: --pool runs on one process, not under mpirun");
     m_view = view;
     m_estimate = estimate;
     m_pacing = pacing;
     m_stats = {};
+    m_pools = 0;
+    m_representatives = 0;
     m_cpu.reset();  // its threads hold the old view
     cluster::together(m_ranks, [&] {
         if (m_renderer) m_renderer->begin(*view.camera, m_estimate.render);
@@ -86,15 +96,25 @@ void VplIntegrator::advance(uint64_t work) {
     m_chunk.clear();
     Timer sampling;
     m_stream->next(work, m_chunk);  // over ranks: an agreement point inside
-    if (m_many_lights) {  // each pool's weighted cluster representatives instead of the pool
-        m_many_lights->reduce(m_chunk);
+    // Each VPL's index in the one-process order (empty: they follow those shaded before).
+    std::span<const uint64_t> index = m_stream->last_index();
+    if (m_many_lights) {
+        // Each pool's weighted cluster representatives instead of the pool. Over ranks, each rank
+        // cuts its own share of the chunk into pools: a pool's representatives estimate that
+        // pool without bias whatever VPLs it holds, so the ranks' sum estimates the stream's
+        // image, and the reduced matrix, the costly part on the CPU, is split among the ranks
+        // instead of being built whole by each of them (or each rank building every pool's to
+        // shade a part of the representatives).
+        const uint64_t first_pool = number_pools();
+        cluster::together(m_ranks, [&] { m_many_lights->reduce(m_chunk, first_pool); });
         m_stats.many_lights = m_many_lights->stats();
+        index = index_representatives();
     }
     m_stats.sampling_seconds += sampling.seconds();
     Timer shading;
     cluster::together(m_ranks, [&] {
         if (m_renderer) {
-            m_renderer->accumulate(m_chunk, m_stream->last_index());
+            m_renderer->accumulate(m_chunk, index);
         } else if (!m_chunk.empty()) {
             // Shaded at the sub-pixel positions the GPU gives them: their indices since the start.
             m_gather.first_vpl = m_stats.shaded;
@@ -106,7 +126,41 @@ void VplIntegrator::advance(uint64_t work) {
     m_stats.vpls = m_stream->vpls_total();
     m_stats.shaded += m_chunk.size();
     m_stats.units = m_stream->work_done();
-    m_cpu->pace(paced_vpls(), m_pacing);
+    m_cpu->pace(shaded_by_all(), m_pacing);
+}
+
+// The number of this rank's first pool in the chunk just sampled: the pools of every rank are
+// numbered in the order one process would cut them, lower ranks' first, so that no two pools
+// draw the same rows and representatives, and where each rank's share is a whole number of pools
+// (as with --vpl-per-path one) the ranks reduce the very pools of one process.
+uint64_t VplIntegrator::number_pools() {
+    const uint64_t mine = m_many_lights->pools_of(m_chunk.size());
+    if (!shared()) {
+        m_pools += mine;
+        return m_pools - mine;
+    }
+    std::vector<uint64_t> counts(size_t(m_ranks.size()), 0);
+    cluster::together(m_ranks, [&] { counts[size_t(m_ranks.rank())] = mine; });
+    m_ranks.sum_all(counts);
+    return first_of_rank(m_pools, counts, m_ranks.rank());
+}
+
+// The representatives just reduced: counted, and over ranks numbered as one process would shade
+// every rank's, rank 0's first (as MonteCarloStream numbers its VPLs), so that the sub-pixel
+// positions are those of [0, representatives) and each rank's indices increase.
+std::span<const uint64_t> VplIntegrator::index_representatives() {
+    if (!shared()) {
+        m_representatives += m_chunk.size();
+        return {};
+    }
+    std::vector<uint64_t> counts(size_t(m_ranks.size()), 0);
+    counts[size_t(m_ranks.rank())] = m_chunk.size();
+    m_ranks.sum_all(counts);  // after reduce()'s agreement point
+    const uint64_t first = first_of_rank(m_representatives, counts, m_ranks.rank());
+    m_index.resize(m_chunk.size());
+    for (size_t i = 0; i < m_index.size(); ++i)
+        m_index[i] = first + i;
+    return m_index;
 }
 
 // One process, VPL light: scale · Σ contributions + emission (the GPU's resolve, or the oracle's
@@ -160,7 +214,7 @@ Image VplIntegrator::finish_cpu(Pacing pacing) {
 
 // Each estimator's image added on its own, in this order: the same sums, to the bit, whoever asks.
 void VplIntegrator::add_cpu_finished(Image& sum, Pacing pacing) {
-    m_cpu->pace(paced_vpls(), pacing);
+    m_cpu->pace(shaded_by_all(), pacing);
     // Interrupted (interrupt.h): the passes done, not those allowed.
     const bool wait = pacing == Pacing::Fixed && !interrupted();
     if (CpuEstimatorThread* t = m_cpu->compensation_thread()) {
@@ -215,7 +269,7 @@ Image VplIntegrator::shared_image(bool finishing) {
     Image image;
     cluster::together(m_ranks, [&] {
         if (!m_ranks.root()) return;
-        image = m_renderer->resolve(m_stream->scale(), sum, m_stats.vpls);
+        image = m_renderer->resolve(m_stream->scale(), sum, shaded_by_all());
         for (int t = 0; t < 2; ++t) {
             if (threads[t] && passes[size_t(t)] > 0.0)
                 add_image(image, parts[t], float(1.0 / passes[size_t(t)]));

@@ -9,6 +9,7 @@
 // long as its scene (the renderer's pipelines and maps), an estimate from begin() to finish().
 #include <cstdint>
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -27,7 +28,8 @@ namespace mvpl::integrator {
 struct IntegratorStats {
     uint64_t units = 0;  // light paths (mc) or chain steps (metropolis)
     size_t vpls = 0;     // by every rank
-    // By this process: with row-column sampling the representatives, fewer than `vpls`.
+    // By this process: with row-column sampling the representatives, fewer than `vpls` (and
+    // `many_lights` are this process's pools).
     size_t shaded = 0;
     manylights::RowColumnStats many_lights;  // pools, rows and their seconds (in sampling)
     double sampling_seconds = 0.0;
@@ -82,9 +84,11 @@ public:
 
 private:
     bool shared() const { return m_ranks.size() > 1; }
-    // The VPLs that pace the CPU estimators: those shaded (row-column sampling's
-    // representatives, not its pools).
-    uint64_t paced_vpls() const { return m_many_lights ? m_stats.shaded : m_stats.vpls; }
+    // The VPLs shaded by every rank (row-column sampling's representatives, not its pools): they
+    // pace the CPU estimators, and the emission is averaged over their sub-pixel positions.
+    uint64_t shaded_by_all() const { return m_many_lights ? m_representatives : m_stats.vpls; }
+    uint64_t number_pools();
+    std::span<const uint64_t> index_representatives();
     Image vpl_image();
     void add_cpu_finished(Image& sum, Pacing pacing);
     Image shared_image(bool finishing);
@@ -101,6 +105,9 @@ private:
     std::vector<light::Vpl> m_chunk;
     std::unique_ptr<CpuEstimators> m_cpu;
     std::unique_ptr<manylights::RowColumnSampler> m_many_lights;  // null: every VPL shaded
+    uint64_t m_pools = 0;            // row-column sampling's, by every rank
+    uint64_t m_representatives = 0;  // shaded by every rank
+    std::vector<uint64_t> m_index;   // over ranks: the last chunk's representatives' indices
 };
 
 }  // namespace mvpl::integrator

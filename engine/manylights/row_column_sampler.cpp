@@ -43,16 +43,21 @@ std::vector<light::Vpl> RowColumnSampler::representatives(std::span<const light:
     return out;
 }
 
-void RowColumnSampler::reduce(std::vector<light::Vpl>& vpls) {
+uint64_t RowColumnSampler::pools_of(size_t count) const {
+    const size_t n = std::max<size_t>(m_options.pool, 1);
+    return (count + n - 1) / n;
+}
+
+void RowColumnSampler::reduce(std::vector<light::Vpl>& vpls, uint64_t first_pool) {
     const size_t n = std::max<size_t>(m_options.pool, 1);
     std::vector<light::Vpl> out;
-    for (size_t begin = 0; begin < vpls.size(); begin += n) {
+    for (size_t begin = 0, pool = 0; begin < vpls.size(); begin += n, ++pool) {
         const size_t count = std::min(n, vpls.size() - begin);
         // A shorter pool keeps the full pool's ratio of clusters to VPLs (at least one).
         const uint32_t clusters =
             uint32_t(std::max<uint64_t>(1, (uint64_t(m_options.clusters) * count + n - 1) / n));
         std::vector<light::Vpl> reps = representatives(
-            std::span<const light::Vpl>(vpls).subspan(begin, count), m_stats.pools, clusters);
+            std::span<const light::Vpl>(vpls).subspan(begin, count), first_pool + pool, clusters);
         out.insert(out.end(), reps.begin(), reps.end());
         ++m_stats.pools;
         m_stats.columns += count;

@@ -43,9 +43,13 @@ public:
     RowColumnSampler(const RowColumnContext& context, const RowColumnOptions& options);
 
     // Replaces `vpls` by the representatives of its pools: consecutive runs of options.pool VPLs,
-    // the last one possibly shorter, with clusters in proportion to its length. Pools are
-    // numbered from construction; pool k draws from (seed, k) alone.
-    void reduce(std::vector<light::Vpl>& vpls);
+    // the last one possibly shorter, with clusters in proportion to its length. Its pools are
+    // numbered first_pool, first_pool + 1, …; pool number k draws from (seed, k) alone.
+    void reduce(std::vector<light::Vpl>& vpls, uint64_t first_pool);
+    // The same numbered on from the pools reduced before.
+    void reduce(std::vector<light::Vpl>& vpls) { reduce(vpls, m_stats.pools); }
+    // The number of pools reduce() cuts `count` VPLs into.
+    uint64_t pools_of(size_t count) const;
     // The representatives of one pool drawn as pool number `pool`, with `clusters` clusters.
     std::vector<light::Vpl> representatives(std::span<const light::Vpl> pool, uint64_t pool_index,
                                             uint32_t clusters);

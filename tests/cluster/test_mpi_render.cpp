@@ -1,7 +1,7 @@
 // `mvpl render` and `mvpl bench` under `mpirun -np 2` (issue 17, engine/cluster): the ranks' image
-// equals the one-process image with the same seed, a time budget ends every rank, the bench counts
-// the job's VPLs, and a rank that fails makes every rank exit with the same code and one error
-// line.
+// equals the one-process image with the same seed (with row-column sampling too, issue 36), a time
+// budget ends every rank, the bench counts the job's VPLs and representatives, and a rank that
+// fails makes every rank exit with the same code and one error line.
 #include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -120,6 +120,35 @@ TEST_F(MpiRender, MetropolisEqualsOneProcess) {
     expect_same_image(path("two.exr"), path("one.exr"));
 }
 
+// Row-column sampling (--pool, engine/manylights): each rank cuts its own share of the VPLs into
+// pools, numbered in the one-process order. With one VPL a path, each rank's share of the 256
+// paths is 128 VPLs, four whole pools of 32: the pools, and so their rows, clusters and
+// representatives, are one process's, shaded at the one-process positions, paced and resolved
+// by every rank's representatives; the image is the one-process image to rounding (fewer terms
+// than above: 64 representatives).
+TEST_F(MpiRender, RowColumnEqualsOneProcess) {
+    const std::string args = " render '" + kScene +
+                             "' --vpls 256 --vpl-per-path one --pool 32 --clusters 8 --rows 16 "
+                             "--res 48x48 --seed 7 --quiet";
+    const Outcome one = run(kMvpl + args + " -o one.exr");
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    const Outcome two = run(kTwoRanks + args + " -o two.exr");
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    expect_same_image(path("two.exr"), path("one.exr"));
+}
+
+// Shares that are not whole pools (all the VPLs of each path: each rank's last pool is short)
+// with a cluster per VPL: every VPL its own representative, numbered across the ranks' pools
+// in the one-process order, so the image is the one-process image without row-column sampling.
+TEST_F(MpiRender, RowColumnWithAClusterPerVplEqualsEveryVpl) {
+    const std::string args = " render '" + kScene + "' --vpls 256 --res 48x48 --seed 7 --quiet";
+    const Outcome one = run(kMvpl + args + " -o one.exr");
+    ASSERT_EQ(one.exit_code, 0) << one.err;
+    const Outcome two = run(kTwoRanks + args + " --pool 100 --clusters 100 -o two.exr");
+    ASSERT_EQ(two.exit_code, 0) << two.err;
+    expect_same_image(path("two.exr"), path("one.exr"));
+}
+
 TEST_F(MpiRender, TimeBudgetEndsEveryRank) {
     // Rank 0's clock decides for both; each rank picks its device by its local rank.
     const Outcome r = run(kTwoRanks + " render '" + kScene +
@@ -157,6 +186,18 @@ TEST_F(MpiRender, BenchSharesTheLightPaths) {
     EXPECT_EQ(json_number(b, "vpls"), json_number(a, "vpls"));
     EXPECT_EQ(two.out.find("bench: "), two.out.rfind("bench: ")) << two.out;
     EXPECT_NE(two.out.find("2 MPI ranks"), std::string::npos) << two.out;
+}
+
+TEST_F(MpiRender, BenchCountsEveryRanksRepresentatives) {
+    // A cluster per VPL: every VPL is shaded as its own representative, on one rank or the other,
+    // so the job's representatives (summed over the ranks) are its VPLs.
+    const Outcome r = run(kTwoRanks + " bench '" + kScene +
+                          "' --res 32x32 --vpls 128 --repeat 1 --pool 100 --clusters 100 "
+                          "--rows 16 --json rc.json");
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string json = slurp(path("rc.json"));
+    EXPECT_NE(json_number(json, "vpls"), "") << json;
+    EXPECT_EQ(json_number(json, "representatives"), json_number(json, "vpls")) << json;
 }
 
 TEST_F(MpiRender, OtherCommandsAreRefusedAlike) {

@@ -268,8 +268,6 @@ int run_bench(const Args& args) {
         if (a.paths < 1 || a.paths > (uint64_t(1) << 24))
             throw UsageError("bench: --vpls must be in 1..2^24");
         if (a.repeat < 1 || a.repeat > 1000) throw UsageError("bench: --repeat must be in 1..1000");
-        if (ranks.size() > 1 && a.config.many_lights.enabled())
-            throw UsageError("bench: --pool runs on one process, not under mpirun");
         if (!a.json_path.empty() && ranks.root()) json_out = open_output(a.json_path);
     });
     size_t devices_sweep = SIZE_MAX;

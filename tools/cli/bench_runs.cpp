@@ -42,7 +42,8 @@ sampler::VplRecording sample(const session::SceneSession& session, sampler::Mont
 
 namespace {
 
-// The job's GPU times and work, summed over the ranks, so that per VPL they are the job's cost.
+// The job's GPU times and work, summed over the ranks, so that per VPL they are the job's cost
+// (row-column sampling: every rank's representatives, and the CPU seconds of every rank's pools).
 void sum_over_ranks(RenderSample& s, cluster::Cluster& ranks) {
     std::vector<double> sums{s.g_buffer_ms,
                              s.shadow_ms,
@@ -50,7 +51,10 @@ void sum_over_ranks(RenderSample& s, cluster::Cluster& ranks) {
                              double(s.batches),
                              double(s.shadow_triangles),
                              double(s.g_buffers),
-                             double(s.shadow_front_only_triangles)};
+                             double(s.shadow_front_only_triangles),
+                             double(s.shaded),
+                             s.matrix_s,
+                             s.cluster_s};
     ranks.sum_all(sums);
     s.g_buffer_ms = sums[0];
     s.shadow_ms = sums[1];
@@ -59,6 +63,9 @@ void sum_over_ranks(RenderSample& s, cluster::Cluster& ranks) {
     s.shadow_triangles = uint64_t(sums[4]);
     s.g_buffers = uint32_t(sums[5]);
     s.shadow_front_only_triangles = uint64_t(sums[6]);
+    s.shaded = uint64_t(sums[7]);
+    s.matrix_s = sums[8];
+    s.cluster_s = sums[9];
 }
 
 }  // namespace

@@ -82,8 +82,11 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
     // Monte Carlo stream's blocks are aligned to path indices, and a chunk is a whole number of
     // them), summed in another order.
     for (uint64_t done = 0; !run.unlit() && done < units && !any_rank_interrupted(job);) {
-        // With row-column sampling, a chunk of at least a pool's units, so that pools are full.
-        const uint64_t chunk = std::max<uint64_t>(kStreamChunkUnits, job.estimate.many_lights.pool);
+        // With row-column sampling, a chunk of at least a pool's units per rank (each rank cuts
+        // its share into pools), so that pools are full.
+        const uint64_t ranks = job.cluster ? uint64_t(job.cluster->size()) : 1;
+        const uint64_t chunk =
+            std::max<uint64_t>(kStreamChunkUnits, job.estimate.many_lights.pool * ranks);
         const uint64_t work = std::min(chunk, units - done);
         run.advance(work);
         done += work;
@@ -151,12 +154,13 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
         pass_times += "; compensation " + std::to_string(r.stats.compensation_passes) + " spp";
     if (r.stats.caustic_passes > 0)
         pass_times += "; caustics " + std::to_string(r.stats.caustic_passes) + " passes";
+    // Over ranks, rank 0's pools (each rank reduces its own share of the VPLs).
     if (const manylights::RowColumnStats& m = r.stats.many_lights; m.pools > 0) {
-        char buf[200];
+        char buf[220];
         std::snprintf(buf, sizeof buf,
-                      "; row-column sampling: %llu pools, %llu VPLs → %llu shaded, %.0f rows a "
+                      "; row-column sampling%s: %llu pools, %llu VPLs → %llu shaded, %.0f rows a "
                       "pool, matrix %.2f s, clustering %.2f s",
-                      static_cast<unsigned long long>(m.pools),
+                      job.cluster ? " on rank 0" : "", static_cast<unsigned long long>(m.pools),
                       static_cast<unsigned long long>(m.columns),
                       static_cast<unsigned long long>(m.representatives),
                       double(m.rows) / double(m.pools), m.matrix_seconds, m.cluster_seconds);
