@@ -42,7 +42,9 @@ std::vector<DeviceShare> split_into_runs(std::span<const light::Vpl> vpls,
 
 // With kept shadow maps (RenderOptions::kept_shadow_bytes) a VPL shaded again after a restart
 // (the preview's replay) must fall on the device that kept its map, whatever the calls' lengths:
-// deal_batches() deals batch k (index / batch) to device k mod n instead (the same arguments).
+// deal_batches() deals batch k (index / batch) to device k mod n instead (the same arguments;
+// the renderer passes a sub-pixel position's VPLs as `batch`, so that one device draws each
+// position's G-buffer).
 std::vector<DeviceShare> deal_batches(std::span<const light::Vpl> vpls,
                                       std::span<const uint64_t> index, uint64_t first,
                                       uint64_t batch, uint32_t devices);

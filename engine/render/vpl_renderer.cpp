@@ -125,9 +125,17 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
         throw gpu::GpuError("VplRenderer::accumulate: one index per VPL");
     if (vpls.empty()) return;
     const auto start = std::chrono::steady_clock::now();
-    const auto split = m.options.kept_shadow_bytes > 0 ? deal_batches : split_into_runs;
-    const std::vector<DeviceShare> shares =
-        split(vpls, index, m.group_shaded, m.options.batch, m.devices());
+    std::vector<DeviceShare> shares;
+    if (m.options.kept_shadow_bytes > 0) {
+        // Whole sub-pixel positions (batches without jitter) dealt out by index: a replayed VPL
+        // meets its kept map, and each position's G-buffer, specular chains included, is drawn
+        // on one device.
+        const SubpixelSchedule schedule = subpixel_schedule(m.options);
+        const uint64_t run = schedule.jitter ? schedule.vpls_per_position : m.options.batch;
+        shares = deal_batches(vpls, index, m.group_shaded, run, m.devices());
+    } else {
+        shares = split_into_runs(vpls, index, m.group_shaded, m.options.batch, m.devices());
+    }
     run_on_devices(m.devices(), [&](uint32_t d) {
         if (!shares[d].vpls.empty()) m.device(d).accumulate(shares[d].vpls, shares[d].index);
     });

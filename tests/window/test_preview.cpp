@@ -241,7 +241,10 @@ TEST(Preview, KeptShadowMapsAfterAnOrbitAndBackEqualTheRender) {
         run("", "render " + common + " -o " + shell_quote(render_exr.string()) + " --quiet");
     ASSERT_EQ(render.exit_code, 0) << render.err;
     const mvpl::Image b = mvpl::read_exr(render_exr.string());
-    for (const std::string motion : {"", " --no-motion-scaling"}) {
+    // On two devices each keeps the maps of the batches dealt to it (VplRenderer's devices) and
+    // the window presents their sum; on one, with and without the motion resolution.
+    for (const std::string motion :
+         {" --devices 2", " --devices 1", " --devices 1 --no-motion-scaling"}) {
         SCOPED_TRACE(motion);
         const Result preview =
             run(xvfb(), "preview " + common + motion + " --paths-per-frame 16 --frames 10 " +

@@ -77,7 +77,22 @@ void RendererArgs::apply(render::RenderOptions& o) const {
     o.batches_per_position = uint32_t(std::max(batches_per_position, 1));
 }
 
-void add_renderer_options(ArgParser& parser, RendererArgs& args) {
+namespace {
+
+const char* devices_help(bool window) {
+    if (window) {
+        return "logical Vulkan devices, dealt the sub-pixel positions in turn and run at once, "
+               "their images summed for the window (0 = 1: a frame's few batches keep one busy "
+               "at a time)";
+    }
+    return "logical Vulkan devices that shade a run of every chunk's batches each, all at once "
+           "(0 = 2 on a CPU device such as lavapipe, where one's shadow geometry runs beside the "
+           "other's rasterisation; 1 on a GPU)";
+}
+
+}  // namespace
+
+void add_renderer_options(ArgParser& parser, RendererArgs& args, bool window) {
     parser.begin_group("GPU renderer");
     parser.add_int("--shadow-res", &args.shadow_res, "side of a shadow cube face in texels");
     parser.add_int("--batch", &args.batch, "VPLs per shadow/shading batch");
@@ -117,10 +132,7 @@ void add_renderer_options(ArgParser& parser, RendererArgs& args) {
                    "batches shaded at each sub-pixel position, each position's G-buffer drawn "
                    "once (0 = one per 65536 scene triangles, from 2 to 8: heavy scenes draw "
                    "fewer G-buffers)");
-    parser.add_int("--devices", &args.devices,
-                   "logical Vulkan devices that shade a run of every chunk's batches each, all at "
-                   "once (0 = 2 on a CPU device such as lavapipe, where one's shadow geometry "
-                   "runs beside the other's rasterisation; 1 on a GPU)");
+    parser.add_int("--devices", &args.devices, devices_help(window));
     parser.add_flag("--no-jitter", &args.no_jitter,
                     "shade every batch at the pixel centres (no anti-aliasing; for debugging)");
     // "Specular" tells these from the Metropolis sampler's --chains; the short names stay.

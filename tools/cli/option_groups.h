@@ -68,7 +68,8 @@ struct RendererArgs {
     // Copies them into `o` (the chains' max depth is the command's to set).
     void apply(render::RenderOptions& o) const;
 };
-void add_renderer_options(ArgParser& parser, RendererArgs& args);
+// window: the preview's (its --devices default differs: preview_app.h).
+void add_renderer_options(ArgParser& parser, RendererArgs& args, bool window = false);
 
 // --compensate (the default), --no-compensate, --compensation-spp: clamping compensation
 // (engine/integrator/clamp_compensation.h) on a CPU thread beside the GPU.

@@ -69,7 +69,7 @@ void add_options(ArgParser& parser, PreviewArgs& a) {
                      "SEC");
     parser.add_flag("--quiet", &o.quiet, "no summary line");
     add_sampler_option(parser, o.sampler);
-    add_renderer_options(parser, a.renderer);  // C toggles clamping in the window
+    add_renderer_options(parser, a.renderer, true);  // C toggles clamping in the window
     add_compensation_options(parser, a.compensation);
     add_caustics_option(parser, a.no_caustics);
     add_max_depth_option(parser, o.max_depth);

@@ -1,11 +1,11 @@
 #include "tools/preview/preview_app.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
 
 #include "engine/light/chain_options.h"
-#include "engine/render/device_split.h"
 #include "tools/preview/app.h"
 #include "tools/preview/screenshot_name.h"
 
@@ -41,11 +41,8 @@ PreviewApp::PreviewApp(const PreviewOptions& options)
                             : light::kDefaultChainRoughness) {}
 
 std::unique_ptr<integrator::VplIntegrator> PreviewApp::make_integrator() {
-    const uint32_t devices = m_options.devices > 0
-                                 ? m_options.devices
-                                 : render::default_render_devices(m_context.device_info());
-    return std::make_unique<integrator::VplIntegrator>(m_session->view(), &m_context, devices,
-                                                       nullptr);
+    return std::make_unique<integrator::VplIntegrator>(m_session->view(), &m_context,
+                                                       std::max(m_options.devices, 1u), nullptr);
 }
 
 gpu::ContextOptions PreviewApp::context_options() {
