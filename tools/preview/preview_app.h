@@ -61,9 +61,9 @@ struct PreviewOptions {
     uint64_t kept_shadow_bytes = render::kDefaultKeptBytes;
     // The renderer's devices, presented summed on the window's (VplRenderer::presented); 0: one.
     // Not `render`'s two on lavapipe: a frame's few batches keep one device busy at a time, and
-    // summing the devices' images costs 2–6 ms a frame at 512², so at rest two devices shaded
-    // 4–11 % fewer VPLs than one (Cornell box, DamagedHelmet; docs/results.md, "The preview
-    // after a camera move").
+    // summing the devices' images costs 1–5 ms a frame, so at rest two devices shaded 4–11 %
+    // fewer VPLs than one (Cornell box, DamagedHelmet; docs/results.md, "The preview after a
+    // camera move").
     uint32_t devices = 0;
     // The first frame at rest after a move shades the recorded VPLs, in whole batches, until
     // it holds 90 % of what the resting picture held before the move, for at most this many
