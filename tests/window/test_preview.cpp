@@ -223,6 +223,33 @@ TEST(Preview, BadScriptIsAnInputError) {
 
 }  // namespace
 
+// Row-column sampling in the window (engine/manylights): with one VPL a light path and 16 paths a
+// frame, each frame's VPLs are one pool of 16, drawn as pool k from (seed, k), as `render --vpls
+// 64` cuts its chunk into pools of 16: the same rows, clusters and representatives, so the
+// resting preview's radiance equals the render's within the summation bound of
+// RestingRadianceEqualsTheRenderWithCompensation. Four clusters a pool: 16 of the 64 VPLs
+// shaded, so an image that ignored the pools would differ.
+TEST(Preview, RowColumnSamplingEqualsTheRender) {
+    if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt install xvfb)";
+    const fs::path dir = temp_dir();
+    const fs::path window_exr = dir / "pools.exr", render_exr = dir / "pools-render.exr";
+    const std::string common = shell_quote(kScene) +
+                               " --res 96x64 --vpls 64 --seed 5 --vpl-per-path one --pool 16 "
+                               "--clusters 4";
+    const Result preview = run(xvfb(), "preview " + common + " --paths-per-frame 16 --frames 6 " +
+                                           "--screenshot " + shell_quote(window_exr.string()));
+    ASSERT_EQ(preview.exit_code, 0) << preview.err;
+    const Result render = run("", "render " + common + " -o " + shell_quote(render_exr.string()));
+    ASSERT_EQ(render.exit_code, 0) << render.err;
+    EXPECT_NE(render.out.find("64 VPLs → 16 shaded"), std::string::npos) << render.out;
+    const mvpl::Image a = mvpl::read_exr(window_exr.string());
+    const mvpl::Image b = mvpl::read_exr(render_exr.string());
+    ASSERT_EQ(a.pixels().size(), b.pixels().size());
+    size_t lit = 0;
+    EXPECT_EQ(mvpl::test::channels_differing(a, b, &lit), 0u);
+    EXPECT_GT(lit, a.pixels().size());
+}
+
 // Shadow cubes kept across camera moves (render/kept_shadow_maps.h): after an orbit and a reset
 // to the same view, the preview re-shades its recorded VPLs with their kept cubes (the summary
 // counts the copies) and its radiance equals a fresh `mvpl render` of the same VPLs within the

@@ -130,6 +130,11 @@ TEST(PreviewHud, SaysWhatIsOnAndTheRate) {
     text = joined(stats.hud_lines(h));
     for (const char* says : {"clamp off", "caustics off", "specular chains on", "VSL off"})
         EXPECT_NE(text.find(says), std::string::npos) << says << " not in\n" << text;
+    EXPECT_EQ(text.find("row-column"), std::string::npos) << text;
+    h.parts.pool = 8192;
+    h.parts.clusters = 512;
+    text = joined(stats.hud_lines(h));
+    EXPECT_NE(text.find("row-column: pools of 8192 VPLs shaded as 512"), std::string::npos) << text;
     h.parts.clamp = 0.1f;
     h.parts.compensation = true;
     h.parts.moving = true;  // the CPU passes wait for the camera to rest

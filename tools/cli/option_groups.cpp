@@ -298,6 +298,22 @@ void add_seed_option(ArgParser& parser, uint64_t& seed) {
     parser.add_uint64("--seed", &seed, "random seed; the same seed gives the same result");
 }
 
+void add_vpl_per_path_option(ArgParser& parser, std::string& per_path) {
+    parser.add_string("--vpl-per-path", &per_path,
+                      "VPLs a light path leaves: all (one per bounce) or one (the seed paper's "
+                      "choice); default all for mc, one for metropolis",
+                      "all|one");
+    parser.add_check([&parser, &per_path] {
+        if (!per_path.empty() && per_path != "all" && per_path != "one")
+            throw UsageError(parser.command() + ": --vpl-per-path must be all or one");
+    });
+}
+
+void apply_vpl_per_path(const std::string& per_path, sampler::SamplerSettings& settings) {
+    if (per_path == "one") settings.per_path = sampler::VplsPerPath::One;
+    if (per_path == "all") settings.metropolis_per_path = sampler::VplsPerPath::All;
+}
+
 void add_write_every_option(ArgParser& parser, float& seconds, const std::string& command) {
     parser.add_float("--write-every", &seconds,
                      "rewrite every -o with the image so far every SEC seconds, between chunks "

@@ -112,6 +112,9 @@ void add_max_depth_option(ArgParser& parser, int& max_depth);
 void add_device_option(ArgParser& parser, int& device, const std::string& help,
                        const std::string& value_name = "N");
 void add_seed_option(ArgParser& parser, uint64_t& seed);
+// --vpl-per-path all|one (empty: each sampler's default), and its effect on `settings`.
+void add_vpl_per_path_option(ArgParser& parser, std::string& per_path);
+void apply_vpl_per_path(const std::string& per_path, sampler::SamplerSettings& settings);
 // --write-every SEC (render, reference): rewrite the outputs between chunks (checkpoints.h); its
 // check's message names `command`.
 void add_write_every_option(ArgParser& parser, float& seconds, const std::string& command);

@@ -40,6 +40,8 @@ struct PreviewArgs {
     CameraArgs camera;
     EnvironmentArgs environment;
     SceneFileArgs scene_file;
+    std::string per_path;
+    ManyLightsArgs many_lights;
 };
 
 void add_options(ArgParser& parser, PreviewArgs& a) {
@@ -74,6 +76,8 @@ void add_options(ArgParser& parser, PreviewArgs& a) {
     add_caustics_option(parser, a.no_caustics);
     add_max_depth_option(parser, o.max_depth);
     add_seed_option(parser, o.seed);
+    add_vpl_per_path_option(parser, a.per_path);
+    add_many_lights_options(parser, a.many_lights);
     add_camera_options(parser, a.camera);
     add_environment_options(parser, a.environment);
     add_scene_file_options(parser, a.scene_file);
@@ -115,6 +119,11 @@ preview::PreviewOptions checked_options(const PreviewArgs& a) {
         throw UsageError("preview: --catch-up must be in [0, 60] seconds");
     o.catch_up_seconds = a.catch_up;
     o.devices = uint32_t(a.renderer.devices);
+    sampler::SamplerSettings per_path;
+    apply_vpl_per_path(a.per_path, per_path);
+    o.per_path = per_path.per_path;
+    o.metropolis_per_path = per_path.metropolis_per_path;
+    o.many_lights = a.many_lights.options();
     o.camera = a.camera.choice;
     o.environment = a.environment.choice;
     o.load = a.scene_file.options;

@@ -20,10 +20,7 @@ void add_render_options(ArgParser& parser, RenderArgs& a) {
                     "mc: Halton primary samples, randomly shifted by the seed (the default)");
     parser.add_flag("--random-paths", &a.random_paths,
                     "mc: random primary samples instead of Halton ones");
-    parser.add_string("--vpl-per-path", &a.per_path,
-                      "VPLs a light path leaves: all (one per bounce) or one (the seed paper's "
-                      "choice); default all for mc, one for metropolis",
-                      "all|one");
+    add_vpl_per_path_option(parser, a.per_path);
     parser.add_resolution("--res", &a.width, &a.height, "image size");
     parser.add_strings("-o", &a.outputs, "output image, .exr or .png", "FILE");
     parser.add_float("--exposure", &a.exposure, "PNG exposure in stops");
@@ -58,8 +55,6 @@ void add_render_options(ArgParser& parser, RenderArgs& a) {
                        "VPLs from 4096 Metropolis chain steps, placed where they light what the "
                        "camera sees; the image goes to render.exr");
     parser.add_check([&a] {
-        if (!a.per_path.empty() && a.per_path != "all" && a.per_path != "one")
-            throw UsageError("render: --vpl-per-path must be all or one");
         if (a.paths < 1 || a.paths > (uint64_t(1) << 32))
             throw UsageError("render: --vpls must be in 1..2^32");
         if (!(a.time_budget >= 0.0f && a.time_budget <= 1e6f))
@@ -80,9 +75,7 @@ integrator::Estimate render_estimate(const ArgParser& parser, RenderArgs& a,
     if (a.qmc && a.random_paths)
         throw UsageError("render: --qmc and --random-paths exclude each other");
     if (a.random_paths) s.qmc = false;
-    s.per_path = a.per_path == "one" ? sampler::VplsPerPath::One : sampler::VplsPerPath::All;
-    s.metropolis_per_path =
-        a.per_path == "all" ? sampler::VplsPerPath::All : sampler::VplsPerPath::One;
+    apply_vpl_per_path(a.per_path, s);
     const int max_depth = s.tracer.max_depth;
     render::RenderOptions& ro = e.render;
     ro.width = uint32_t(a.width);

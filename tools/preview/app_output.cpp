@@ -32,6 +32,8 @@ EstimatorParts PreviewApp::estimator_parts() const {
     p.chains = light::scene_may_chain(m_session->scene(), ro.chains);
     p.vsl_radius = ro.vsl_radius;
     p.moving = !m_cpu_on;
+    p.pool = e.many_lights.pool;
+    p.clusters = e.many_lights.clusters;
     return p;
 }
 

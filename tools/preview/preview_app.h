@@ -10,8 +10,10 @@
 
 #include "engine/core/image_size.h"
 #include "engine/light/path_depth.h"
+#include "engine/manylights/row_column_options.h"
 #include "engine/render/kept_shadow_maps.h"
 #include "engine/render/vpl_renderer.h"
+#include "engine/sampler/sampler_factory.h"
 #include "engine/scene/camera_choice.h"
 #include "engine/scene/environment_choice.h"
 #include "engine/scene/scene_loader.h"
@@ -36,6 +38,13 @@ struct PreviewOptions {
     float exposure = 0.0f;
     uint64_t seed = 0;
     int max_depth = light::kDefaultMaxDepth;
+    // VPLs a light path leaves (--vpl-per-path), for each sampler.
+    sampler::VplsPerPath per_path = sampler::SamplerSettings{}.per_path;
+    sampler::VplsPerPath metropolis_per_path = sampler::SamplerSettings{}.metropolis_per_path;
+    // Matrix row-column sampling (--pool, --rows, --clusters), as `mvpl render`'s: each
+    // accumulate()'s VPLs are cut into pools (a frame's few into one shorter pool, with
+    // clusters in proportion) and shaded through their representatives.
+    manylights::RowColumnOptions many_lights;
     uint32_t shadow_resolution = render::RenderOptions{}.shadow_resolution;
     uint32_t batch = render::RenderOptions{}.batch;
     bool jitter = render::RenderOptions{}.jitter;  // a new sub-pixel position per batch

@@ -34,6 +34,9 @@ integrator::Estimate preview_estimate(const PreviewOptions& options,
     e.sampler = sampler;
     e.sampling.seed = options.seed;
     e.sampling.tracer.max_depth = options.max_depth;
+    e.sampling.per_path = options.per_path;
+    e.sampling.metropolis_per_path = options.metropolis_per_path;
+    e.many_lights = options.many_lights;
     e.render = ro;
     e.compensate = options.compensate;
     e.compensation_passes = options.compensation_passes;

@@ -70,6 +70,8 @@ std::vector<std::string> PreviewStats::hud_lines(const HudState& h) const {
     std::string parts = p.caustics ? format("caustics on%s", passes) : "caustics off";
     parts += p.chains ? "  specular chains on" : "  specular chains off";
     parts += p.vsl_radius > 0.0f ? format("  VSL radius %.3f", p.vsl_radius) : "  VSL off (points)";
+    if (p.pool > 0)
+        parts += format("  row-column: pools of %u VPLs shaded as %u", p.pool, p.clusters);
     lines.push_back(parts);
     if (!h.statistics.empty()) lines.push_back(h.statistics);
     return lines;

@@ -17,6 +17,8 @@ struct EstimatorParts {
     bool chains = false;        // specular chains traced (the scene has surfaces they continue)
     float vsl_radius = 0.0f;    // 0: point VPLs
     bool moving = false;        // a moving frame's sum: the CPU passes wait for the camera
+    // Row-column sampling: VPLs a pool and clusters a full pool (pool 0: every VPL shaded).
+    uint32_t pool = 0, clusters = 0;
 };
 
 // What the HUD says of the current sum.
