@@ -48,6 +48,11 @@ protected:
 
     std::string path(const std::string& name) const { return (m_dir / name).string(); }
 
+    // `mvpl` + one_process and two ranks' `mvpl` + ranks (one_process when empty) render the same
+    // image (expect_same_image).
+    void expect_ranks_equal_one_process(const std::string& one_process,
+                                        std::string ranks = {}) const;
+
     // Runs a shell command line in the folder. `timeout 120`: a hang fails the test (exit 124)
     // instead of blocking the suite. Sanitizer builds: lavapipe's JIT leaks what LeakSanitizer
     // cannot suppress (tests/cli/run_command.h), so leak checks are off for these renders.
@@ -98,13 +103,19 @@ void expect_same_image(const std::string& a_path, const std::string& b_path) {
     EXPECT_EQ(bad, 0u) << "worst relative difference " << worst;
 }
 
-TEST_F(MpiRender, MonteCarloEqualsOneProcess) {
-    const std::string args = " render '" + kScene + "' --vpls 256 --res 48x48 --seed 7 --quiet";
-    const Outcome one = run(kMvpl + args + " -o one.exr");
+void MpiRender::expect_ranks_equal_one_process(const std::string& one_process,
+                                               std::string ranks) const {
+    if (ranks.empty()) ranks = one_process;
+    const Outcome one = run(kMvpl + one_process + " -o one.exr");
     ASSERT_EQ(one.exit_code, 0) << one.err;
-    const Outcome two = run(kTwoRanks + args + " -o two.exr");
+    const Outcome two = run(kTwoRanks + ranks + " -o two.exr");
     ASSERT_EQ(two.exit_code, 0) << two.err;
     expect_same_image(path("two.exr"), path("one.exr"));
+}
+
+TEST_F(MpiRender, MonteCarloEqualsOneProcess) {
+    const std::string args = " render '" + kScene + "' --vpls 256 --res 48x48 --seed 7 --quiet";
+    expect_ranks_equal_one_process(args);
 }
 
 TEST_F(MpiRender, MetropolisEqualsOneProcess) {
@@ -113,11 +124,7 @@ TEST_F(MpiRender, MetropolisEqualsOneProcess) {
     const std::string args = " render '" + kScene +
                              "' --sampler metropolis --vpls 512 --chains 64 --bootstrap 4096 "
                              "--res 48x48 --seed 7 --quiet";
-    const Outcome one = run(kMvpl + args + " -o one.exr");
-    ASSERT_EQ(one.exit_code, 0) << one.err;
-    const Outcome two = run(kTwoRanks + args + " -o two.exr");
-    ASSERT_EQ(two.exit_code, 0) << two.err;
-    expect_same_image(path("two.exr"), path("one.exr"));
+    expect_ranks_equal_one_process(args);
 }
 
 // Row-column sampling (--pool, engine/manylights): each rank cuts its own share of the VPLs into
@@ -130,11 +137,7 @@ TEST_F(MpiRender, RowColumnEqualsOneProcess) {
     const std::string args = " render '" + kScene +
                              "' --vpls 256 --vpl-per-path one --pool 32 --clusters 8 --rows 16 "
                              "--res 48x48 --seed 7 --quiet";
-    const Outcome one = run(kMvpl + args + " -o one.exr");
-    ASSERT_EQ(one.exit_code, 0) << one.err;
-    const Outcome two = run(kTwoRanks + args + " -o two.exr");
-    ASSERT_EQ(two.exit_code, 0) << two.err;
-    expect_same_image(path("two.exr"), path("one.exr"));
+    expect_ranks_equal_one_process(args);
 }
 
 // Shares that are not whole pools (all the VPLs of each path: each rank's last pool is short)
@@ -142,11 +145,7 @@ TEST_F(MpiRender, RowColumnEqualsOneProcess) {
 // in the one-process order, so the image is the one-process image without row-column sampling.
 TEST_F(MpiRender, RowColumnWithAClusterPerVplEqualsEveryVpl) {
     const std::string args = " render '" + kScene + "' --vpls 256 --res 48x48 --seed 7 --quiet";
-    const Outcome one = run(kMvpl + args + " -o one.exr");
-    ASSERT_EQ(one.exit_code, 0) << one.err;
-    const Outcome two = run(kTwoRanks + args + " --pool 100 --clusters 100 -o two.exr");
-    ASSERT_EQ(two.exit_code, 0) << two.err;
-    expect_same_image(path("two.exr"), path("one.exr"));
+    expect_ranks_equal_one_process(args, args + " --pool 100 --clusters 100");
 }
 
 TEST_F(MpiRender, TimeBudgetEndsEveryRank) {
