@@ -170,17 +170,21 @@ TEST(Preview, ScriptedRunHasNoValidationMessages) {
                              "18 camera 0\n"
                              "18 fov 50\n"
                              "19 view normal\n";
-    const Result r =
-        run("MVPL_VALIDATION=1 " + xvfb(),
-            "preview " + shell_quote(kScene) + " --res 96x64 --paths-per-frame 2 --frames 20" +
-                " --script " + shell_quote(script.string()) + " --screenshot " +
-                shell_quote((temp_dir() / "scripted.png").string()));
-    EXPECT_EQ(r.exit_code, 0) << r.err;
-    EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
-    EXPECT_EQ(r.err, "");
-    // The run's statistics line counts the frames that restarted the sum.
-    EXPECT_NE(r.out.find("while moving"), std::string::npos) << r.out;
-    EXPECT_TRUE(fs::exists(temp_dir() / "scripted.png"));
+    // One device, and two whose images are summed onto the window's (VplRenderer::presented).
+    for (const char* devices : {" --devices 1", " --devices 2"}) {
+        SCOPED_TRACE(devices);
+        const Result r =
+            run("MVPL_VALIDATION=1 " + xvfb(),
+                "preview " + shell_quote(kScene) + " --res 96x64 --paths-per-frame 2 --frames 20" +
+                    devices + " --script " + shell_quote(script.string()) + " --screenshot " +
+                    shell_quote((temp_dir() / "scripted.png").string()));
+        EXPECT_EQ(r.exit_code, 0) << r.err;
+        EXPECT_EQ(r.err.find("validation"), std::string::npos) << r.err;
+        EXPECT_EQ(r.err, "");
+        // The run's statistics line counts the frames that restarted the sum.
+        EXPECT_NE(r.out.find("while moving"), std::string::npos) << r.out;
+        EXPECT_TRUE(fs::exists(temp_dir() / "scripted.png"));
+    }
 }
 
 // P writes SCENE-NNNN.png and .exr in the working directory at the first free number: a second
