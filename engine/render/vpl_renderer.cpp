@@ -106,6 +106,7 @@ void VplRenderer::begin(const scene::Camera& camera, const RenderOptions& option
     run_on_devices(m.devices(),
                    [&](uint32_t d) { m.device(d).start(camera, d == 0 ? shared : partner); });
     m.group_shaded = 0;
+    ++m.changes;
     m.group_wall_ms = milliseconds_since(start);
     m.refresh_group_timings();
 }
@@ -140,6 +141,7 @@ void VplRenderer::accumulate(std::span<const light::Vpl> vpls, std::span<const u
         if (!shares[d].vpls.empty()) m.device(d).accumulate(shares[d].vpls, shares[d].index);
     });
     m.group_shaded = index.empty() ? m.group_shaded + vpls.size() : index.back() + 1;
+    ++m.changes;
     m.group_wall_ms += milliseconds_since(start);
     m.refresh_group_timings();
 }
@@ -163,6 +165,7 @@ Image VplRenderer::contributions() const {
 Image VplRenderer::resolve(double scale, const Image& sum, uint64_t vpls) {
     Impl& m = *m_impl;
     m.require_begun("VplRenderer::resolve");
+    ++m.changes;  // it may draw G-buffers, adding to the emission sum
     if (sum.width() != int(m.options.width) || sum.height() != int(m.options.height))
         throw gpu::GpuError("VplRenderer::resolve: the sum is not the image's size");
     const auto start = std::chrono::steady_clock::now();
@@ -256,6 +259,8 @@ VplRenderer::Presented VplRenderer::presented() {
     Impl& m = *m_impl;
     if (m.partners.empty()) return {&accumulation(), &emission()};
     m.require_begun("VplRenderer::presented");
+    if (m.presented_changes == m.changes) return {&m.presented_accumulation, &m.presented_emission};
+    m.presented_changes = m.changes;
     m.present_sum(m.presented_accumulation, accumulation(),
                   [](const Impl& d) -> const gpu::Image& { return d.shading->accumulation(); });
     m.present_sum(m.presented_emission, emission(),

@@ -105,8 +105,10 @@ struct VplRenderer::Impl {
     // The RGBA32F image that `image` picks on each device, downloaded and summed over them.
     std::vector<float> summed(const gpu::Image& (*image)(const Impl&)) const;
     // Device 0's images of the sums that VplRenderer::presented() returns on several devices,
-    // made again when `like` (device 0's own) changes size.
+    // made again when `like` (device 0's own) changes size; summed again only when the group
+    // began or accumulated since (`changes` counts those calls).
     gpu::Image presented_accumulation, presented_emission;
+    uint64_t changes = 0, presented_changes = UINT64_MAX;
     // Uploads summed(image) into `target`, made like `like` where it is not.
     void present_sum(gpu::Image& target, const gpu::Image& like,
                      const gpu::Image& (*image)(const Impl&));
