@@ -16,6 +16,7 @@
 #include "tools/preview/settings.h"
 #include "tools/preview/settings_panel.h"
 #include "tools/preview/window.h"
+#include "tools/session/heat_colour.h"
 #include "tools/session/vpl_dots.h"
 
 // The preview's headers, like engine/gpu's, keep Vulkan (and GLFW) to their .cpp files.
@@ -251,6 +252,11 @@ TEST(VplDots, ColourAndRingSayPowerAndKind) {
                 ++white;
             }
     EXPECT_GT(white, 4u);
+    // Every power's colour is on the ramp that tests find dots by; a radiance is not.
+    for (const float rel : {1.0f, 0.5f, 0.1f, 0.03f, 0.01f, 0.003f, 1e-3f, 1e-5f, 0.0f})
+        EXPECT_TRUE(session::on_heat_ramp(session::dot_colour(rel))) << rel;
+    EXPECT_FALSE(session::on_heat_ramp(Rgb(0.3f, 0.2f, 0.1f)));
+    EXPECT_FALSE(session::on_heat_ramp(Rgb(0.0f, 0.0f, 0.0f)));
 }
 
 TEST(CameraController, UnmovedCameraIsTheScenesExactly) {

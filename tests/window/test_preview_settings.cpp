@@ -20,6 +20,7 @@
 #include "engine/core/exr_file.h"
 #include "engine/core/image.h"
 #include "tests/window/preview_run.h"
+#include "tools/session/heat_colour.h"
 #include "tools/session/vpl_dots.h"
 
 namespace mvpl {
@@ -250,11 +251,10 @@ TEST(PreviewSettings, VplViewDrawsTheVplsWhereMvplVplsDoes) {
     const Image a = read_exr(exr.string());
     const Image b = read_exr(dots.string());
     ASSERT_EQ(a.pixels().size(), b.pixels().size());
-    // A dot's pixel is a colour of the ramp (a channel at 0, one at 1: session::heat_colour) or
-    // an emitter's white ring; a radiance pixel is none of them.
+    // A dot's pixel is a colour of the ramp (session::heat_colour) or an emitter's white ring; a
+    // radiance pixel is none of them.
     const auto dot = [](const Rgb& p) {
-        const float lo = std::min({p.r, p.g, p.b}), hi = std::max({p.r, p.g, p.b});
-        return (lo == 0.0f && hi == 1.0f) || p == session::kEmitterRing;
+        return session::on_heat_ramp(p) || p == session::kEmitterRing;
     };
     size_t dotted = 0, unlike = 0;
     for (size_t i = 0; i < a.pixels().size(); ++i) {
