@@ -24,28 +24,28 @@ void column_entries(const MatrixContext& context, const light::Vpl& vpl, std::sp
                     ColumnScratch& scratch) {
     const light::PreparedVpl pv = light::prepare_vpl(vpl);
     const float scale = context.accel->coordinate_scale();
-    scratch.rays.clear();
-    scratch.rows.clear();
+    // The rays of the entries that are not black, written in place.
+    scratch.rays.resize(context.rows.size());
+    scratch.rows.resize(context.rows.size());
+    size_t traced = 0;
     for (size_t r = 0; r < context.rows.size(); ++r) {
         const Row& row = context.rows[r];
         Rgb c(0.0f);
         if (vpl.path_length <= row.max_vpl_length) {
-            trace::Ray shadow;
             c = light::unshadowed_contribution(row.receiver, pv, context.d_min2, context.vsl_r2,
-                                               scale, shadow);
+                                               scale, scratch.rays[traced]);
             if (!is_black(c)) {
                 c = row.throughput * c;
-                scratch.rays.push_back(shadow);
-                scratch.rows.push_back(uint32_t(r));
+                scratch.rows[traced++] = uint32_t(r);
             }
         }
         out[3 * r + 0] = c.r;
         out[3 * r + 1] = c.g;
         out[3 * r + 2] = c.b;
     }
-    scratch.occluded.resize(scratch.rays.size());
-    context.accel->occluded(scratch.rays, scratch.occluded);
-    for (size_t i = 0; i < scratch.rows.size(); ++i) {
+    scratch.occluded.resize(traced);
+    context.accel->occluded(std::span(scratch.rays).first(traced), scratch.occluded);
+    for (size_t i = 0; i < traced; ++i) {
         if (!scratch.occluded[i]) continue;
         float* entry = &out[3 * size_t(scratch.rows[i])];
         entry[0] = entry[1] = entry[2] = 0.0f;

@@ -14,8 +14,7 @@ struct Ray {
     float tmax = std::numeric_limits<float>::infinity();
 };
 
-// Inline: a shadow ray a reduced-matrix entry (manylights/) is built here, and a call that hands
-// back a Ray through memory cost a fifth of the entry's own arithmetic (perf).
+// Inline: the reduced matrix (manylights/) builds a shadow ray an entry, R · N a pool.
 //
 // Moves a surface point off its triangle along the geometric normal, to the side `direction`
 // leaves from, by a few ULPs of its coordinates (Wächter and Binder, "A Fast and Robust Method for
