@@ -215,10 +215,9 @@ void Accel::occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) con
     m_impl->rays.fetch_add(rays.size(), std::memory_order_relaxed);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
-    // A ray stream, which Embree traces in packets of its SIMD width. Measured on the reduced
-    // matrix's columns (docs/results.md, "Row-column sampling"): faster than rtcOccluded1 a ray
-    // and than the coherent flag or rtcOccluded8 (rays towards one VPL from rows all over the
-    // image are not coherent enough for a packet's frustum).
+    // A ray stream, which Embree traces in packets of its SIMD width. On the reduced matrix's
+    // columns (docs/results.md, "Row-column sampling") it took less CPU time than rtcOccluded1 a
+    // ray, rtcOccluded8 packets or the stream with the coherent flag.
     thread_local std::vector<RTCRay> stream;
     stream.resize(rays.size());
     for (size_t i = 0; i < rays.size(); ++i) {

@@ -65,8 +65,8 @@ TEST_P(ReducedMatrix, ColumnsTracedTogetherAreTheOneRayEntries) {
         }
         ASSERT_EQ(s.norms[j], float(std::sqrt(norm2))) << "column " << j;
     }
-    std::printf("%s: %zu pairs lit unshadowed, %zu of them occluded\n", GetParam().c_str(), lit,
-                occluded);
+    std::printf("%s: %zu rows × %zu columns, %zu pairs lit unshadowed, %zu of them occluded\n",
+                GetParam().c_str(), rows.size(), pool.size(), lit, occluded);
     EXPECT_GT(occluded, lit / 50) << "too few occluded pairs to test the visibility";
     EXPECT_LT(occluded, lit) << "every pair occluded";
 }
