@@ -55,6 +55,7 @@ struct Accel::Impl {
     mutable std::atomic<uint64_t> rays{0};
     std::string error;
     std::vector<MeshFilter> filters;  // per mesh; stable addresses (reserved up front)
+    bool streams = false;             // Embree built with ray packets (rtcOccluded1M)
 
     ~Impl() {
         if (scene) rtcReleaseScene(scene);
@@ -110,6 +111,8 @@ Accel::Accel(const scene::Scene& scene) : m_impl(std::make_unique<Impl>()), m_ma
     m_impl->device = rtcNewDevice(nullptr);
     if (!m_impl->device) throw std::runtime_error("cannot create an Embree device");
     rtcSetDeviceErrorFunction(m_impl->device, embree_error, &m_impl->error);
+    m_impl->streams =
+        rtcGetDeviceProperty(m_impl->device, RTC_DEVICE_PROPERTY_RAY_STREAM_SUPPORTED) != 0;
     m_impl->scene = rtcNewScene(m_impl->device);
     // Robust mode: watertight traversal, so that rays through shared edges do not leak light.
     rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_ROBUST | RTC_SCENE_FLAG_CONTEXT_FILTER_FUNCTION);
@@ -212,6 +215,11 @@ bool Accel::occluded(const Ray& ray) const {
 }
 
 void Accel::occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const {
+    if (!m_impl->streams) {  // an Embree built without ray packets: one ray a call
+        for (size_t i = 0; i < rays.size(); ++i)
+            occluded[i] = this->occluded(rays[i]) ? 1 : 0;
+        return;
+    }
     m_impl->rays.fetch_add(rays.size(), std::memory_order_relaxed);
     RTCIntersectContext context;
     rtcInitIntersectContext(&context);
