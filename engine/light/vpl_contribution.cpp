@@ -77,8 +77,8 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
     return r;
 }
 
-Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const PreparedVpl& pv,
-                     float d_min2, float vsl_r2) {
+Rgb unshadowed_contribution(const Receiver& receiver, const PreparedVpl& pv, float d_min2,
+                            float vsl_r2, float coordinate_scale, trace::Ray& shadow) {
     const trace::ShadingPoint& sp = receiver.sp;
     const Vpl& v = *pv.vpl;
     Vec3 to_light = -v.normal;  // unit, receiver → VPL
@@ -92,6 +92,13 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
         d2 = glm::dot(d, d);
         if (!(d2 > 0.0f)) return Rgb(0.0f);
         to_light = d / std::sqrt(d2);
+    }
+    // The receiver's own tests first: each returns black on its own, so their order does not
+    // change the result, and these two are cheaper than the VPL's BSDF in vpl_factors.
+    if (!(glm::dot(to_light, sp.ng) > 0.0f)) return Rgb(0.0f);  // below the geometric surface
+    const Vec3 wi = sp.frame.to_local(to_light);
+    if (!(wi.z > 0.0f)) return Rgb(0.0f);  // cos θ' = max(0, n'·(−ω))
+    if (v.type != VplType::Directional) {
         if (is_spherical(v.type)) spread2 = shared::vsl_spread2(vsl_r2, d2);
         by_lobe = shared::math::clamps_by_lobe(
             spread2, d_min2,
@@ -101,9 +108,6 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
         d_min2 = 0.0f;  // at infinity: the unclamped d² = 1 of vpl_pair.h
     }
     if (!(e.emitter > 0.0f) || is_black(e.f)) return Rgb(0.0f);
-    if (!(glm::dot(to_light, sp.ng) > 0.0f)) return Rgb(0.0f);  // below the geometric surface
-    const Vec3 wi = sp.frame.to_local(to_light);
-    if (!(wi.z > 0.0f)) return Rgb(0.0f);  // cos θ' = max(0, n'·(−ω))
     const Rgb f =
         spread2 > 0.0f && !sp.bsdf.params().is_lambertian()
             ? material::Bsdf(widen_closure(sp.bsdf.params(), spread2)).eval(receiver.wo, wi)
@@ -115,12 +119,19 @@ Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const 
                 : shared::math::vpl_pair(v.power, f, wi.z, e, d2, d_min2);
     if (is_black(c)) return Rgb(0.0f);
     const bool on_surface = v.type == VplType::Area || v.type == VplType::Surface;
-    const trace::Ray shadow =
-        v.type == VplType::Directional
-            ? trace::spawn_ray(sp.p, sp.ng, to_light, accel.coordinate_scale())
-            : trace::spawn_ray_to(sp.p, sp.ng, v.position, on_surface ? v.normal : Vec3(0.0f),
-                                  accel.coordinate_scale());
-    if (accel.occluded(shadow)) return Rgb(0.0f);
+    shadow = v.type == VplType::Directional
+                 ? trace::spawn_ray(sp.p, sp.ng, to_light, coordinate_scale)
+                 : trace::spawn_ray_to(sp.p, sp.ng, v.position, on_surface ? v.normal : Vec3(0.0f),
+                                       coordinate_scale);
+    return c;
+}
+
+Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const PreparedVpl& pv,
+                     float d_min2, float vsl_r2) {
+    trace::Ray shadow;
+    const Rgb c =
+        unshadowed_contribution(receiver, pv, d_min2, vsl_r2, accel.coordinate_scale(), shadow);
+    if (is_black(c) || accel.occluded(shadow)) return Rgb(0.0f);
     return c;
 }
 

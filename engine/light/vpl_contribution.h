@@ -55,5 +55,12 @@ std::optional<Receiver> make_receiver(const scene::Scene& scene, const trace::Ac
 // VPLs.
 Rgb vpl_contribution(const trace::Accel& accel, const Receiver& receiver, const PreparedVpl& pv,
                      float d_min2, float vsl_r2 = 0.0f);
+// The same without visibility, and the shadow ray that decides it: vpl_contribution is this
+// where `shadow` is not occluded, black where it is. Black where the pair exchanges no light
+// (then no ray is written and none need be traced), so that a caller can trace the rays of many
+// pairs together (Accel::occluded over a span: the reduced matrix of manylights/).
+// `coordinate_scale` is the Accel's, for the ray's offsets.
+Rgb unshadowed_contribution(const Receiver& receiver, const PreparedVpl& pv, float d_min2,
+                            float vsl_r2, float coordinate_scale, trace::Ray& shadow);
 
 }  // namespace mvpl::light

@@ -9,19 +9,54 @@
 
 namespace mvpl::manylights {
 
-void reduced_column(const MatrixContext& context, const light::Vpl& vpl, std::span<float> out) {
+namespace {
+
+// A column's shadow rays and the rows they belong to, kept from column to column.
+struct ColumnScratch {
+    std::vector<trace::Ray> rays;
+    std::vector<uint32_t> rows;
+    std::vector<uint8_t> occluded;
+};
+
+// reduced_column with the column's shadow rays traced together: each entry is
+// light::vpl_contribution's (unshadowed_contribution, zero where its ray is occluded) bit for bit.
+void column_entries(const MatrixContext& context, const light::Vpl& vpl, std::span<float> out,
+                    ColumnScratch& scratch) {
     const light::PreparedVpl pv = light::prepare_vpl(vpl);
+    const float scale = context.accel->coordinate_scale();
+    // The rays of the entries that are not black, written in place.
+    scratch.rays.resize(context.rows.size());
+    scratch.rows.resize(context.rows.size());
+    size_t traced = 0;
     for (size_t r = 0; r < context.rows.size(); ++r) {
         const Row& row = context.rows[r];
         Rgb c(0.0f);
         if (vpl.path_length <= row.max_vpl_length) {
-            c = row.throughput * light::vpl_contribution(*context.accel, row.receiver, pv,
-                                                         context.d_min2, context.vsl_r2);
+            c = light::unshadowed_contribution(row.receiver, pv, context.d_min2, context.vsl_r2,
+                                               scale, scratch.rays[traced]);
+            if (!is_black(c)) {
+                c = row.throughput * c;
+                scratch.rows[traced++] = uint32_t(r);
+            }
         }
         out[3 * r + 0] = c.r;
         out[3 * r + 1] = c.g;
         out[3 * r + 2] = c.b;
     }
+    scratch.occluded.resize(traced);
+    context.accel->occluded(std::span(scratch.rays).first(traced), scratch.occluded);
+    for (size_t i = 0; i < traced; ++i) {
+        if (!scratch.occluded[i]) continue;
+        float* entry = &out[3 * size_t(scratch.rows[i])];
+        entry[0] = entry[1] = entry[2] = 0.0f;
+    }
+}
+
+}  // namespace
+
+void reduced_column(const MatrixContext& context, const light::Vpl& vpl, std::span<float> out) {
+    ColumnScratch scratch;
+    column_entries(context, vpl, out, scratch);
 }
 
 ColumnSketches sketch_columns(const MatrixContext& context, std::span<const light::Vpl> vpls,
@@ -41,8 +76,9 @@ ColumnSketches sketch_columns(const MatrixContext& context, std::span<const ligh
     s.sketch.assign(vpls.size() * s.dims, 0.0f);
     parallel_for(int64_t(vpls.size()), 16, [&](int64_t begin, int64_t end) {
         std::vector<float> column(entries);
+        ColumnScratch scratch;
         for (int64_t j = begin; j < end; ++j) {
-            reduced_column(context, vpls[size_t(j)], column);
+            column_entries(context, vpls[size_t(j)], column, scratch);
             double norm2 = 0.0;
             float* out = &s.sketch[size_t(j) * s.dims];
             for (size_t k = 0; k < entries; ++k) {

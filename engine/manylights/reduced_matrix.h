@@ -1,7 +1,9 @@
 #pragma once
 // The reduced matrix of a pool (Hašan et al. 2007): entry (r, j) is VPL j's contribution to
 // row r — light::vpl_contribution, the CPU oracle's own code (BSDFs, clamp, virtual spheres,
-// Embree visibility), times the row's chain throughput — RGB, so a column ρ_j has 3R entries.
+// Embree visibility), times the row's chain throughput — RGB, so a column ρ_j has 3R entries. A
+// column's shadow rays are traced together, as one Embree ray stream: the same entries, bit for
+// bit, in about two thirds of the time of a call a ray (docs/results.md, "Row-column sampling").
 // Only what the clustering needs is kept of it: each column's norm ‖ρ_j‖ and a count sketch of
 // ρ_j in D dimensions (Charikar, Chen, Farach-Colton 2002: entry k added with a random sign into
 // bucket h(k)), whose inner products estimate the columns' without bias. R × N × 3 floats would be

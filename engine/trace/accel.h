@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 
 #include "engine/core/math.h"
 #include "engine/material/scene_materials.h"
@@ -31,6 +32,9 @@ public:
     // cutoff), as if they were not there.
     std::optional<Hit> intersect(const Ray& ray) const;
     bool occluded(const Ray& ray) const;
+    // occluded(rays[i]) into occluded[i] (1 or 0) for every i, traced together: many rays a call
+    // are what Embree's packet traversal needs (the reduced matrix's columns, manylights/).
+    void occluded(std::span<const Ray> rays, std::span<uint8_t> occluded) const;
     // A camera ray: as intersect, and it passes through the back faces of one-sided materials
     // too (glTF doubleSided: false), which light paths and shadow rays still hit.
     std::optional<Hit> intersect_camera(const Ray& ray) const;

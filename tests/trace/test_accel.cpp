@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <vector>
+
 #include "engine/core/rng.h"
 #include "engine/core/sampling.h"
 #include "engine/trace/accel.h"
@@ -95,6 +97,39 @@ INSTANTIATE_TEST_SUITE_P(Scales, SelfIntersection,
                          ::testing::Values(std::make_pair(1e-3f, 0.0f), std::make_pair(1.0f, 0.0f),
                                            std::make_pair(1e4f, 0.0f), std::make_pair(1e-3f, 3.0f),
                                            std::make_pair(1e4f, 2e4f)));
+
+// Rays traced together (a span, Embree's packets) are occluded exactly when each alone is: rays
+// between random points around and between the two quads, some blocked by them and some not,
+// counts that are not a multiple of a packet's width and an empty span.
+TEST(Accel, OccludedTogetherIsOneByOne) {
+    const scene::Scene s = two_facing_quads(1.0f, Vec3(0.0f));
+    const trace::Accel accel(s);
+    Rng rng(11, 0);
+    auto point = [&] {
+        return Vec3(rng.next_float() * 3.0f - 1.5f, rng.next_float() * 3.0f - 1.0f,
+                    rng.next_float() * 3.0f - 1.5f);
+    };
+    for (const size_t count : {size_t(0), size_t(1), size_t(7), size_t(37), size_t(1000)}) {
+        std::vector<trace::Ray> rays;
+        for (size_t i = 0; i < count; ++i) {
+            const Vec3 a = point(), b = point();
+            rays.push_back(trace::Ray{a, b - a, i % 3 == 0 ? 0.5f : 1.0f});
+        }
+        std::vector<uint8_t> together(count, 2);
+        const uint64_t before = accel.ray_count();
+        accel.occluded(rays, together);
+        EXPECT_EQ(accel.ray_count() - before, count);
+        size_t blocked = 0;
+        for (size_t i = 0; i < count; ++i) {
+            ASSERT_EQ(together[i], accel.occluded(rays[i]) ? 1 : 0) << i << " of " << count;
+            blocked += together[i];
+        }
+        if (count == 1000) {
+            EXPECT_GT(blocked, 100u);
+            EXPECT_LT(blocked, 900u);
+        }
+    }
+}
 
 TEST(Accel, IcosphereFacesInwards) {
     const scene::Mesh m = test::make_icosphere(Vec3(1, 2, 3), 2.0f, 2, true, 0);
