@@ -12,8 +12,8 @@ inline constexpr uint32_t kDefaultRows = 256;
 
 struct RowColumnOptions {
     // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: on the
-    // Cornell box at 256² N = 8192, R = 256, C = 512 cut relMSE 1.75× per pixel and 3.8× on 8×8
-    // block means at 5 s and 1.2–1.7× at 15 s, but on the two rooms it gained nothing and left
+    // Cornell box at 256² N = 8192, R = 256, C = 512 cut relMSE 1.8× per pixel and 4.4× on 8×8
+    // block means at 5 s and 1.4× / 2.1× at 15 s, but on the two rooms it gained nothing and left
     // a blotch in one run of five (docs/results.md, "Row-column sampling"). Under mpirun each rank
     // reduces the pools of its own share of the VPLs (VplIntegrator::advance).
     uint32_t pool = 0;
