@@ -227,12 +227,12 @@ TEST(Preview, BadScriptIsAnInputError) {
 
 }  // namespace
 
-// Row-column sampling in the window (engine/manylights): with one VPL a light path and 16 paths a
-// frame, each frame's VPLs are one pool of 16, drawn as pool k from (seed, k), as `render --vpls
-// 64` cuts its chunk into pools of 16: the same rows, clusters and representatives, so the
-// resting preview's radiance equals the render's within the summation bound of
-// RestingRadianceEqualsTheRenderWithCompensation. Four clusters a pool: 16 of the 64 VPLs
-// shaded, so an image that ignored the pools would differ.
+// Row-column sampling in the window (engine/manylights): with one VPL a light path, a frame at rest
+// draws a whole pool of 16 paths though it asks for 4 (PreviewApp::pool_units), drawn as pool k
+// from (seed, k), as `render --vpls 64` cuts its chunk into pools of 16: the same rows, clusters
+// and representatives, so the resting preview's radiance equals the render's within the
+// summation bound of RestingRadianceEqualsTheRenderWithCompensation. Four clusters a pool: 16
+// of the 64 VPLs shaded, so an image that ignored the pools, or cut them at 4, would differ.
 TEST(Preview, RowColumnSamplingEqualsTheRender) {
     if (!have_xvfb()) GTEST_SKIP() << "xvfb-run is not installed (apt install xvfb)";
     const fs::path dir = temp_dir();
@@ -240,7 +240,7 @@ TEST(Preview, RowColumnSamplingEqualsTheRender) {
     const std::string common = shell_quote(kScene) +
                                " --res 96x64 --vpls 64 --seed 5 --vpl-per-path one --pool 16 "
                                "--clusters 4";
-    const Result preview = run(xvfb(), "preview " + common + " --paths-per-frame 16 --frames 6 " +
+    const Result preview = run(xvfb(), "preview " + common + " --paths-per-frame 4 --frames 6 " +
                                            "--screenshot " + shell_quote(window_exr.string()));
     ASSERT_EQ(preview.exit_code, 0) << preview.err;
     const Result render = run("", "render " + common + " -o " + shell_quote(render_exr.string()));

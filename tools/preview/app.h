@@ -93,6 +93,11 @@ private:
     // Starts a new sum for the window's framebuffer, at 1/divisor of its size.
     void restart(uint32_t width, uint32_t height, uint32_t divisor, bool moving);
     void render_work();
+    // With row-column sampling, at rest: the light paths (or steps) of about one pool at the VPLs
+    // a unit has left so far, the least a call draws, so that its pools are full rather than a
+    // frame's few VPLs (which measured worse than shading every VPL: docs/results.md,
+    // "Row-column sampling"); 0 otherwise.
+    uint64_t pool_units() const;
     // The first frame at rest after a move: the recorded VPLs up to m_catch_up.
     void catch_up();
     void update_cpu_image(bool force);

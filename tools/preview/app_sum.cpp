@@ -86,6 +86,15 @@ void PreviewApp::catch_up() {
     }
 }
 
+uint64_t PreviewApp::pool_units() const {
+    const manylights::RowColumnOptions& rc = m_options.many_lights;
+    if (!rc.enabled() || m_motion_sum) return 0;
+    // A unit leaves at least one VPL (a light path its emitter VPL), until measured.
+    const uint64_t work = m_replay->work_done();
+    const double per_unit = work > 0 ? double(m_replay->vpls_total()) / double(work) : 1.0;
+    return std::max<uint64_t>(1, uint64_t(double(rc.pool) / std::max(per_unit, 1.0)));
+}
+
 void PreviewApp::render_work() {
     if (m_catch_up > 0) catch_up();
     const Timer timer;
@@ -99,6 +108,7 @@ void PreviewApp::render_work() {
             units = m_ms_per_unit > 0.0 ? uint64_t(std::max(left / m_ms_per_unit, 1.0)) : 1;
             units = std::min(units, kMaxUnitsPerCall);
         }
+        units = std::max(units, pool_units());
         // Whole segments: replayed ones first (after a move), then new ones from the stream.
         const uint64_t vpls = m_integrator->stats().vpls, work = m_replay->work_done();
         const Timer shading;

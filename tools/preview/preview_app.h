@@ -42,8 +42,8 @@ struct PreviewOptions {
     sampler::VplsPerPath per_path = sampler::SamplerSettings{}.per_path;
     sampler::VplsPerPath metropolis_per_path = sampler::SamplerSettings{}.metropolis_per_path;
     // Matrix row-column sampling (--pool, --rows, --clusters), as `mvpl render`'s: each
-    // accumulate()'s VPLs are cut into pools (a frame's few into one shorter pool, with
-    // clusters in proportion) and shaded through their representatives.
+    // accumulate()'s VPLs are cut into pools and shaded through their representatives; at rest
+    // a call draws at least a pool's light paths (PreviewApp::pool_units).
     manylights::RowColumnOptions many_lights;
     uint32_t shadow_resolution = render::RenderOptions{}.shadow_resolution;
     uint32_t batch = render::RenderOptions{}.batch;
