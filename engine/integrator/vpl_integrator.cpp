@@ -81,6 +81,12 @@ void VplIntegrator::begin(const SceneView& view, const Estimate& estimate, Pacin
         c.scene = view.scene;
         c.accel = view.accel;
         c.camera = view.camera;
+        m_gpu_columns.reset();
+        if (m_renderer && m_estimate.many_lights.gpu_matrix) {
+            m_gpu_columns =
+                std::make_unique<GpuColumns>(*m_renderer, m_estimate.many_lights.row_resolution);
+            c.columns = m_gpu_columns.get();
+        }
         m_many_lights = std::make_unique<manylights::RowColumnSampler>(c, m_estimate.many_lights);
     }
 }

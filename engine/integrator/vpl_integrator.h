@@ -18,6 +18,7 @@
 #include "engine/gpu/context.h"
 #include "engine/integrator/cpu_estimators.h"
 #include "engine/integrator/estimate.h"
+#include "engine/integrator/gpu_columns.h"
 #include "engine/integrator/scene_view.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/vpl_stream.h"
@@ -104,6 +105,7 @@ private:
     Image m_sum;                        // the oracle's Σ contributions
     std::vector<light::Vpl> m_chunk;
     std::unique_ptr<CpuEstimators> m_cpu;
+    std::unique_ptr<GpuColumns> m_gpu_columns;  // the reduced matrix on the renderer, or null
     std::unique_ptr<manylights::RowColumnSampler> m_many_lights;  // null: every VPL shaded
     uint64_t m_pools = 0;            // row-column sampling's, by every rank
     uint64_t m_representatives = 0;  // shaded by every rank

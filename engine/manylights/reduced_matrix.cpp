@@ -59,18 +59,27 @@ void reduced_column(const MatrixContext& context, const light::Vpl& vpl, std::sp
     column_entries(context, vpl, out, scratch);
 }
 
+std::vector<uint32_t> sketch_hash(size_t entries, uint32_t dims, uint64_t seed) {
+    std::vector<uint32_t> hash(entries);
+    for (size_t k = 0; k < entries; ++k) {
+        const uint64_t h = mix_bits(seed ^ mix_bits(k + 1));
+        hash[k] =
+            uint32_t((h >> 1) % std::max<uint32_t>(dims, 1)) | ((h & 1) ? 0u : kSketchNegative);
+    }
+    return hash;
+}
+
 ColumnSketches sketch_columns(const MatrixContext& context, std::span<const light::Vpl> vpls,
                               uint32_t dims, uint64_t seed) {
     ColumnSketches s;
     s.dims = std::max<uint32_t>(dims, 1);
     const size_t entries = 3 * context.rows.size();
-    // The count sketch's hash: entry k goes to bucket[k] with sign[k].
+    const std::vector<uint32_t> hash = sketch_hash(entries, s.dims, seed);
     std::vector<uint32_t> bucket(entries);
     std::vector<float> sign(entries);
     for (size_t k = 0; k < entries; ++k) {
-        const uint64_t h = mix_bits(seed ^ mix_bits(k + 1));
-        bucket[k] = uint32_t((h >> 1) % s.dims);
-        sign[k] = (h & 1) ? 1.0f : -1.0f;
+        bucket[k] = hash[k] & kSketchBucket;
+        sign[k] = (hash[k] & kSketchNegative) ? -1.0f : 1.0f;
     }
     s.norms.assign(vpls.size(), 0.0f);
     s.sketch.assign(vpls.size() * s.dims, 0.0f);

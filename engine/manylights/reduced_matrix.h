@@ -35,8 +35,24 @@ struct ColumnSketches {
     std::vector<float> sketch;  // column j at [j · dims, (j + 1) · dims)
 };
 
+// The count sketch's hash of 3R entries: entry k goes to bucket hash[k] & kSketchBucket, subtracted
+// where kSketchNegative is set (the GPU's matrix reads the same, matrix_template.glsl).
+inline constexpr uint32_t kSketchNegative = 0x80000000u;
+inline constexpr uint32_t kSketchBucket = 0x7fffffffu;
+std::vector<uint32_t> sketch_hash(size_t entries, uint32_t dims, uint64_t seed);
+
 // Every column's norm and sketch, in parallel over columns; the same whatever the thread count.
 ColumnSketches sketch_columns(const MatrixContext& context, std::span<const light::Vpl> vpls,
                               uint32_t dims, uint64_t seed);
+
+// Where a pool's columns are evaluated: sketch_columns on the CPU, or another evaluator with the
+// same entries up to its visibility (the GPU's rows' cubes: engine/integrator/gpu_columns.h).
+class ColumnEvaluator {
+public:
+    virtual ~ColumnEvaluator() = default;
+    // sketch_columns' result, with the hash sketch_hash(3R, dims, seed).
+    virtual ColumnSketches sketch(const MatrixContext& context, std::span<const light::Vpl> vpls,
+                                  uint32_t dims, uint64_t seed) = 0;
+};
 
 }  // namespace mvpl::manylights

@@ -27,6 +27,13 @@ struct RowColumnOptions {
     float defensive_share = 0.1f;
     // Dimensions of the sketch the clustering measures columns in (reduced_matrix.h).
     uint32_t sketch_dims = 16;
+    // The reduced matrix on the GPU renderer (visibility from a distance cube per row:
+    // engine/render/matrix_pass.h) rather than with the CPU's Embree rays; without a renderer
+    // (the oracle) it is the CPU's.
+    bool gpu_matrix = true;
+    // The side of a row cube's face in texels. The matrix only steers which VPLs are drawn, so
+    // its visibility may be coarser than the shading's without bias.
+    uint32_t row_resolution = 64;
 
     bool enabled() const { return pool > 0; }
 };

@@ -32,7 +32,9 @@ std::vector<light::Vpl> RowColumnSampler::representatives(std::span<const light:
                                             m_context.rows, m_context.seed, pool_index);
     const MatrixContext mc{m_context.accel, rows, m_d_min2, m_vsl_r2};
     const uint64_t pool_seed = mix_bits(m_context.seed ^ mix_bits(pool_index + 0x706f6f6cULL));
-    const ColumnSketches sketches = sketch_columns(mc, pool, m_options.sketch_dims, pool_seed);
+    const ColumnSketches sketches =
+        m_context.columns ? m_context.columns->sketch(mc, pool, m_options.sketch_dims, pool_seed)
+                          : sketch_columns(mc, pool, m_options.sketch_dims, pool_seed);
     m_stats.matrix_seconds += matrix.seconds();
     m_stats.rows += rows.size();
     Timer clustering;

@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "engine/light/vpl.h"
+#include "engine/manylights/reduced_matrix.h"
 #include "engine/manylights/row_column_options.h"
 #include "engine/manylights/row_set.h"
 #include "engine/scene/scene.h"
@@ -27,6 +28,8 @@ struct RowColumnContext {
     float clamp = 0.0f;       // d_min / scene diagonal, the renderer's
     float vsl_radius = 0.0f;  // sphere radius / scene diagonal, the renderer's
     uint64_t seed = 0;
+    // Evaluates the pools' columns; null: sketch_columns on the CPU.
+    ColumnEvaluator* columns = nullptr;
 };
 
 struct RowColumnStats {

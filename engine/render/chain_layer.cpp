@@ -23,32 +23,40 @@ void put(float (&out)[3], const Vec3& v) {
 }
 
 ChainRecord to_record(const light::ChainedReceiver& c) {
-    ChainRecord r{};
-    put(r.emitted, c.chain_emitted);
     if (!c.receiver) {
+        ChainRecord r{};
+        put(r.emitted, c.chain_emitted);
         r.state = shared::kChainBlack;
         return r;
     }
-    const trace::ShadingPoint& sp = c.receiver->sp;
+    ChainRecord r = receiver_record(*c.receiver, c.throughput, c.max_vpl_length);
+    put(r.emitted, c.chain_emitted);
+    return r;
+}
+
+}  // namespace
+
+ChainRecord receiver_record(const light::Receiver& receiver, const Rgb& throughput,
+                            uint32_t max_vpl_length) {
+    ChainRecord r{};
+    const trace::ShadingPoint& sp = receiver.sp;
     const material::ClosureParams& p = sp.bsdf.params();
     r.state = shared::kChainReceiver;
     put(r.position, sp.p);
     put(r.shading_normal, sp.frame.n);
     put(r.geometric_normal, sp.ng);
-    put(r.wo, sp.frame.to_world(c.receiver->wo));
-    put(r.throughput, c.throughput);
+    put(r.wo, sp.frame.to_world(receiver.wo));
+    put(r.throughput, throughput);
     put(r.base_color, p.base_color);
     put(r.specular_color, p.specular_color);
     r.metallic = p.metallic;
     r.roughness = p.roughness;
     r.specular = p.specular;
     r.ior = p.ior;
-    r.max_vpl_length = c.max_vpl_length;
+    r.max_vpl_length = max_vpl_length;
     r.closure_type = uint32_t(material::closure_type(p));
     return r;
 }
-
-}  // namespace
 
 ChainLayer::ChainLayer(gpu::Context& context, const scene::Scene& scene, const trace::Accel& accel,
                        uint32_t width, uint32_t height)

@@ -13,7 +13,9 @@
 #include "engine/core/math.h"
 #include "engine/gpu/buffer.h"
 #include "engine/light/chain_options.h"
+#include "engine/light/vpl_contribution.h"
 #include "engine/scene/scene.h"
+#include "shaders/shared/chain_record.h"
 
 namespace mvpl::gpu {
 class Context;
@@ -26,6 +28,11 @@ class LightSampler;
 }
 
 namespace mvpl::render {
+
+// A receiver as the GPU reads it (state kChainReceiver): a chain's rough end, or a row of the
+// reduced matrix (matrix_pass.h).
+shared::ChainRecord receiver_record(const light::Receiver& receiver, const Rgb& throughput,
+                                    uint32_t max_vpl_length);
 
 class ChainLayer {
 public:

@@ -212,6 +212,14 @@ StageSource generate_shading_source(const ShaderFeatures& features,
                                             enabled_names(features), {{"closures", closures}})};
 }
 
+StageSource generate_matrix_source(const ShaderFeatures& features) {
+    ShaderFeatures f = features;
+    f.specular_chains = false;  // a row is its chain's end already (matrix_template.glsl)
+    const std::string closures = material::generate_closure_eval(f.closure_types, nullptr);
+    return {"matrix.comp", expand_template(gpu::embedded_shader("render/matrix_template.glsl"),
+                                           enabled_names(f), {{"closures", closures}})};
+}
+
 GBufferSources generate_g_buffer_sources(const std::vector<material::MaterialGraph>& graphs,
                                          const std::vector<scene::Texture>& textures,
                                          const std::vector<bool>& drawn) {

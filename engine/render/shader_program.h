@@ -112,6 +112,9 @@ ShadowAlphaSources generate_shadow_alpha_sources(const std::vector<material::Mat
 StageSource generate_shading_source(const ShaderFeatures& features,
                                     std::vector<std::string>* functions = nullptr);
 
+// The reduced matrix's shader (matrix_template.glsl, matrix_pass.h) for `features`.
+StageSource generate_matrix_source(const ShaderFeatures& features);
+
 // Writes each stage to dir/NAME (creating dir); throws InputError naming the path on failure.
 void dump_shaders(const std::string& dir, const std::vector<const StageSource*>& stages);
 

@@ -277,4 +277,28 @@ gpu::Context& VplRenderer::context() const {
     return *m_impl->context;
 }
 
+void VplRenderer::reduced_matrix(std::span<const shared::ChainRecord> rows,
+                                 std::span<const light::Vpl> vpls, std::span<const uint32_t> hash,
+                                 uint32_t dims, uint32_t resolution, std::vector<float>& out) {
+    Impl& m = *m_impl;
+    m.require_begun("VplRenderer::reduced_matrix");
+    ShadowPassOptions shadow = shadow_pass_options(m.options);
+    shadow.resolution = resolution;
+    ShaderFeatures features = m.shading->features();
+    features.specular_chains = false;
+    if (!m.matrix || !(m.matrix_shadow == shadow) ||
+        m.matrix_features.vpl_types != features.vpl_types ||
+        m.matrix_features.closure_types != features.closure_types) {
+        m.matrix.reset();
+        m.matrix =
+            std::make_unique<MatrixPass>(*m.context, m.geometry, *m.clusters, features, shadow,
+                                         gpu::SpirvCacheOptions{m.options.shader_cache, {}});
+        m.matrix_shadow = shadow;
+        m.matrix_features = features;
+    }
+    const ShadingBatch batch = m.shading_batch();
+    const MatrixInput in{rows, vpls, hash, dims, batch.d_min, batch.vsl_radius, m.options.shadows};
+    m.matrix->evaluate(in, m.geometry.bounds(), out);
+}
+
 }  // namespace mvpl::render

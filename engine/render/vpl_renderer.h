@@ -21,6 +21,7 @@
 #include "engine/light/virtual_sphere.h"
 #include "engine/light/vpl.h"
 #include "engine/scene/scene.h"
+#include "shaders/shared/chain_record.h"
 
 namespace mvpl::gpu {
 class Context;
@@ -194,6 +195,12 @@ public:
         const gpu::Image* emission = nullptr;
     };
     Presented presented();
+    // The reduced matrix of row-column sampling on device 0 after begin() (matrix_pass.h): the
+    // rows' cubes at `resolution`, the clamp, spheres and shadows of begin()'s options; `out` as
+    // MatrixPass::evaluate's.
+    void reduced_matrix(std::span<const shared::ChainRecord> rows, std::span<const light::Vpl> vpls,
+                        std::span<const uint32_t> hash, uint32_t dims, uint32_t resolution,
+                        std::vector<float>& out);
     gpu::Context& context() const;
     uint32_t devices() const;
     // The kept shadow maps (RenderOptions::kept_shadow_bytes; zero without them), summed over

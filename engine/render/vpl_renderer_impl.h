@@ -16,6 +16,7 @@
 #include "engine/render/emission_sum.h"
 #include "engine/render/g_buffer_pass.h"
 #include "engine/render/interleave_filter.h"
+#include "engine/render/matrix_pass.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shading_pass.h"
 #include "engine/render/shadow_clusters.h"
@@ -62,6 +63,11 @@ struct VplRenderer::Impl {
     std::unique_ptr<ShadingPass> shading;
     std::unique_ptr<ChainLayer> chains;  // null unless the options and the scene ask for chains
     std::unique_ptr<InterleaveFilter> interleave;  // null without interleaved sampling
+    // Row-column sampling's reduced matrix (VplRenderer::reduced_matrix), built at its first
+    // use and again when the options of its rows' cubes or the program's types change.
+    std::unique_ptr<MatrixPass> matrix;
+    ShadowPassOptions matrix_shadow;
+    ShaderFeatures matrix_features;
     // The passes above whose images have the image's size, parked for the sizes used before:
     // the preview switches between its motion and full resolutions, and building them again
     // costs about 0.5 s on DamagedHelmet under lavapipe (pipelines). Cleared whenever the

@@ -14,24 +14,6 @@
 #include "shared/chain_record.h"
 //@endif
 //@insert closures
-// After the closures: their shading_constants.h defines MVPL_INLINE.
-#include "shared/vpl_pair.h"
-//@if spot
-#include "shared/spot_falloff.h"
-//@endif
-//@if glossy
-#include "shared/virtual_sphere.h"
-#include "shared/lobe_clamp.h"
-
-// light::widen_closure (engine/light/virtual_sphere.cpp): the lobe integrated over a virtual
-// sphere of spread s² = spread2.
-Closure widen_closure(Closure c, float spread2) {
-    Closure w = c;
-    w.roughness = vsl_roughness(roughness_to_alpha(c.roughness), spread2);
-    return w;
-}
-//@endif
-
 layout(local_size_x = 8, local_size_y = 8) in;
 
 layout(set = 0, binding = 0, rgba32f) uniform readonly image2DArray g_buffer;
@@ -53,17 +35,20 @@ layout(std430, set = 0, binding = 5) readonly buffer ChainRecords { ChainRecord 
 layout(push_constant) uniform ShadingPushBlock { ShadingPush pc; };
 
 #include "shadow_lookup.glsl"
+//@if directional
+#include "ortho_lookup.glsl"
+//@endif
+// After the closures: their shading_constants.h defines MVPL_INLINE.
+#include "vpl_contribution.glsl"
 
-// The point that receives the VPLs: the pixel's surface, or the rough end of its specular chain.
-struct Receiver {
-    vec3 p;
-    vec3 n;   // shading normal, on the side the point is shaded from
-    vec3 ng;  // geometric normal, on the same side
-    vec3 wo;  // towards the camera, or back along the chain
-    Closure closure;
-    vec3 weight;          // the chain's throughput (1 without one)
-    uint max_vpl_length;  // the longest VPL path the chain's end may receive
-};
+float local_visibility(uint i, GpuVpl v, Receiver r, vec3 to_receiver, float d, float res) {
+    return visibility(i, to_receiver, d, r.ng, res);
+}
+//@if directional
+float directional_vpl_visibility(uint i, GpuVpl v, Receiver r) {
+    return directional_visibility(i, v, r.p, r.ng);
+}
+//@endif
 
 // Interleaved sampling (shaders/shared/interleave.h): workgroup z is the pixel class c, and its
 // 8×8 invocations are pixels of that class K apart, so that the loop over the class's VPLs is
@@ -119,97 +104,6 @@ void follow_chain(ChainRecord chain, inout Receiver r, inout uint vpl_count) {
         r.weight = chain.throughput;
         r.max_vpl_length = chain.max_vpl_length;
     }
-}
-//@endif
-
-//@if directional
-// light::vpl_contribution of directional VPL i (a distant light or the environment's), added to
-// sum.
-void add_directional_vpl(uint i, GpuVpl v, Receiver r, inout vec3 sum) {
-    const vec3 to_light = -v.normal;
-    const float cos_r = max(0.0, dot(r.n, to_light));
-    // light::vpl_contribution: light from below the geometric surface never reaches it, though a
-    // bump- or normal-mapped n may face it.
-    if (cos_r <= 0.0 || !(dot(r.ng, to_light) > 0.0)) return;
-    const vec3 f_r = closure_eval(r.closure, r.n, r.wo, to_light);
-    if (max_component(f_r) <= 0.0) return;
-    const float vis = (pc.flags & kShadows) != 0u ? directional_visibility(i, v, r.p, r.ng) : 1.0;
-    sum += vpl_pair(v.power * vis, f_r, cos_r, VplFactors(1.0, vec3(1.0), vec3(1.0)), 1.0, 0.0);
-}
-//@endif
-
-//@if point|spot|area|surface
-// A VPL's own factors towards w, VPL → receiver (shared/vpl_pair.h); f widened by spread2.
-VplFactors vpl_factors(GpuVpl v, vec3 w, float spread2, bool by_lobe) {
-    VplFactors e = VplFactors(1.0, vec3(1.0), vec3(1.0));
-//@if spot
-    if (v.type == kVplSpot) e.emitter = spot_falloff(v.cos_inner, v.cos_outer, dot(v.normal, w));
-//@endif
-//@if area|surface
-    if (v.type == kVplArea || v.type == kVplSurface) e.emitter = max(0.0, dot(v.normal, w));
-//@endif
-//@if surface
-    if (v.type == kVplSurface) {
-        const Closure c = Closure(v.closure_type, v.base_color, v.metallic, v.specular_color,
-                                  v.specular, v.roughness, v.ior);
-//@if glossy
-        e.f = closure_eval(spread2 > 0.0 && c.type != 0u ? widen_closure(c, spread2) : c,
-                           v.shading_normal, v.wi, w);
-        if (by_lobe) e.f_diffuse = closure_eval_diffuse(c, v.shading_normal, v.wi, w);
-//@endif
-//@if !glossy
-        e.f = closure_eval(c, v.shading_normal, v.wi, w);
-//@endif
-    }
-//@endif
-    return e;
-}
-
-// light::vpl_contribution of VPL i at a point (point, spot, area or surface), added to sum.
-void add_local_vpl(uint i, GpuVpl v, Receiver r, float shadow_res, inout vec3 sum) {
-    const vec3 to_receiver = r.p - v.position;
-    const float d2 = dot(to_receiver, to_receiver);
-    if (!(d2 > 0.0)) return;
-    const float d = sqrt(d2);
-    const vec3 w = to_receiver / d;  // VPL → receiver
-    const float cos_r = max(0.0, dot(r.n, -w));
-    // As for directional VPLs: none from below the geometric surface, whatever n says.
-    if (cos_r <= 0.0 || !(dot(r.ng, -w) > 0.0)) return;
-    float spread2 = 0.0;
-    bool by_lobe = false;
-//@if glossy
-    // Area and surface VPLs are virtual spherical lights: both lobes widened (light::
-    // vpl_contribution; shared/virtual_sphere.h).
-    spread2 = v.type == kVplArea || v.type == kVplSurface ? vsl_spread2(pc.vsl_r2, d2) : 0.0;
-    // A pair with a widened glossy lobe in it is clamped lobe by lobe (light::vpl_contribution;
-    // shared::vsl_glossy_d2): f_vpl's diffuse lobe alone, an area VPL's emission counting as
-    // diffuse.
-    by_lobe = clamps_by_lobe(spread2, pc.d_min2,
-                             r.closure.type != 0u ||
-                                 (v.type == kVplSurface && v.closure_type != 0u));
-//@endif
-    const VplFactors e = vpl_factors(v, w, spread2, by_lobe);
-    if (e.emitter <= 0.0 || max_component(e.f) <= 0.0) return;
-//@if glossy
-    const vec3 f_r =
-        closure_eval(spread2 > 0.0 && r.closure.type != 0u ? widen_closure(r.closure, spread2)
-                                                           : r.closure,
-                     r.n, r.wo, -w);
-//@endif
-//@if !glossy
-    const vec3 f_r = closure_eval(r.closure, r.n, r.wo, -w);
-//@endif
-    if (max_component(f_r) <= 0.0) return;
-    const float vis =
-        (pc.flags & kShadows) != 0u ? visibility(i, to_receiver, d, r.ng, shadow_res) : 1.0;
-//@if glossy
-    if (by_lobe) {
-        sum += vpl_pair_by_lobe(v.power * vis, f_r, closure_eval_diffuse(r.closure, r.n, r.wo, -w),
-                                cos_r, e, d2, pc.vsl_r2, pc.d_min2);
-        return;
-    }
-//@endif
-    sum += vpl_pair(v.power * vis, f_r, cos_r, e, d2, pc.d_min2);
 }
 //@endif
 

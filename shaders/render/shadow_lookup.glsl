@@ -1,7 +1,7 @@
-// The shadow tests of the shading pass, 1 where the VPL sees the receiver and 0 where it does not:
-// against a VPL's distance cube (visibility(): point, spot, area and surface VPLs) and, in programs
-// with directional VPLs, against one's orthographic map. Included by shading_template.glsl after
-// its bindings (shadow_cubes, ortho_shadows, the push constants pc).
+// The shadow test against a distance cube, 1 where the cube's centre sees the receiver and 0 where
+// it does not (visibility(): the shading pass's point, spot, area and surface VPLs; the reduced
+// matrix's rows, matrix_template.glsl). Included after the stage's bindings (shadow_cubes, the push
+// constants pc with texel_angle); ortho_lookup.glsl holds the directional VPLs' test.
 
 // Shadow test against the VPL's distance cube, in two lookups.
 //
@@ -133,64 +133,3 @@ float visibility(uint cube, vec3 to_receiver, float d, vec3 ng, float res) {
 //@endif
     return lit ? 1.0 : 0.0;
 }
-
-//@if directional
-// The same test against a directional VPL's orthographic map (directional_frame.h): w is the
-// receiver's distance along the direction of travel from the map's near plane, and a texel is
-// extent / resolution wide (in place of d · texel_angle). The first lookup allows a slope bias;
-// the junction lookup (thin walls) is visibility()'s with parallel rays, its reach grown by that
-// bias, which is what lets a wall's foot pass the first.
-// Every surface is drawn into the map, so a receiver whose own texel is empty lies within a texel
-// of the outline of everything the map holds (a triangle covers a texel only where it covers the
-// texel's centre: Vulkan spec, "Polygon Rasterization"), and what lies over it is in the texels
-// beside it. It is shadowed when one of the 3 × 3 holds a surface in front of both the receiver
-// and the receiver's own plane at that texel's centre (its own surface there is not in front).
-// Without it light entered a closed room of one-sided walls at its edges (docs/results.md,
-// "One-sided occluders"). map: the receiver in map coordinates; res: the map's side in texels.
-bool occluded_at_outline(uint layer, GpuVpl v, vec3 map, vec3 ng, float texel, float res) {
-    const vec3 n = vec3(dot(ng, v.shading_normal), dot(ng, v.wi), dot(ng, v.normal));
-    const float n_z = abs(n.z) > 1e-6 ? n.z : 1e-6;
-    const ivec2 own = ivec2(floor(map.xy / texel));
-    for (int dy = -1; dy <= 1; ++dy) {
-        for (int dx = -1; dx <= 1; ++dx) {
-            const ivec2 t = own + ivec2(dx, dy);
-            if (any(lessThan(t, ivec2(0))) || any(greaterThanEqual(t, ivec2(int(res))))) continue;
-            const vec2 stored =
-                stored_distance(texelFetch(ortho_shadows, ivec3(t, int(layer)), 0).r, texel);
-            const vec2 offset = (vec2(t) + 0.5) * texel - map.xy;
-            const float plane = min(map.z, map.z - dot(n.xy, offset) / n_z);
-            if (stored.x < plane - (kConstantBias * map.z + kFootprintBias * texel + stored.y))
-                return true;
-        }
-    }
-    return false;
-}
-
-float directional_visibility(uint layer, GpuVpl v, vec3 p, vec3 ng) {
-    const vec3 map = vec3(dot(p, v.shading_normal), dot(p, v.wi), dot(p, v.normal)) - v.position;
-    const float res = float(textureSize(ortho_shadows, 0).x);
-    const float texel = v.map_extent / res;
-    const vec2 stored = stored_distance(
-        textureLod(ortho_shadows, vec3(map.xy / v.map_extent, float(layer)), 0.0).r, texel);
-    const float cos_r = abs(dot(ng, v.normal));
-    const float tan_r = min(sqrt(max(0.0, 1.0 - cos_r * cos_r)) / max(cos_r, 1e-6), kMaxSlope);
-    const float bias = kConstantBias * map.z + kSlopeBias * texel * tan_r + stored.y;
-    bool lit = stored.x >= map.z - bias;
-    if (stored.x >= kShadowNoOccluder && occluded_at_outline(layer, v, map, ng, texel, res))
-        lit = false;
-//@if thin_walls
-    const float cos_g = dot(ng, v.normal);
-    const vec3 towards_light = cos_g <= 0.0 ? ng : -ng;
-    const float sin_g = sqrt(max(0.0, 1.0 - cos_g * cos_g));
-    const vec3 q = p + towards_light * (kNormalOffset * texel * sin_g);
-    const vec3 moved = vec3(dot(q, v.shading_normal), dot(q, v.wi), dot(q, v.normal)) - v.position;
-    const vec2 near = stored_distance(
-        textureLod(ortho_shadows, vec3(moved.xy / v.map_extent, float(layer)), 0.0).r, texel);
-    const float in_front = moved.z - near.x;
-    if (in_front > kConstantBias * moved.z + near.y &&
-        in_front < (kJunctionReach + kSlopeBias * tan_r) * texel)
-        lit = false;
-//@endif
-    return lit ? 1.0 : 0.0;
-}
-//@endif

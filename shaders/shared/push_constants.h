@@ -80,8 +80,25 @@ struct InterleavePush {
     uint interleave;  // K
     uint chains;      // 1: binding 3 holds the chain records (shared/chain_record.h); 0: unread
 };
+// The reduced matrix of row-column sampling (engine/render/matrix_pass.cpp;
+// shaders/render/matrix_template.glsl): one dispatch adds a batch of rows' entries to every
+// column's squared norm and count sketch.
+struct MatrixPush {
+    float d_min2;       // as ShadingPush's
+    float vsl_r2;       // as ShadingPush's
+    float texel_angle;  // of the rows' cubes: 2 / resolution
+    uint flags;         // kShadows
+    uint column_count;  // VPLs in the pool
+    uint row_offset;    // the batch's first row (its rows and cubes are numbered from 0)
+    uint row_count;     // at most kMaxMatrixRows
+    uint dims;          // of the sketch, at most kMaxSketchDims
+};
+const uint kMaxSketchDims = 64u;
+// Rows of a matrix batch: 512 × 128-byte records fill a 64 KiB uniform buffer, as GpuVpl's do.
+const uint kMaxMatrixRows = 512u;
+
 const uint kAddEmission = 1u;  // ShadingPush::flags: add the G-buffer's emitted radiance
-const uint kShadows = 2u;      // ShadingPush::flags: test visibility in the shadow maps
+const uint kShadows = 2u;      // ShadingPush::flags, MatrixPush::flags: test visibility
 
 #ifdef __cplusplus
 MVPL_STD430_MEMBER(GBufferPush, view_proj);

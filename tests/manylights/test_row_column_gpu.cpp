@@ -32,6 +32,7 @@ TEST_F(RowColumnGpuTest, RepresentativesOnTheGpuMatchTheOracle) {
     e.many_lights.pool = 256;
     e.many_lights.rows = 32;
     e.many_lights.clusters = 32;
+    e.many_lights.gpu_matrix = false;  // the CPU's matrix in both: the same representatives
     const integrator::SceneView view{&scene, &accel, &lights, &scene.camera};
     auto run = [&](gpu::Context* gpu, integrator::IntegratorStats* stats) {
         integrator::VplIntegrator it(view, gpu, 1, nullptr);

@@ -203,6 +203,8 @@ manylights::RowColumnOptions ManyLightsArgs::options() const {
     o.pool = uint32_t(pool);
     o.rows = uint32_t(rows);
     o.clusters = uint32_t(clusters);
+    o.gpu_matrix = matrix == "gpu";
+    o.row_resolution = uint32_t(row_resolution);
     return o;
 }
 
@@ -214,7 +216,17 @@ void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
                    "--rows camera-visible points; 0: every VPL shaded");
     parser.add_int("--rows", &o.rows, "camera-visible points of the reduced matrix");
     parser.add_int("--clusters", &o.clusters, "representatives shaded per pool");
+    parser.add_string("--matrix", &o.matrix,
+                      "where the reduced matrix is evaluated: gpu (a distance cube per row, the "
+                      "shading pass's code) or cpu (Embree rays; the oracle's)",
+                      "gpu|cpu");
+    parser.add_int("--row-resolution", &o.row_resolution,
+                   "side of a row's distance cube face in texels (--matrix gpu)");
     parser.add_check([&parser, &o] {
+        if (o.matrix != "gpu" && o.matrix != "cpu")
+            throw UsageError(parser.command() + ": --matrix is gpu or cpu, not '" + o.matrix + "'");
+        if (o.row_resolution < 4 || o.row_resolution > 4096)
+            out_of_range(parser, "--row-resolution", "4..4096");
         if (o.pool < 0 || o.pool > (1 << 20)) out_of_range(parser, "--pool", "0..2^20");
         if (o.rows < 1 || o.rows > 65536) out_of_range(parser, "--rows", "1..65536");
         if (o.clusters < 1 || o.clusters > (1 << 20)) out_of_range(parser, "--clusters", "1..2^20");

@@ -87,12 +87,14 @@ void add_compensation_options(ArgParser& parser, CompensationArgs& args);
 // tracer then leaves VPLs on near-specular surfaces again.
 void add_caustics_option(ArgParser& parser, bool& no_caustics);
 
-// --pool, --rows, --clusters: matrix row-column sampling (engine/manylights), off unless
-// --pool N is given; the defaults are RowColumnOptions'.
+// --pool, --rows, --clusters, --matrix, --row-resolution: matrix row-column sampling
+// (engine/manylights), off unless --pool N is given; the defaults are RowColumnOptions'.
 struct ManyLightsArgs {
     int pool = int(manylights::RowColumnOptions{}.pool);
     int rows = int(manylights::RowColumnOptions{}.rows);
     int clusters = int(manylights::RowColumnOptions{}.clusters);
+    std::string matrix = manylights::RowColumnOptions{}.gpu_matrix ? "gpu" : "cpu";
+    int row_resolution = int(manylights::RowColumnOptions{}.row_resolution);
 
     manylights::RowColumnOptions options() const;
 };
