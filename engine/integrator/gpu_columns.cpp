@@ -6,6 +6,13 @@
 
 namespace mvpl::integrator {
 
+bool gpu_matrix(const manylights::RowColumnOptions& options, const gpu::DeviceInfo& device) {
+    using manylights::MatrixDevice;
+    if (options.matrix != MatrixDevice::automatic) return options.matrix == MatrixDevice::gpu;
+    return device.type != gpu::DeviceType::cpu ||
+           options.pool >= manylights::kGpuMatrixPoolOnCpuDevice;
+}
+
 manylights::ColumnSketches GpuColumns::sketch(const manylights::MatrixContext& context,
                                               std::span<const light::Vpl> vpls, uint32_t dims,
                                               uint64_t seed) {

@@ -3,10 +3,15 @@
 // pool's columns' norms and sketches from VplRenderer::reduced_matrix (engine/render/
 // matrix_pass.h), the same as manylights::sketch_columns up to visibility (the rows' cubes in
 // place of Embree's rays).
+#include "engine/gpu/device_info.h"
 #include "engine/manylights/reduced_matrix.h"
+#include "engine/manylights/row_column_options.h"
 #include "engine/render/vpl_renderer.h"
 
 namespace mvpl::integrator {
+
+// Whether `options` put the reduced matrix on a renderer on `device` (RowColumnOptions::matrix).
+bool gpu_matrix(const manylights::RowColumnOptions& options, const gpu::DeviceInfo& device);
 
 class GpuColumns : public manylights::ColumnEvaluator {
 public:

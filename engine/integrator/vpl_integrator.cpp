@@ -82,7 +82,7 @@ void VplIntegrator::begin(const SceneView& view, const Estimate& estimate, Pacin
         c.accel = view.accel;
         c.camera = view.camera;
         m_gpu_columns.reset();
-        if (m_renderer && m_estimate.many_lights.gpu_matrix) {
+        if (m_renderer && gpu_matrix(m_estimate.many_lights, m_renderer->context().device_info())) {
             m_gpu_columns =
                 std::make_unique<GpuColumns>(*m_renderer, m_estimate.many_lights.row_resolution);
             c.columns = m_gpu_columns.get();

@@ -10,6 +10,11 @@ namespace mvpl::manylights {
 // R's default: see RowColumnOptions::rows.
 inline constexpr uint32_t kDefaultRows = 256;
 
+enum class MatrixDevice { automatic, gpu, cpu };
+// The smallest pool whose matrix `automatic` evaluates on a CPU implementation of Vulkan: see
+// RowColumnOptions::matrix.
+inline constexpr uint32_t kGpuMatrixPoolOnCpuDevice = 32768;
+
 struct RowColumnOptions {
     // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: on the
     // Cornell box at 256² N = 8192, R = 256, C = 512 cut relMSE 1.8× per pixel and 4.4× on 8×8
@@ -27,10 +32,15 @@ struct RowColumnOptions {
     float defensive_share = 0.1f;
     // Dimensions of the sketch the clustering measures columns in (reduced_matrix.h).
     uint32_t sketch_dims = 16;
-    // The reduced matrix on the GPU renderer (visibility from a distance cube per row:
-    // engine/render/matrix_pass.h) rather than with the CPU's Embree rays; without a renderer
-    // (the oracle) it is the CPU's.
-    bool gpu_matrix = true;
+    // Where the reduced matrix is evaluated (reduced_matrix.h): on the GPU renderer (a distance
+    // cube per row: engine/render/matrix_pass.h), with the CPU's Embree rays, or `automatic`:
+    // the GPU's, except on a CPU implementation (lavapipe) for pools below
+    // kGpuMatrixPoolOnCpuDevice. There a row's cube costs about 0.33 ms (its render passes'
+    // thread hand-offs) and the GPU's matrix per pool of 4 measured 0.49 / 0.69 / 0.91 / 1.48 s
+    // against the CPU's 0.26 / 0.55 / 1.03 / 2.14 s at N = 8 192 / 16 384 / 32 768 / 65 536
+    // (Cornell box, R 256; docs/results.md, "Row-column sampling"). Without a renderer (the
+    // oracle) it is the CPU's.
+    MatrixDevice matrix = MatrixDevice::automatic;
     // The side of a row cube's face in texels. The matrix only steers which VPLs are drawn, so
     // its visibility may be coarser than the shading's without bias.
     uint32_t row_resolution = 64;

@@ -63,10 +63,9 @@ void compare_row(const manylights::MatrixContext& mc, const std::vector<light::V
         Rgb u(0.0f);
         if (pool[j].path_length <= row.max_vpl_length) {
             trace::Ray ray;
-            u = row.throughput * light::unshadowed_contribution(row.receiver,
-                                                                light::prepare_vpl(pool[j]),
-                                                                mc.d_min2, mc.vsl_r2,
-                                                                mc.accel->coordinate_scale(), ray);
+            u = row.throughput *
+                light::unshadowed_contribution(row.receiver, light::prepare_vpl(pool[j]), mc.d_min2,
+                                               mc.vsl_r2, mc.accel->coordinate_scale(), ray);
         }
         const float u_norm = std::sqrt(u.r * u.r + u.g * u.g + u.b * u.b);
         if (u_norm == 0.0f) {
@@ -130,10 +129,12 @@ TEST_P(ReducedMatrixGpu, EntriesAreTheOraclesUpToTheRowCubes) {
         compare_row(mc, pool, hash, out, a);
     }
     const double disagree = double(a.disagree) / double(std::max<size_t>(a.lit, 1));
-    std::printf("%s: %zu rows × %zu columns, %zu pairs lit unshadowed, %zu occluded, visibility "
-                "differs in %.4f of them; %zu directional pairs seen; largest relative difference where both see %.3g\n",
-                GetParam().name.c_str(), rows.size(), pool.size(), a.lit, a.occluded, disagree,
-                a.directional, a.worst_value);
+    std::printf(
+        "%s: %zu rows × %zu columns, %zu pairs lit unshadowed, %zu occluded, visibility "
+        "differs in %.4f of them; %zu directional pairs seen; largest relative difference where "
+        "both see %.3g\n",
+        GetParam().name.c_str(), rows.size(), pool.size(), a.lit, a.occluded, disagree,
+        a.directional, a.worst_value);
     EXPECT_GT(a.occluded, a.lit / 50) << "too few occluded pairs to test the visibility";
     if (GetParam().sky) {
         EXPECT_GT(a.directional, 0u) << "no directional VPL seen";

@@ -203,7 +203,9 @@ manylights::RowColumnOptions ManyLightsArgs::options() const {
     o.pool = uint32_t(pool);
     o.rows = uint32_t(rows);
     o.clusters = uint32_t(clusters);
-    o.gpu_matrix = matrix == "gpu";
+    o.matrix = matrix == "gpu"   ? manylights::MatrixDevice::gpu
+               : matrix == "cpu" ? manylights::MatrixDevice::cpu
+                                 : manylights::MatrixDevice::automatic;
     o.row_resolution = uint32_t(row_resolution);
     return o;
 }
@@ -218,13 +220,16 @@ void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
     parser.add_int("--clusters", &o.clusters, "representatives shaded per pool");
     parser.add_string("--matrix", &o.matrix,
                       "where the reduced matrix is evaluated: gpu (a distance cube per row, the "
-                      "shading pass's code) or cpu (Embree rays; the oracle's)",
-                      "gpu|cpu");
+                      "shading pass's code), cpu (Embree rays, the oracle's) or auto (default: "
+                      "gpu, except on lavapipe for pools below " +
+                          std::to_string(manylights::kGpuMatrixPoolOnCpuDevice) + ")",
+                      "auto|gpu|cpu");
     parser.add_int("--row-resolution", &o.row_resolution,
                    "side of a row's distance cube face in texels (--matrix gpu)");
     parser.add_check([&parser, &o] {
-        if (o.matrix != "gpu" && o.matrix != "cpu")
-            throw UsageError(parser.command() + ": --matrix is gpu or cpu, not '" + o.matrix + "'");
+        if (o.matrix != "auto" && o.matrix != "gpu" && o.matrix != "cpu")
+            throw UsageError(parser.command() + ": --matrix is auto, gpu or cpu, not '" + o.matrix +
+                             "'");
         if (o.row_resolution < 4 || o.row_resolution > 4096)
             out_of_range(parser, "--row-resolution", "4..4096");
         if (o.pool < 0 || o.pool > (1 << 20)) out_of_range(parser, "--pool", "0..2^20");

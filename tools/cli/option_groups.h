@@ -93,7 +93,7 @@ struct ManyLightsArgs {
     int pool = int(manylights::RowColumnOptions{}.pool);
     int rows = int(manylights::RowColumnOptions{}.rows);
     int clusters = int(manylights::RowColumnOptions{}.clusters);
-    std::string matrix = manylights::RowColumnOptions{}.gpu_matrix ? "gpu" : "cpu";
+    std::string matrix = "auto";
     int row_resolution = int(manylights::RowColumnOptions{}.row_resolution);
 
     manylights::RowColumnOptions options() const;
