@@ -114,6 +114,7 @@ void VplIntegrator::advance(uint64_t work) {
         const uint64_t first_pool = number_pools();
         cluster::together(m_ranks, [&] { m_many_lights->reduce(m_chunk, first_pool); });
         m_stats.many_lights = m_many_lights->stats();
+        m_stats.gpu_matrix = m_gpu_columns != nullptr;
         index = index_representatives();
     }
     m_stats.sampling_seconds += sampling.seconds();

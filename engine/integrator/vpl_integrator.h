@@ -33,6 +33,7 @@ struct IntegratorStats {
     // `many_lights` are this process's pools).
     size_t shaded = 0;
     manylights::RowColumnStats many_lights;  // pools, rows and their seconds (in sampling)
+    bool gpu_matrix = false;                 // the reduced matrix on the renderer (GpuColumns)
     double sampling_seconds = 0.0;
     double shading_seconds = 0.0;
     uint32_t compensation_passes = 0;

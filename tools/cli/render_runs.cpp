@@ -159,11 +159,12 @@ std::string summary_line(const RenderJob& job, const RenderOutcome& r, double to
         char buf[220];
         std::snprintf(buf, sizeof buf,
                       "; row-column sampling%s: %llu pools, %llu VPLs → %llu shaded, %.0f rows a "
-                      "pool, matrix %.2f s, clustering %.2f s",
+                      "pool, %s matrix %.2f s, clustering %.2f s",
                       job.cluster ? " on rank 0" : "", static_cast<unsigned long long>(m.pools),
                       static_cast<unsigned long long>(m.columns),
                       static_cast<unsigned long long>(m.representatives),
-                      double(m.rows) / double(m.pools), m.matrix_seconds, m.cluster_seconds);
+                      double(m.rows) / double(m.pools), r.stats.gpu_matrix ? "GPU" : "CPU",
+                      m.matrix_seconds, m.cluster_seconds);
         pass_times += buf;
     }
     if (job.cluster) {
