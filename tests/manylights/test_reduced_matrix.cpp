@@ -17,6 +17,7 @@
 #include "engine/sampler/monte_carlo_stream.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
+#include "tests/manylights/unbiased_draws.h"
 
 namespace mvpl {
 namespace {
@@ -27,12 +28,7 @@ TEST_P(ReducedMatrix, ColumnsTracedTogetherAreTheOneRayEntries) {
     const scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/" + GetParam());
     const trace::Accel accel(scene);
     const light::LightSampler lights(scene);
-    sampler::MonteCarloOptions o;
-    o.seed = 3;
-    sampler::MonteCarloStream stream(scene, accel, lights, o);
-    std::vector<light::Vpl> pool;
-    while (pool.size() < 384)
-        stream.next(64, pool);
+    const std::vector<light::Vpl> pool = manylights_test::stream_pool(scene, accel, lights, 384, 3);
     const std::vector<manylights::Row> rows =
         manylights::make_rows(scene, accel, scene.camera, {32, 32, 48, {}}, 5, 0);
     ASSERT_GT(rows.size(), 24u);

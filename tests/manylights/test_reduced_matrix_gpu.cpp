@@ -24,6 +24,7 @@
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
 #include "tests/gpu/gpu_test.h"
+#include "tests/manylights/unbiased_draws.h"
 
 namespace mvpl {
 namespace {
@@ -100,12 +101,8 @@ TEST_P(ReducedMatrixGpu, EntriesAreTheOraclesUpToTheRowCubes) {
     if (GetParam().sky) scene.environment.radiance = Rgb(1.0f);
     const trace::Accel accel(scene);
     const light::LightSampler lights(scene);
-    sampler::MonteCarloOptions o;
-    o.seed = 3;
-    sampler::MonteCarloStream stream(scene, accel, lights, o);
-    std::vector<light::Vpl> pool;
-    while (pool.size() < 1024)
-        stream.next(64, pool);
+    const std::vector<light::Vpl> pool =
+        manylights_test::stream_pool(scene, accel, lights, 1024, 3);
     const std::vector<manylights::Row> rows =
         manylights::make_rows(scene, accel, scene.camera, {32, 32, 24, {}}, 5, 0);
     ASSERT_GT(rows.size(), 12u);

@@ -32,17 +32,24 @@ inline const Cornell& cornell() {
     return c;
 }
 
-// The first `n` VPLs of the Monte Carlo stream (all VPLs of each path).
-inline std::vector<light::Vpl> pool_of(size_t n, uint64_t seed) {
-    const Cornell& c = cornell();
+// The first `n` VPLs of a scene's Monte Carlo stream (all VPLs of each path).
+inline std::vector<light::Vpl> stream_pool(const scene::Scene& scene, const trace::Accel& accel,
+                                           const light::LightSampler& lights, size_t n,
+                                           uint64_t seed) {
     sampler::MonteCarloOptions o;
     o.seed = seed;
-    sampler::MonteCarloStream stream(c.scene, c.accel, c.lights, o);
+    sampler::MonteCarloStream stream(scene, accel, lights, o);
     std::vector<light::Vpl> v;
     while (v.size() < n)
         stream.next(64, v);
     v.resize(n);
     return v;
+}
+
+// The first `n` VPLs of the Cornell box's stream.
+inline std::vector<light::Vpl> pool_of(size_t n, uint64_t seed) {
+    const Cornell& c = cornell();
+    return stream_pool(c.scene, c.accel, c.lights, n, seed);
 }
 
 // reduce() cuts pools of `pool` VPLs.
