@@ -79,6 +79,21 @@ void MatrixPass::evaluate(const MatrixInput& in, const scene::Bounds& bounds,
     if (in.dims == 0 || in.dims > shared::kMaxSketchDims || in.hash.size() != 3 * in.rows.size())
         throw gpu::GpuError("reduced matrix: a sketch of 1 … 64 dimensions, one hash a row entry");
     const uint32_t stride = 1 + in.dims;
+    // A pool whose VPLs or sketches exceed a storage buffer's range on this device is evaluated
+    // in parts, each drawing the rows' cubes again (2^20 VPLs fill lavapipe's 128 MiB).
+    const uint64_t range = m_context->device_info().limits.max_storage_buffer_range;
+    const size_t fits = size_t(range / std::max<uint64_t>(sizeof(GpuVpl), stride * sizeof(float)));
+    if (in.vpls.size() > fits) {
+        out.clear();
+        std::vector<float> part_out;
+        for (size_t first = 0; first < in.vpls.size(); first += fits) {
+            MatrixInput part = in;
+            part.vpls = in.vpls.subspan(first, std::min(fits, in.vpls.size() - first));
+            evaluate(part, bounds, part_out);
+            out.insert(out.end(), part_out.begin(), part_out.end());
+        }
+        return;
+    }
     out.assign(in.vpls.size() * stride, 0.0f);
     if (in.vpls.empty() || in.rows.empty()) return;
     const std::vector<GpuVpl> vpls = to_gpu_vpls(in.vpls, bounds);
