@@ -183,7 +183,8 @@ TEST_F(Bench, RatesAgreeWithCountsAndTimes) {
 
 // --pool (row-column sampling, engine/manylights): the main render shades each pool's
 // representatives, reported beside the same VPLs shaded one by one; per VPL the rates count the
-// representatives, and the effective rate the VPLs they stand for.
+// representatives, and the effective rate the VPLs they stand for; the reduced matrix, asked on
+// the GPU, is reported as the GPU's.
 TEST(BenchRowColumn, ReportsRepresentativesBesideEveryVplShaded) {
     const std::string json_path = (std::filesystem::temp_directory_path() /
                                    ("mvpl_bench_rc_" + std::to_string(::getpid()) + ".json"))
@@ -191,7 +192,7 @@ TEST(BenchRowColumn, ReportsRepresentativesBesideEveryVplShaded) {
     const test::CommandResult r = test::run_mvpl_gpu(
         "bench " + shell_quote(kCbox) +
         " --res 32x24 --shadow-res 16 --batch 8 --vpls 64 --repeat 1 --pool 64 --rows 16"
-        " --clusters 8 --quiet --json " +
+        " --clusters 8 --matrix gpu --quiet --json " +
         shell_quote(json_path));
     ASSERT_EQ(r.exit_code, 0) << r.err;
     std::ifstream in(json_path);
@@ -199,6 +200,7 @@ TEST(BenchRowColumn, ReportsRepresentativesBesideEveryVplShaded) {
     std::filesystem::remove(json_path);
     const json& main = j["render"];
     ASSERT_TRUE(main.contains("row_column")) << main.dump();
+    EXPECT_EQ(main["row_column"]["matrix"], "gpu");
     const double vpls = j["light_paths"]["vpls"].get<double>();
     const double reps = main["row_column"]["representatives"].get<double>();
     // 64 paths leave more than 64 VPLs: at least two pools of at most 8 representatives each.

@@ -67,6 +67,8 @@ TEST(Cli, OutOfRangeAndRepeatedOptionsAreRefused) {
     expect_one_line_error(run_mvpl("convergence " + kCbox + " --ref x.exr --clusters 0"),
                           "--clusters");
     expect_one_line_error(run_mvpl("render " + kCbox + " --rows 0"), "--rows");
+    expect_one_line_error(run_mvpl("render " + kCbox + " --matrix fpga"), "--matrix");
+    expect_one_line_error(run_mvpl("bench " + kCbox + " --row-resolution 2"), "--row-resolution");
 }
 
 // Scene values beyond engine/scene/scene_range.h (issue 19): every command that loads a scene

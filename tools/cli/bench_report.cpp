@@ -70,10 +70,13 @@ Json render_json(const RenderResult& r) {
                            {"effective_vpls_per_s", r.effective_vpls_per_s}};
     j.update(measured);
     if (c.many_lights.enabled()) {
-        j["row_column"] = {
-            {"pool", c.many_lights.pool},         {"rows", c.many_lights.rows},
-            {"clusters", c.many_lights.clusters}, {"representatives", r.median.shaded},
-            {"matrix_s", r.median.matrix_s},      {"cluster_s", r.median.cluster_s}};
+        j["row_column"] = {{"pool", c.many_lights.pool},
+                           {"rows", c.many_lights.rows},
+                           {"clusters", c.many_lights.clusters},
+                           {"representatives", r.median.shaded},
+                           {"matrix_s", r.median.matrix_s},
+                           {"cluster_s", r.median.cluster_s},
+                           {"matrix", r.median.gpu_matrix ? "gpu" : "cpu"}};
     }
     return j;
 }
@@ -137,6 +140,7 @@ RenderResult summarise(const BenchConfig& config, const std::vector<RenderSample
     r.median.culled_vpls = samples.empty() ? 0 : samples.front().culled_vpls;
     r.median.g_buffers = samples.empty() ? 0 : samples.front().g_buffers;
     r.median.shaded = samples.empty() ? 0 : samples.front().shaded;
+    r.median.gpu_matrix = !samples.empty() && samples.front().gpu_matrix;
     r.median.matrix_s = field(&RenderSample::matrix_s);
     r.median.cluster_s = field(&RenderSample::cluster_s);
     // Per VPL shaded: with row-column sampling the representatives.
@@ -229,11 +233,11 @@ std::string bench_table(const BenchReport& b) {
     s += buf;
     if (m.config.many_lights.enabled()) {
         std::snprintf(buf, sizeof buf,
-                      "  row-column       %llu representatives of %llu VPLs (matrix %.3f s, "
+                      "  row-column       %llu representatives of %llu VPLs (%s matrix %.3f s, "
                       "clusters %.3f s): %.1f VPL/s effective\n",
                       static_cast<unsigned long long>(m.median.shaded),
-                      static_cast<unsigned long long>(b.vpls), m.median.matrix_s,
-                      m.median.cluster_s, m.effective_vpls_per_s);
+                      static_cast<unsigned long long>(b.vpls), m.median.gpu_matrix ? "GPU" : "CPU",
+                      m.median.matrix_s, m.median.cluster_s, m.effective_vpls_per_s);
         s += buf;
     }
     if (!b.sweep.empty()) {

@@ -58,6 +58,7 @@ struct RenderSample {
     uint64_t shaded = 0;
     double matrix_s = 0.0;
     double cluster_s = 0.0;
+    bool gpu_matrix = false;  // the reduced matrix on the GPU renderer (--matrix)
 };
 
 // The medians over the repeats of one configuration, and the rates derived from those medians

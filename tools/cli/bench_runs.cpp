@@ -107,6 +107,7 @@ RenderSample render_once(integrator::VplIntegrator& integrator, const integrator
     s.shaded = stats.shaded;
     s.matrix_s = stats.many_lights.matrix_seconds;
     s.cluster_s = stats.many_lights.cluster_seconds;
+    s.gpu_matrix = stats.gpu_matrix;
     if (ranks.size() > 1) sum_over_ranks(s, ranks);
     return s;
 }
