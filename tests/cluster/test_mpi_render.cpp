@@ -140,6 +140,14 @@ TEST_F(MpiRender, RowColumnEqualsOneProcess) {
     expect_ranks_equal_one_process(args);
 }
 
+// The same with the reduced matrix on each rank's GPU renderer.
+TEST_F(MpiRender, RowColumnWithTheGpuMatrixEqualsOneProcess) {
+    const std::string args = " render '" + kScene +
+                             "' --vpls 256 --vpl-per-path one --pool 32 --clusters 8 --rows 16 "
+                             "--matrix gpu --res 48x48 --seed 7 --quiet";
+    expect_ranks_equal_one_process(args);
+}
+
 // Shares that are not whole pools (all the VPLs of each path: each rank's last pool is short)
 // with a cluster per VPL: every VPL its own representative, numbered across the ranks' pools
 // in the one-process order, so the image is the one-process image without row-column sampling.
