@@ -25,14 +25,16 @@
 #include "engine/trace/accel.h"
 #include "tests/gpu/gpu_test.h"
 #include "tests/manylights/unbiased_draws.h"
+#include "tests/support/mirror_box.h"
 
 namespace mvpl {
 namespace {
 
 struct MatrixScene {
     std::string name;
-    std::string path;
-    bool sky = false;  // a constant environment: directional VPLs
+    std::string path;     // empty: tests/support/mirror_box.h
+    bool sky = false;     // a constant environment: directional VPLs
+    bool chains = false;  // glossy rows continued to their chains' rough ends (max depth 5)
 };
 void PrintTo(const MatrixScene& s, std::ostream* os) {
     *os << s.name;
@@ -97,15 +99,29 @@ void compare_row(const manylights::MatrixContext& mc, const std::vector<light::V
 }
 
 TEST_P(ReducedMatrixGpu, EntriesAreTheOraclesUpToTheRowCubes) {
-    scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/" + GetParam().path);
+    scene::Scene scene = GetParam().path.empty()
+                             ? test::make_mirror_box()
+                             : scene::load_scene(MVPL_ASSETS_DIR "/" + GetParam().path);
     if (GetParam().sky) scene.environment.radiance = Rgb(1.0f);
     const trace::Accel accel(scene);
     const light::LightSampler lights(scene);
     const std::vector<light::Vpl> pool =
         manylights_test::stream_pool(scene, accel, lights, 1024, 3);
+    light::ChainOptions chains;
+    if (GetParam().chains) {
+        chains.max_roughness = light::kDefaultChainRoughness;
+        chains.max_depth = 5;
+    }
     const std::vector<manylights::Row> rows =
-        manylights::make_rows(scene, accel, scene.camera, {32, 32, 24, {}}, 5, 0);
+        manylights::make_rows(scene, accel, scene.camera, {32, 32, 64, chains}, 5, 0);
     ASSERT_GT(rows.size(), 12u);
+    if (GetParam().chains) {
+        // A row seen directly receives VPLs of paths up to 5 − 2 segments; one a bounce on, fewer.
+        const auto chained = std::count_if(rows.begin(), rows.end(),
+                                           [](const auto& r) { return r.max_vpl_length < 3u; });
+        std::printf("%td rows at a chain's end\n", chained);
+        EXPECT_GT(chained, 0) << "no row at a chain's end";
+    }
 
     render::VplRenderer renderer(context(), scene, &accel);
     render::RenderOptions ro;
@@ -152,7 +168,8 @@ INSTANTIATE_TEST_SUITE_P(Scenes, ReducedMatrixGpu,
                          ::testing::Values(MatrixScene{"Cornell", "cornell-box/cbox.gltf"},
                                            MatrixScene{"TwoRooms", "two-room/two-room.gltf"},
                                            MatrixScene{"GlossyUnderSky", "glossy/glossy.gltf",
-                                                       true}),
+                                                       true},
+                                           MatrixScene{"MirrorBox", "", false, true}),
                          [](const auto& info) { return info.param.name; });
 
 }  // namespace
