@@ -70,8 +70,9 @@ void MatrixPass::reserve(gpu::Buffer& buffer, uint64_t bytes, gpu::MemoryLocatio
                          const char* name) {
     bytes = std::max<uint64_t>(bytes, 16);
     if (buffer.size() >= bytes) return;
-    buffer = gpu::Buffer(*m_context, std::max(bytes, 2 * buffer.size()), gpu::BufferUsage::storage,
-                         location, name);
+    // Exactly what is asked (a pool keeps its size), so that no buffer exceeds the device's
+    // storage buffer range where the pool does not (evaluate() cuts a pool to fit).
+    buffer = gpu::Buffer(*m_context, bytes, gpu::BufferUsage::storage, location, name);
 }
 
 void MatrixPass::evaluate(const MatrixInput& in, const scene::Bounds& bounds,
@@ -123,7 +124,6 @@ void MatrixPass::evaluate(const MatrixInput& in, const scene::Bounds& bounds,
         std::memcpy(m_rows.mapped(), &in.rows[first], count * sizeof(ChainRecord));
         for (size_t b = 0; b < count; ++b)
             std::copy_n(&in.hash[3 * (first + b)], 3, &hash[4 * b]);
-        push.row_offset = uint32_t(first);
         push.row_count = uint32_t(count);
         m_context->submit_and_wait([&](gpu::CommandList& cmd) {
             if (in.shadows) {

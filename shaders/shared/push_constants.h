@@ -89,8 +89,7 @@ struct MatrixPush {
     float texel_angle;  // of the rows' cubes: 2 / resolution
     uint flags;         // kShadows
     uint column_count;  // VPLs in the pool
-    uint row_offset;    // the batch's first row (its rows and cubes are numbered from 0)
-    uint row_count;     // at most kMaxMatrixRows
+    uint row_count;     // rows (and their cubes) in the batch, at most kMaxMatrixRows
     uint dims;          // of the sketch, at most kMaxSketchDims
 };
 const uint kMaxSketchDims = 64u;
@@ -121,6 +120,8 @@ MVPL_STD430_MEMBER(ShadingPush, vsl_r2);
 static_assert(sizeof(ShadingPush) == 64);
 MVPL_STD430_MEMBER(InterleavePush, size);
 static_assert(sizeof(InterleavePush) == 16);
+MVPL_STD430_MEMBER(MatrixPush, dims);
+static_assert(sizeof(MatrixPush) == 28);
 #endif
 
 MVPL_SHARED_END
