@@ -57,9 +57,10 @@ std::vector<Row> make_rows(const scene::Scene& scene, const trace::Accel& accel,
         const uint64_t grid_seed = pass == 0 ? pool_seed : mix_bits(pool_seed ^ uint64_t(pass));
         rows = trace_grid(scene, accel, camera, options, grid_seed, gx, gy);
         // Where rays miss (the sky, the background), a finer grid over the image, so that about
-        // R rows land on what the camera sees.
-        if (rows.empty() || double(rows.size()) >= kRowsFound * wanted) break;
-        cells = std::min(cells * wanted / double(rows.size()), kMaxRowCells * wanted);
+        // R rows land on what the camera sees (the finest where none did).
+        if (double(rows.size()) >= kRowsFound * wanted) break;
+        const double found = std::max(double(rows.size()), 1e-6);
+        cells = std::min(cells * wanted / found, kMaxRowCells * wanted);
     }
     return rows;
 }

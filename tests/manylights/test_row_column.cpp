@@ -17,6 +17,7 @@
 #include "engine/manylights/row_column_sampler.h"
 #include "engine/reference/vpl_gather.h"
 #include "engine/sampler/monte_carlo_stream.h"
+#include "engine/scene/camera.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/trace/accel.h"
 #include "tests/manylights/unbiased_draws.h"
@@ -95,6 +96,32 @@ TEST(RowColumn, SameSeedSameClustersAndRepresentatives) {
     ASSERT_EQ(x.size(), y.size());
     for (size_t i = 0; i < x.size(); ++i)
         EXPECT_EQ(x[i].columns, y[i].columns);
+}
+
+// A camera that sees the box through a small part of its image (a wide field of view from its
+// opening): most of one grid's R rays miss, and the grid is refined until about R rows land on
+// the box, spread over the part of the image it covers.
+TEST(RowColumn, RowsLandOnWhatTheCameraSees) {
+    const Cornell& c = cornell();
+    scene::Camera wide = c.scene.camera;
+    wide.yfov = 2.2f;
+    // One grid of 64 rays: fewer than half of them find the box.
+    size_t hits = 0;
+    for (int j = 0; j < 8; ++j) {
+        for (int i = 0; i < 8; ++i) {
+            const scene::CameraRay cr = scene::generate_camera_ray(
+                wide, kRes, kRes, Vec2((float(i) + 0.5f) * kRes / 8, (float(j) + 0.5f) * kRes / 8));
+            hits += c.accel.occluded(trace::Ray{cr.origin, cr.direction}) ? 1 : 0;
+        }
+    }
+    EXPECT_LT(hits, 32u) << "the box covers most of the image: nothing to refine";
+    const uint32_t wanted = 64;
+    const std::vector<manylights::Row> rows =
+        manylights::make_rows(c.scene, c.accel, wide, {kRes, kRes, int(wanted), {}}, 3, 0);
+    std::printf("%zu rows for %u asked, %zu of 64 rays on the box\n", rows.size(), wanted, hits);
+    // The refined grid's count varies by a few rows about R (its cells on the box's outline).
+    EXPECT_GE(double(rows.size()), 0.8 * manylights::kRowsFound * wanted);
+    EXPECT_LE(rows.size(), 2u * wanted);
 }
 
 // With at least as many clusters as columns every VPL is its own representative, unscaled: the
