@@ -16,11 +16,13 @@ enum class MatrixDevice { automatic, gpu, cpu };
 inline constexpr uint32_t kGpuMatrixPoolOnCpuDevice = 32768;
 
 struct RowColumnOptions {
-    // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: on the
-    // Cornell box at 256² N = 8192, R = 256, C = 512 cut relMSE 1.8× per pixel and 4.4× on 8×8
-    // block means at 5 s and 1.4× / 2.1× at 15 s, but on the two rooms it gained nothing and left
-    // a blotch in one run of five (docs/results.md, "Row-column sampling"). Under mpirun each rank
-    // reduces the pools of its own share of the VPLs (VplIntegrator::advance).
+    // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: with
+    // N = 8192, R = 256, C = 512 at equal time it cut relMSE per pixel / on 8×8 blocks 1.65× /
+    // 2.7× at 5 s and 1.43× / 2.65× at 15 s on the Cornell box at 256², but on DamagedHelmet and
+    // MetalRoughSpheresNoTextures under the sky it read 0.45–1.03× / 0.53–1.14×, and on the two
+    // rooms it gained nothing and left a blotch in one run of five (docs/results.md, "Row-column
+    // sampling"). Under mpirun each rank reduces the pools of its own share of the VPLs
+    // (VplIntegrator::advance).
     uint32_t pool = 0;
     // R: camera rays on a stratified grid over the image, one jittered ray a cell.
     uint32_t rows = kDefaultRows;
