@@ -3,12 +3,20 @@
 // many-light problem"): a pool of N VPLs shaded through C weighted cluster representatives chosen
 // from an R × N reduced matrix of their contributions to R camera-visible points
 // (row_column_sampler.h). The options and their defaults, written once here.
+#include <algorithm>
 #include <cstdint>
 
 namespace mvpl::manylights {
 
 // R's default: see RowColumnOptions::rows.
 inline constexpr uint32_t kDefaultRows = 256;
+
+// C's default: a representative for this many VPLs of a pool. On the Cornell box at 256², 15 s,
+// idle machine, medians of seeds (relMSE per pixel / on 8×8 blocks, docs/results.md,
+// "Row-column sampling"): N 8192, C 512 read 8.3 / 2.3 ·10⁻⁵ (seeds 1–3) and 8.6 / 3.1 (4–6);
+// N 8192, C 1024 8.0 / 3.1; N 16384, C 512 9.2 / 3.1; N 16384, C 1024 7.5 / 1.5 and 8.1 / 1.9;
+// N 32768, C 2048 8.1 / 2.7.
+inline constexpr uint32_t kVplsPerCluster = 16;
 
 enum class MatrixDevice { automatic, gpu, cpu };
 // The smallest pool whose matrix `automatic` evaluates on a CPU implementation of Vulkan: see
@@ -27,7 +35,8 @@ struct RowColumnOptions {
     // R: camera rays on a stratified grid over the image, one jittered ray a cell.
     uint32_t rows = kDefaultRows;
     // C: clusters (and so representatives shaded) per full pool; a shorter pool gets its share.
-    uint32_t clusters = 512;
+    // 0: pool / kVplsPerCluster (clusters_per_pool()).
+    uint32_t clusters = 0;
     // The share of a representative's probability drawn in proportion to VPL power instead of
     // the reduced column norm, so that a VPL that lights pixels no row sees keeps a probability
     // that does not vanish with its norm on the rows.
@@ -48,6 +57,9 @@ struct RowColumnOptions {
     uint32_t row_resolution = 64;
 
     bool enabled() const { return pool > 0; }
+    uint32_t clusters_per_pool() const {
+        return clusters > 0 ? clusters : std::max<uint32_t>(1, pool / kVplsPerCluster);
+    }
 };
 
 }  // namespace mvpl::manylights

@@ -56,8 +56,8 @@ void RowColumnSampler::reduce(std::vector<light::Vpl>& vpls, uint64_t first_pool
     for (size_t begin = 0, pool = 0; begin < vpls.size(); begin += n, ++pool) {
         const size_t count = std::min(n, vpls.size() - begin);
         // A shorter pool keeps the full pool's ratio of clusters to VPLs (at least one).
-        const uint32_t clusters =
-            uint32_t(std::max<uint64_t>(1, (uint64_t(m_options.clusters) * count + n - 1) / n));
+        const uint32_t clusters = uint32_t(
+            std::max<uint64_t>(1, (uint64_t(m_options.clusters_per_pool()) * count + n - 1) / n));
         std::vector<light::Vpl> reps = representatives(
             std::span<const light::Vpl>(vpls).subspan(begin, count), first_pool + pool, clusters);
         out.insert(out.end(), reps.begin(), reps.end());

@@ -64,7 +64,7 @@ TEST(Cli, OutOfRangeAndRepeatedOptionsAreRefused) {
     expect_one_line_error(run_mvpl("bench " + kCbox + " --devices -1"), "--devices");
     expect_one_line_error(run_mvpl("preview " + kCbox + " --devices 9"), "--devices");
     expect_one_line_error(run_mvpl("render " + kCbox + " --pool -1"), "--pool");
-    expect_one_line_error(run_mvpl("convergence " + kCbox + " --ref x.exr --clusters 0"),
+    expect_one_line_error(run_mvpl("convergence " + kCbox + " --ref x.exr --clusters -1"),
                           "--clusters");
     expect_one_line_error(run_mvpl("render " + kCbox + " --rows 0"), "--rows");
     expect_one_line_error(run_mvpl("render " + kCbox + " --matrix fpga"), "--matrix");

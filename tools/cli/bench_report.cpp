@@ -72,7 +72,7 @@ Json render_json(const RenderResult& r) {
     if (c.many_lights.enabled()) {
         j["row_column"] = {{"pool", c.many_lights.pool},
                            {"rows", c.many_lights.rows},
-                           {"clusters", c.many_lights.clusters},
+                           {"clusters", c.many_lights.clusters_per_pool()},
                            {"representatives", r.median.shaded},
                            {"matrix_s", r.median.matrix_s},
                            {"cluster_s", r.median.cluster_s},
@@ -95,10 +95,11 @@ std::string bench_levers(const BenchConfig& c) {
            ", chains " + (c.chain_roughness >= 0.0f ? chain_bound(c.chain_roughness) : "off") +
            ", VSL radius " + vsl_radius(c.vsl_radius) + ", " + std::to_string(c.devices) +
            (c.devices == 1 ? " device" : " devices") + ", row-column " +
-           (c.many_lights.enabled() ? "pool " + std::to_string(c.many_lights.pool) + ", " +
-                                          std::to_string(c.many_lights.rows) + " rows, " +
-                                          std::to_string(c.many_lights.clusters) + " clusters"
-                                    : std::string("off"));
+           (c.many_lights.enabled()
+                ? "pool " + std::to_string(c.many_lights.pool) + ", " +
+                      std::to_string(c.many_lights.rows) + " rows, " +
+                      std::to_string(c.many_lights.clusters_per_pool()) + " clusters"
+                : std::string("off"));
 }
 
 double BenchReport::paths_per_s() const {

@@ -217,7 +217,9 @@ void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
                    "through --clusters weighted representatives chosen from their light on "
                    "--rows camera-visible points; 0: every VPL shaded");
     parser.add_int("--rows", &o.rows, "camera-visible points of the reduced matrix");
-    parser.add_int("--clusters", &o.clusters, "representatives shaded per pool");
+    parser.add_int("--clusters", &o.clusters,
+                   "representatives shaded per pool; 0: a " +
+                       std::to_string(manylights::kVplsPerCluster) + "th of --pool");
     parser.add_string("--matrix", &o.matrix,
                       "where the reduced matrix is evaluated: gpu (a distance cube per row, the "
                       "shading pass's code), cpu (Embree rays, the oracle's) or auto (default: "
@@ -234,7 +236,7 @@ void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
             out_of_range(parser, "--row-resolution", "4..4096");
         if (o.pool < 0 || o.pool > (1 << 20)) out_of_range(parser, "--pool", "0..2^20");
         if (o.rows < 1 || o.rows > 65536) out_of_range(parser, "--rows", "1..65536");
-        if (o.clusters < 1 || o.clusters > (1 << 20)) out_of_range(parser, "--clusters", "1..2^20");
+        if (o.clusters < 0 || o.clusters > (1 << 20)) out_of_range(parser, "--clusters", "0..2^20");
     });
 }
 

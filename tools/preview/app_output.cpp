@@ -33,7 +33,7 @@ EstimatorParts PreviewApp::estimator_parts() const {
     p.vsl_radius = ro.vsl_radius;
     p.moving = !m_cpu_on;
     p.pool = e.many_lights.pool;
-    p.clusters = e.many_lights.clusters;
+    p.clusters = e.many_lights.clusters_per_pool();
     return p;
 }
 
