@@ -24,15 +24,16 @@ enum class MatrixDevice { automatic, gpu, cpu };
 inline constexpr uint32_t kGpuMatrixPoolOnCpuDevice = 32768;
 
 struct RowColumnOptions {
-    // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: with
-    // N = 8192, R = 256, C = 512 at equal time it cut relMSE per pixel / on 8×8 blocks 1.65× /
-    // 2.7× at 5 s and 1.43× / 2.65× at 15 s on the Cornell box at 256², but on DamagedHelmet and
-    // MetalRoughSpheresNoTextures under the sky it read 0.45–1.03× / 0.53–1.14×, and on the two
-    // rooms it gained nothing and left a blotch in one run of five (docs/results.md, "Row-column
-    // sampling"). Under mpirun each rank reduces the pools of its own share of the VPLs
-    // (VplIntegrator::advance).
+    // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: at equal
+    // time on the Cornell box at 256², N = 16384 (C = N/16) cut relMSE per pixel / on 8×8 blocks
+    // 1.53× / 4.0× at 5 s, 1.54× / 3.5× at 15 s and 1.15× / 1.67× at 60 s, but on DamagedHelmet
+    // and MetalRoughSpheresNoTextures under the sky N = 8192, C = 512 read 0.45–1.03× /
+    // 0.53–1.14×, and on the two rooms it gained nothing and left a blotch in one run of five
+    // (docs/results.md, "Row-column sampling"). Under mpirun each rank reduces the pools of its
+    // own share of the VPLs (VplIntegrator::advance).
     uint32_t pool = 0;
-    // R: camera rays on a stratified grid over the image, one jittered ray a cell.
+    // R: camera rays on a stratified grid over the image, one jittered ray a cell (a finer grid
+    // where rays miss: row_set.h).
     uint32_t rows = kDefaultRows;
     // C: clusters (and so representatives shaded) per full pool; a shorter pool gets its share.
     // 0: pool / kVplsPerCluster (clusters_per_pool()).
@@ -47,7 +48,7 @@ struct RowColumnOptions {
     // cube per row: engine/render/matrix_pass.h), with the CPU's Embree rays, or `automatic`:
     // the GPU's, except on a CPU implementation (lavapipe) for pools below
     // kGpuMatrixPoolOnCpuDevice. There a row's cube costs about 0.33 ms (its render passes'
-    // thread hand-offs) and the GPU's matrix per pool of 4 measured 0.49 / 0.69 / 0.91 / 1.48 s
+    // thread hand-offs) and the GPU's matrix of four pools measured 0.49 / 0.69 / 0.91 / 1.48 s
     // against the CPU's 0.26 / 0.55 / 1.03 / 2.14 s at N = 8 192 / 16 384 / 32 768 / 65 536
     // (Cornell box, R 256; docs/results.md, "Row-column sampling"). Without a renderer (the
     // oracle) it is the CPU's.
