@@ -81,7 +81,7 @@ struct CausticTracer::Impl {
           mean(o.width, o.height) {
         paths_per_pass = o.paths_per_pass > 0 ? o.paths_per_pass : uint64_t(pass_image.size());
         is_active = !l.empty() && (o.max_depth < 0 || o.max_depth >= 3) &&
-                    light::scene_may_need_caustics(s, o.specular);
+                    light::scene_may_need_caustics(s, o.specular, l);
         eye = camera.position();
         const float tan_half = std::tan(0.5f * camera.yfov);
         const float aspect = float(o.width) / float(o.height);
@@ -170,6 +170,7 @@ struct CausticTracer::Impl {
         const int max_length =
             options.max_depth < 0 ? std::numeric_limits<int>::max() : options.max_depth - 1;
         bool covered = true;  // x_0's emitter VPL lights x_1
+        const light::ChainOptions vpl_class = light::path_chain_class(options.specular, es.type);
         Vec3 previous = es.p;
         Rgb previous_diffuse(0.0f);  // f_D/f of the last bounce (lobe-wise compensation)
         for (int length = 1; length <= max_length; ++length) {
@@ -212,7 +213,7 @@ struct CausticTracer::Impl {
                         f.b > 0.0f ? fd.b / f.b : 0.0f);
             }
             // A VPL here reflects towards the side it was lit on (path_partition.h).
-            covered = light::leaves_vpl(sp.bsdf, wi, options.specular) && bs->wi.z > 0.0f;
+            covered = light::leaves_vpl(sp.bsdf, wi, vpl_class) && bs->wi.z > 0.0f;
             if (length + 3 >= options.rr_depth) {
                 const float survive = std::min(0.95f, max_component(beta) / beta_start);
                 if (!(survive > 0.0f) || u_rr >= survive) break;

@@ -6,9 +6,10 @@
 // tracing's t = 1 strategy, Veach 1997 ch. 10; pbrt-v3 §16.1.1 for the pinhole's importance) and
 // splatted into the pixel it projects to. Which paths it takes is light/path_partition.h:
 // a light-path vertex x_j (j ≥ 2) whose previous vertex x_{j−1} was not a VPL that reflects
-// towards x_j, and which the camera sees directly as a receiver (not of the chains' class, seen
-// from above its shading surface). VPL image + chains + this image is then unbiased but for the
-// caustics seen through a chain (path_partition.h, "Neither").
+// towards x_j (on a path from the environment only transmission and back sides leave none:
+// path_chain_class), and which the camera sees directly as a receiver (not of the chains' class,
+// seen from above its shading surface). VPL image + chains + this image is then unbiased but for
+// the caustics seen through a chain (path_partition.h, "Neither").
 //
 // Estimate of pixel P from N light paths (β_j the throughput at x_j, as a VPL's power there:
 // engine/sampler/light_tracer.h):
@@ -86,9 +87,9 @@ public:
     CausticTracer(const CausticTracer&) = delete;
     CausticTracer& operator=(const CausticTracer&) = delete;
 
-    // Whether the scene has paths of its share: a light, a material that may leave no VPL
-    // (scene_may_need_caustics) and max_depth ≥ 3 (light → x_1 → x_2 → eye). Inactive, add_pass
-    // traces nothing.
+    // Whether the scene has paths of its share: a light, a material that may leave no VPL on
+    // their paths (scene_may_need_caustics) and max_depth ≥ 3 (light → x_1 → x_2 → eye). Inactive,
+    // add_pass traces nothing.
     bool active() const;
     // One pass, in parallel; one thread at a time adds passes, passes() and image() may be called
     // from another meanwhile.

@@ -1,5 +1,6 @@
 #include "engine/light/path_partition.h"
 
+#include <algorithm>
 #include <vector>
 
 #include "engine/light/specular_chain.h"
@@ -10,7 +11,12 @@ bool leaves_vpl(const material::Bsdf& bsdf, const Vec3& wi, const ChainOptions& 
     return wi.z > 0.0f && !continues_chain(bsdf, wi, specular);
 }
 
-bool scene_may_need_caustics(const scene::Scene& scene, const ChainOptions& specular) {
+ChainOptions path_chain_class(const ChainOptions& specular, EmitterType emitter) {
+    return emitter == EmitterType::Environment ? ChainOptions{} : specular;
+}
+
+bool scene_may_need_caustics(const scene::Scene& scene, const ChainOptions& specular,
+                             const LightSampler& lights) {
     const std::vector<bool> drawn = scene.drawn_materials();
     for (size_t i = 0; i < scene.materials.size(); ++i) {
         const scene::Material& m = scene.materials[i];
@@ -18,7 +24,11 @@ bool scene_may_need_caustics(const scene::Scene& scene, const ChainOptions& spec
             (m.transmission > 0.0f || m.transmission_texture.valid()))
             return true;
     }
-    return scene_may_chain(scene, specular);
+    const std::vector<Emitter>& emitters = lights.emitters();
+    const bool beside_environment =
+        std::any_of(emitters.begin(), emitters.end(),
+                    [](const Emitter& e) { return e.type != EmitterType::Environment; });
+    return beside_environment && scene_may_chain(scene, specular);
 }
 
 }  // namespace mvpl::light

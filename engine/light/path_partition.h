@@ -19,7 +19,17 @@
 //
 // `specular` is the chains' ChainOptions when the caustic tracer runs; disabled (max_roughness
 // < 0), every front vertex leaves a VPL and only transmission and back sides go to the caustics.
+//
+// Which of the two a path takes is decided per path, by its emitter (path_chain_class): a path
+// from the environment leaves a VPL at every front vertex, near-mirrors included, so that the
+// caustic tracer takes only its light through transmission and back sides. Light tracing from an
+// environment starts on a disc over the whole scene, and its splats off near-mirrors onto glossy
+// receivers (f towards the camera up to tens per steradian) came out as isolated pixels 20–50×
+// the reference: at 15 s DamagedHelmet and MetalRoughSpheresNoTextures under the default sky had
+// per-pixel relMSE 1.1–4.5× above that of near-mirror VPLs (docs/results.md, "Caustics"). Each
+// path is counted by one estimator whichever class it takes, so the sum stays unbiased.
 #include "engine/light/chain_options.h"
+#include "engine/light/light_sampler.h"
 #include "engine/material/bsdf.h"
 #include "engine/scene/scene.h"
 
@@ -30,9 +40,15 @@ namespace mvpl::light {
 // chains' class (continues_chain, the same test the chains make towards the camera).
 bool leaves_vpl(const material::Bsdf& bsdf, const Vec3& wi, const ChainOptions& specular);
 
+// The chains' class that leaves_vpl applies on a light path from `emitter`: `specular`, or none
+// (disabled) on a path from the environment (header comment).
+ChainOptions path_chain_class(const ChainOptions& specular, EmitterType emitter);
+
 // Whether some drawn material can make a vertex whose light no VPL carries: one that transmits
 // (not fully metallic, with a transmission factor or texture), or one the chains may continue
-// (scene_may_chain). A scene without either (diffuse only) needs no caustic tracer.
-bool scene_may_need_caustics(const scene::Scene& scene, const ChainOptions& specular);
+// (scene_may_chain) lit by an emitter other than the environment (path_chain_class). A scene
+// without either (diffuse only, or near-mirrors under a sky alone) needs no caustic tracer.
+bool scene_may_need_caustics(const scene::Scene& scene, const ChainOptions& specular,
+                             const LightSampler& lights);
 
 }  // namespace mvpl::light

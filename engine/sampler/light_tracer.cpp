@@ -97,6 +97,7 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
     Rgb beta = es->throughput;
     const float beta_start = max_component(beta);
     if (!(beta_start > 0.0f) || !is_finite(beta)) return out.size() - first;
+    const light::ChainOptions vpl_class = light::path_chain_class(m_options.specular, es->type);
     for (int length = 1; length <= max_length; ++length) {
         const std::optional<trace::Hit> hit = m_accel.intersect(ray);
         if (!hit) break;
@@ -127,8 +128,7 @@ size_t LightTracer::trace(SampleStream& u, std::vector<light::Vpl>& out) const {
         vpl.closure = sp.bsdf.params();
         vpl.closure.transmission = Rgb(0.0f);
         vpl.path_length = uint32_t(length);
-        if (usable(vpl.power) && light::leaves_vpl(sp.bsdf, wi, m_options.specular))
-            out.push_back(vpl);
+        if (usable(vpl.power) && light::leaves_vpl(sp.bsdf, wi, vpl_class)) out.push_back(vpl);
         if (length == max_length) break;
 
         const Vec2 u_bsdf = next_2d(u);

@@ -36,8 +36,9 @@ struct LightTracerOptions {
     // this many segments (the path tracer's rr_depth, counted the same way).
     int rr_depth = light::kDefaultRrDepth;
     // With the caustic tracer (integrator/caustic_tracer.h): vertices of the chains' class leave
-    // no VPL (light/path_partition.h, leaves_vpl), the caustic tracer carries their light.
-    // Disabled (the default): a VPL on every vertex lit on its shading side.
+    // no VPL (light/path_partition.h, leaves_vpl), the caustic tracer carries their light —
+    // except on paths from the environment (path_chain_class). Disabled (the default): a VPL on
+    // every vertex lit on its shading side.
     light::ChainOptions specular;
 };
 
