@@ -24,13 +24,9 @@ enum class MatrixDevice { automatic, gpu, cpu };
 inline constexpr uint32_t kGpuMatrixPoolOnCpuDevice = 32768;
 
 struct RowColumnOptions {
-    // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). Off by default: at equal
-    // time on the Cornell box at 256², N = 16384 (C = N/16) cut relMSE per pixel / on 8×8 blocks
-    // 1.53× / 4.0× at 5 s, 1.54× / 3.5× at 15 s and 1.15× / 1.67× at 60 s, but on DamagedHelmet
-    // and MetalRoughSpheresNoTextures under the sky N = 8192, C = 512 read 0.45–1.03× /
-    // 0.53–1.14×, and on the two rooms it gained nothing and left a blotch in one run of five
-    // (docs/results.md, "Row-column sampling"). Under mpirun each rank reduces the pools of its
-    // own share of the VPLs (VplIntegrator::advance).
+    // VPLs per pool; 0 turns row-column sampling off (every VPL shaded). 0 here; `mvpl render`'s
+    // `--pool auto` picks N where it was measured to pay (automatic_pool.h). Under mpirun each
+    // rank reduces the pools of its own share of the VPLs (VplIntegrator::advance).
     uint32_t pool = 0;
     // R: camera rays on a stratified grid over the image, one jittered ray a cell (a finer grid
     // where rays miss: row_set.h).

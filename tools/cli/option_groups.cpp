@@ -1,8 +1,10 @@
 #include "tools/cli/option_groups.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <vector>
 
 #include "engine/core/error.h"
@@ -198,9 +200,36 @@ void add_caustics_option(ArgParser& parser, bool& no_caustics) {
                     "and light through glass is lost");
 }
 
+namespace {
+
+constexpr long long kMaxPool = 1 << 20;
+
+// --pool's value as VPLs per pool; none for `auto` or a value add_many_lights_options refuses.
+std::optional<uint32_t> explicit_pool(const std::string& value) {
+    if (value.empty() || value == "auto") return std::nullopt;
+    char* end = nullptr;
+    errno = 0;
+    const long long n = std::strtoll(value.c_str(), &end, 10);
+    if (*end != '\0' || errno != 0 || n < 0 || n > kMaxPool) return std::nullopt;
+    return uint32_t(n);
+}
+
+}  // namespace
+
+manylights::RowColumnOptions ManyLightsArgs::options_for(const scene::Scene& scene,
+                                                         const std::string& sampler,
+                                                         double time_budget,
+                                                         const gpu::DeviceInfo* device) const {
+    manylights::RowColumnOptions o = options();
+    const bool cpu_device = device && device->type == gpu::DeviceType::cpu;
+    if (pool == "auto")
+        o.pool = manylights::automatic_pool(scene, sampler, time_budget, cpu_device);
+    return o;
+}
+
 manylights::RowColumnOptions ManyLightsArgs::options() const {
     manylights::RowColumnOptions o;
-    o.pool = uint32_t(pool);
+    o.pool = explicit_pool(pool).value_or(0);
     o.rows = uint32_t(rows);
     o.clusters = uint32_t(clusters);
     o.matrix = matrix == "gpu"   ? manylights::MatrixDevice::gpu
@@ -212,10 +241,17 @@ manylights::RowColumnOptions ManyLightsArgs::options() const {
 
 void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
     parser.begin_group("Many lights");
-    parser.add_int("--pool", &o.pool,
-                   "matrix row-column sampling (Hašan et al. 2007): shade each pool of N VPLs "
-                   "through --clusters weighted representatives chosen from their light on "
-                   "--rows camera-visible points; 0: every VPL shaded");
+    parser.add_string(
+        "--pool", &o.pool,
+        "matrix row-column sampling (Hašan et al. 2007): shade each pool of N VPLs through "
+        "--clusters weighted representatives chosen from their light on --rows camera-visible "
+        "points; 0: every VPL shaded; auto (render's default): " +
+            std::to_string(manylights::kAutomaticPool) +
+            " for mc renders of a --time-budget of at least " +
+            std::to_string(int(manylights::kAutomaticMinSeconds)) +
+            " s of scenes whose materials are all diffuse, under no sky, on lavapipe (where it "
+            "paid), else 0; bench, convergence and preview: 0",
+        "auto|N");
     parser.add_int("--rows", &o.rows, "camera-visible points of the reduced matrix");
     parser.add_int("--clusters", &o.clusters,
                    "representatives shaded per pool; 0: a " +
@@ -234,7 +270,9 @@ void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
                              "'");
         if (o.row_resolution < 4 || o.row_resolution > 4096)
             out_of_range(parser, "--row-resolution", "4..4096");
-        if (o.pool < 0 || o.pool > (1 << 20)) out_of_range(parser, "--pool", "0..2^20");
+        if (o.pool != "auto" && !explicit_pool(o.pool))
+            throw UsageError(parser.command() + ": --pool is auto or a number in 0..2^20, not '" +
+                             o.pool + "'");
         if (o.rows < 1 || o.rows > 65536) out_of_range(parser, "--rows", "1..65536");
         if (o.clusters < 0 || o.clusters > (1 << 20)) out_of_range(parser, "--clusters", "0..2^20");
     });

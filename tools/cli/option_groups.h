@@ -7,6 +7,7 @@
 #include <string>
 
 #include "engine/gpu/device_info.h"
+#include "engine/manylights/automatic_pool.h"
 #include "engine/manylights/row_column_options.h"
 #include "engine/render/vpl_renderer.h"
 #include "engine/sampler/sampler_factory.h"
@@ -90,13 +91,19 @@ void add_caustics_option(ArgParser& parser, bool& no_caustics);
 // --pool, --rows, --clusters, --matrix, --row-resolution: matrix row-column sampling
 // (engine/manylights), off unless --pool N is given; the defaults are RowColumnOptions'.
 struct ManyLightsArgs {
-    int pool = int(manylights::RowColumnOptions{}.pool);
+    std::string pool = "auto";  // or VPLs per pool, 0: every VPL shaded
     int rows = int(manylights::RowColumnOptions{}.rows);
     int clusters = int(manylights::RowColumnOptions{}.clusters);
     std::string matrix = "auto";
     int row_resolution = int(manylights::RowColumnOptions{}.row_resolution);
 
+    // With `--pool auto` every VPL shaded: bench, convergence and the preview take pools by hand.
     manylights::RowColumnOptions options() const;
+    // render's: `auto` resolved by manylights::automatic_pool for the scene, the sampler, the
+    // time budget (0: a fixed VPL count) and the device (null: the CPU oracle).
+    manylights::RowColumnOptions options_for(const scene::Scene& scene, const std::string& sampler,
+                                             double time_budget,
+                                             const gpu::DeviceInfo* device) const;
 };
 void add_many_lights_options(ArgParser& parser, ManyLightsArgs& args);
 

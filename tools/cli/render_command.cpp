@@ -28,11 +28,13 @@ namespace mvpl::cli {
 
 namespace {
 
-RenderJob make_job(const ArgParser& parser, RenderArgs& a, const session::SceneSession& session) {
+RenderJob make_job(const ArgParser& parser, RenderArgs& a, const session::SceneSession& session,
+                   const gpu::Context* context) {
     RenderJob job;
     job.session = &session;
     job.quiet = a.quiet;
-    job.estimate = render_estimate(parser, a, session.scene());
+    job.estimate =
+        render_estimate(parser, a, session.scene(), context ? &context->device_info() : nullptr);
     return job;
 }
 
@@ -106,7 +108,7 @@ int run_render(const Args& args) {
         session->view(), context.get(),
         context ? a.renderer.devices_for(context->device_info()) : 1,
         ranks.size() > 1 ? &ranks : nullptr);
-    RenderJob job = make_job(parser, a, *session);
+    RenderJob job = make_job(parser, a, *session, context.get());
     job.integrator = integrator.get();
     if (ranks.size() > 1) job.cluster = &ranks;
     job.write_every = double(a.write_every);
