@@ -42,7 +42,7 @@ for seed in "${seeds[@]}"; do
       --gltf "$scene" --out "$out/cycles.exr" --spp "$spp" --seed "$seed" --bounces 4)
     printf 'cycles\t%s\t%s\t%s spp\t%s\t%s\n' "$t" "$seed" "$spp" "$wall" "$(errors "$out/cycles.exr")"
     for method in every row-column; do
-      extra=()
+      extra=(--pool 0)  # every VPL shaded, whatever render's --pool auto picks
       [ "$method" = row-column ] && extra=(--pool "$pool")
       wall=$(timed "$out/$method.log" "$mvpl" render "$scene" --res 256x256 --max-depth 6 \
         --time-budget "$t" --seed "$seed" "${extra[@]}" -o "$out/$method.exr")
