@@ -80,8 +80,9 @@ RenderResult render_vpls(const SceneHandle& scene, const std::vector<std::string
     session->warn_if_no_light("the image shows emitters only");
     const std::unique_ptr<gpu::Context> context = make_context(a);
     const uint32_t devices = context ? a.renderer.devices_for(context->device_info()) : 1;
-    const integrator::Estimate estimate = cli::render_estimate(
-        parser, a, session->scene(), context ? &context->device_info() : nullptr);
+    const integrator::Estimate estimate =
+        cli::render_estimate(parser, a, session->scene(),
+                             context && context->device_info().type == gpu::DeviceType::cpu);
     const session::SceneSession& s = *session;
     integrator::VplIntegrator run(s.view(), context.get(), devices, nullptr);
     const Timer clock;  // the budget counts the sampler's set-up, as the command line's

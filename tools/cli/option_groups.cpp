@@ -219,9 +219,8 @@ std::optional<uint32_t> explicit_pool(const std::string& value) {
 manylights::RowColumnOptions ManyLightsArgs::options_for(const scene::Scene& scene,
                                                          const std::string& sampler,
                                                          double time_budget,
-                                                         const gpu::DeviceInfo* device) const {
+                                                         bool cpu_device) const {
     manylights::RowColumnOptions o = options();
-    const bool cpu_device = device && device->type == gpu::DeviceType::cpu;
     if (pool == "auto")
         o.pool = manylights::automatic_pool(scene, sampler, time_budget, cpu_device);
     return o;

@@ -100,10 +100,10 @@ struct ManyLightsArgs {
     // With `--pool auto` every VPL shaded: bench, convergence and the preview take pools by hand.
     manylights::RowColumnOptions options() const;
     // render's: `auto` resolved by manylights::automatic_pool for the scene, the sampler, the
-    // time budget (0: a fixed VPL count) and the device (null: the CPU oracle).
+    // time budget (0: a fixed VPL count) and whether the renderer is a CPU implementation of
+    // Vulkan (on every rank: cpu_devices).
     manylights::RowColumnOptions options_for(const scene::Scene& scene, const std::string& sampler,
-                                             double time_budget,
-                                             const gpu::DeviceInfo* device) const;
+                                             double time_budget, bool cpu_device) const;
 };
 void add_many_lights_options(ArgParser& parser, ManyLightsArgs& args);
 

@@ -63,7 +63,7 @@ void add_render_options(ArgParser& parser, RenderArgs& a) {
 }
 
 integrator::Estimate render_estimate(const ArgParser& parser, RenderArgs& a,
-                                     const scene::Scene& scene, const gpu::DeviceInfo* device) {
+                                     const scene::Scene& scene, bool cpu_device) {
     if (a.sampler_name == "metropolis") {
         sampler::scale_pool_for_budget(a.settings, double(a.time_budget), parser.given("--chains"),
                                        parser.given("--bootstrap"));
@@ -93,7 +93,8 @@ integrator::Estimate render_estimate(const ArgParser& parser, RenderArgs& a,
     e.compensation_passes = uint32_t(a.compensation.spp);
     // Paired with the chains: what they continue leaves no VPL, the caustic tracer carries it.
     e.caustics = !a.no_caustics;
-    e.many_lights = a.many_lights.options_for(scene, a.sampler_name, double(a.time_budget), device);
+    e.many_lights =
+        a.many_lights.options_for(scene, a.sampler_name, double(a.time_budget), cpu_device);
     return e;
 }
 

@@ -46,9 +46,9 @@ void add_render_options(ArgParser& parser, RenderArgs& a);
 
 // The estimate the parsed options ask for on `scene` (after apply_scene_defaults); throws
 // UsageError for options that exclude each other. Scales the Metropolis sampler's pool to
-// --time-budget unless --chains or --bootstrap were given. `device`: the renderer's (null: the CPU
-// oracle), which `--pool auto` reads.
+// --time-budget unless --chains or --bootstrap were given. `cpu_device`: whether the renderer is
+// a CPU implementation of Vulkan (on every rank), which `--pool auto` reads.
 integrator::Estimate render_estimate(const ArgParser& parser, RenderArgs& a,
-                                     const scene::Scene& scene, const gpu::DeviceInfo* device);
+                                     const scene::Scene& scene, bool cpu_device);
 
 }  // namespace mvpl::cli

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <memory>
+#include <vector>
 
 #include "engine/aov/aov_images.h"
 #include "engine/cluster/cluster.h"
@@ -28,13 +29,21 @@ namespace mvpl::cli {
 
 namespace {
 
+// Whether every rank's renderer is a CPU implementation of Vulkan (false for the CPU oracle), so
+// that the ranks resolve `--pool auto` alike and cut the same chunks. Collective under mpirun.
+bool cpu_devices(cluster::Cluster& ranks, const gpu::Context* context) {
+    const bool mine = context && context->device_info().type == gpu::DeviceType::cpu;
+    std::vector<uint64_t> others(1, mine ? 0 : 1);
+    ranks.sum_all(others);
+    return others[0] == 0;
+}
+
 RenderJob make_job(const ArgParser& parser, RenderArgs& a, const session::SceneSession& session,
-                   const gpu::Context* context) {
+                   bool cpu_device) {
     RenderJob job;
     job.session = &session;
     job.quiet = a.quiet;
-    job.estimate =
-        render_estimate(parser, a, session.scene(), context ? &context->device_info() : nullptr);
+    job.estimate = render_estimate(parser, a, session.scene(), cpu_device);
     return job;
 }
 
@@ -108,7 +117,7 @@ int run_render(const Args& args) {
         session->view(), context.get(),
         context ? a.renderer.devices_for(context->device_info()) : 1,
         ranks.size() > 1 ? &ranks : nullptr);
-    RenderJob job = make_job(parser, a, *session, context.get());
+    RenderJob job = make_job(parser, a, *session, cpu_devices(ranks, context.get()));
     job.integrator = integrator.get();
     if (ranks.size() > 1) job.cluster = &ranks;
     job.write_every = double(a.write_every);
