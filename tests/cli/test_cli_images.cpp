@@ -75,7 +75,30 @@ TEST(Cli, ReferenceWritesExrAndPng) {
         run_mvpl("compare " + shell_quote(exr) + " " +
                  shell_quote(MVPL_ASSETS_DIR "/cornell-box/ref-cbox-d6-4096.exr")),
         "differs");
-    for (const auto& f : {exr, png, again})
+    // An image twice the reference's size is compared by its 2×2 means: each pixel of `exr`
+    // repeated 2×2 is `exr` again, and one pixel of each 2×2 doubled moves the mean by half.
+    Image twice(2 * image.width(), 2 * image.height());
+    for (int y = 0; y < twice.height(); ++y)
+        for (int x = 0; x < twice.width(); ++x)
+            twice.at(x, y) = image.at(x / 2, y / 2);
+    const std::string big = temp_file("cbox-twice.exr");
+    write_exr(twice, big);
+    const auto scaled = run_mvpl("compare " + shell_quote(big) + " " + shell_quote(exr));
+    ASSERT_EQ(scaled.exit_code, 0) << scaled.err;
+    EXPECT_NE(scaled.out.find("relMSE 0\n"), std::string::npos) << scaled.out;
+    EXPECT_NE(scaled.err.find("2×2 means"), std::string::npos) << scaled.err;
+    for (int y = 0; y < twice.height(); y += 2)
+        for (int x = 0; x < twice.width(); x += 2)
+            twice.at(x, y) *= 2.0f;
+    write_exr(twice, big);
+    const auto brighter = run_mvpl("compare " + shell_quote(big) + " " + shell_quote(exr));
+    ASSERT_EQ(brighter.exit_code, 0) << brighter.err;
+    EXPECT_NE(brighter.out.find("mean_ratio 1.25"), std::string::npos) << brighter.out;
+    const Image odd(2 * image.width() + 1, 2 * image.height());
+    write_exr(odd, big);
+    expect_one_line_error(run_mvpl("compare " + shell_quote(big) + " " + shell_quote(exr)),
+                          "differs");
+    for (const auto& f : {exr, png, again, big})
         std::filesystem::remove(f);
 }
 

@@ -31,6 +31,14 @@ void print_error(const ImageError& e, std::optional<double> noise, bool json) {
         std::printf("reference_noise %.6g\nrelMSE_vs_truth %.6g\n", *noise, e.rel_mse - *noise);
 }
 
+// k where `image` is k times `reference`'s size on both axes (k ≥ 2), else 0.
+int size_multiple(const Image& image, const Image& reference) {
+    const int k = image.width() / reference.width();
+    const bool whole = k >= 2 && image.width() == k * reference.width() &&
+                       image.height() == k * reference.height();
+    return whole ? k : 0;
+}
+
 }  // namespace
 
 int run_compare(const Args& args) {
@@ -45,7 +53,11 @@ int run_compare(const Args& args) {
         "RMSE, mean absolute error and the per-channel ratio of means. With --and-ref, against\n"
         "the mean of several independent references, and the references' own share of relMSE.");
     parser.add_positional("IMAGE", &image_path, "EXR image");
-    parser.add_positional("REFERENCE", &reference_path, "EXR reference of the same size");
+    parser.add_positional("REFERENCE", &reference_path,
+                          "EXR reference of the same size, or of IMAGE's size divided by a whole "
+                          "number k on both axes: IMAGE's k×k means, the reference's "
+                          "box-filtered pixels, are compared (a render at 512² against a 256² "
+                          "reference); --region and --block then count reference pixels");
     parser.add_int("--block", &block, "compare K×K block averages (for differing pixel filters)",
                    "K");
     parser.add_string("--region", &region,
@@ -58,8 +70,13 @@ int run_compare(const Args& args) {
     parser.add_flag("--json", &json, "print the error as one JSON object with the same names");
     if (!parser.parse(args)) return 0;
     if (block < 1) throw UsageError("compare: --block must be at least 1");
-    const Image image = read_finite_exr(image_path);
+    Image image = read_finite_exr(image_path);
     std::vector<Image> references{read_finite_exr(reference_path)};
+    if (const int k = size_multiple(image, references[0])) {
+        image = block_average(image, k);
+        std::fprintf(stderr, "compare: %s is %d× the reference's size: its %d×%d means compared\n",
+                     image_path.c_str(), k, k, k);
+    }
     for (const std::string& path : more_references)
         references.push_back(read_finite_exr(path));
     for (size_t i = 0; i < references.size(); ++i) {
