@@ -256,12 +256,21 @@ TEST(CausticTracer, FloorLitByANearMirrorMatchesThePathTracer) {
     expect_unbiased(m);
 }
 
-// The same under a sky (constant radiance 0.5): its paths off the near-mirror leave VPLs there,
-// the area light's leave none and go to the caustic tracer (light::path_chain_class), and the sum
-// is the path tracer's within 4σ. The mirror's VPLs are virtual spheres, as the renderer shades
-// them, whose widened lobes keep the region's mean; their heavy tails make σ about 5 % of it
-// (printed: 0.591 ± 0.031 against 0.585 ± 0.004), so this bounds the partition's error by about a
-// fifth of the region's light. The mechanism itself is the next test's.
+// The surface VPLs on make_mirror_scene()'s near-mirror (the plane x = 0.8).
+int vpls_on_mirror(const light::VplSet& set) {
+    int n = 0;
+    for (const light::Vpl& v : set.vpls)
+        n += v.type == light::VplType::Surface && std::abs(v.position.x - 0.8f) < 1e-4f;
+    return n;
+}
+
+// The floor in front of the near-mirror under a sky (constant radiance 0.5): the sky's paths off
+// the near-mirror leave VPLs there, the area light's leave none and go to the caustic tracer
+// (light::path_chain_class), and the sum is the path tracer's within 4σ. The mirror's VPLs are
+// virtual spheres, as the renderer shades them, whose widened lobes keep the region's mean; their
+// heavy tails make σ about 5 % of it (printed: 0.591 ± 0.031 against 0.585 ± 0.004), so this bounds
+// the partition's error by about a fifth of the region's light. The mechanism itself is the next
+// test's.
 TEST(CausticTracer, FloorLitByANearMirrorUnderASkyMatchesThePathTracer) {
     scene::Scene s = make_mirror_scene();
     s.environment.radiance = Rgb(0.5f);
@@ -284,10 +293,7 @@ TEST(CausticTracer, PathsFromTheSkyLeaveVplsOnTheChainsClass) {
     mc.paths = 4096;
     mc.tracer.max_depth = kMaxDepth;
     mc.tracer.specular.max_roughness = light::kDefaultChainRoughness;
-    int on_mirror = 0;
-    for (const light::Vpl& v : sampler::MonteCarloSampler(s, accel, lights).generate(mc).vpls)
-        on_mirror += v.type == light::VplType::Surface && std::abs(v.position.x - 0.8f) < 1e-4f;
-    EXPECT_GT(on_mirror, 20);
+    EXPECT_GT(vpls_on_mirror(sampler::MonteCarloSampler(s, accel, lights).generate(mc)), 20);
     CausticOptions c;
     c.width = c.height = kSize;
     c.max_depth = kMaxDepth;
@@ -308,18 +314,12 @@ TEST(CausticTracer, LightPathsLeaveNoVplOnTheChainsClass) {
     sampler::MonteCarloOptions mc;
     mc.paths = 4096;
     mc.tracer.max_depth = kMaxDepth;
-    auto on_mirror = [&](const light::VplSet& set) {
-        int n = 0;
-        for (const light::Vpl& v : set.vpls)
-            n += v.type == light::VplType::Surface && std::abs(v.position.x - 0.8f) < 1e-4f;
-        return n;
-    };
-    const int with_vpls = on_mirror(sampler::MonteCarloSampler(s, accel, lights).generate(mc));
+    const int with_vpls = vpls_on_mirror(sampler::MonteCarloSampler(s, accel, lights).generate(mc));
     mc.tracer.specular.max_roughness = light::kDefaultChainRoughness;
     const light::VplSet partitioned = sampler::MonteCarloSampler(s, accel, lights).generate(mc);
     // About a sixth of the light leaves towards the mirror: hundreds of VPLs on it.
     EXPECT_GT(with_vpls, 100);
-    EXPECT_EQ(on_mirror(partitioned), 0);
+    EXPECT_EQ(vpls_on_mirror(partitioned), 0);
     EXPECT_GT(partitioned.vpls.size(), 1000u);  // the floor's are still there
 }
 
