@@ -72,6 +72,8 @@ VkPhysicalDeviceFeatures optional_core_features(const VkPhysicalDeviceFeatures& 
     core.fragmentStoresAndAtomics = has.fragmentStoresAndAtomics;
     core.shaderStorageImageReadWithoutFormat = has.shaderStorageImageReadWithoutFormat;
     core.shaderStorageImageWriteWithoutFormat = has.shaderStorageImageWriteWithoutFormat;
+    // The shadow maps' rg32f (engine/render/shadow_texel.h); DeviceInfo::unusable_reason needs it.
+    core.shaderStorageImageExtendedFormats = has.shaderStorageImageExtendedFormats;
     core.multiDrawIndirect = has.multiDrawIndirect;
     core.drawIndirectFirstInstance = has.drawIndirectFirstInstance;
     return core;

@@ -103,6 +103,8 @@ std::string DeviceInfo::unusable_reason() const {
         return "Vulkan " + format_api_version(api_version) + " (mvpl needs 1.3)";
     }
     if (queue_family < 0) return "no queue family with both graphics and compute";
+    if (!storage_image_extended_formats)
+        return "no rg32f storage images (shaderStorageImageExtendedFormats)";
     return "";
 }
 
@@ -145,6 +147,7 @@ DeviceInfo describe_device(VkPhysicalDevice device, int index) {
     VkPhysicalDeviceFeatures features{};
     vkGetPhysicalDeviceFeatures(device, &features);
     info.image_cube_array = features.imageCubeArray == VK_TRUE;
+    info.storage_image_extended_formats = features.shaderStorageImageExtendedFormats == VK_TRUE;
     return info;
 }
 

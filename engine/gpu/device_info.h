@@ -54,6 +54,7 @@ struct DeviceInfo {
     int queue_family = -1;
     uint32_t timestamp_valid_bits = 0;  // of that queue family; 0: no timestamps
     bool image_cube_array = false;      // cube-map array views (the shadow pass needs them)
+    bool storage_image_extended_formats = false;  // rg32f storage images (the shadow maps)
 
     // mvpl runs on it: Vulkan 1.3 and a graphics+compute queue.
     bool usable() const;

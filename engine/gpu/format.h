@@ -5,8 +5,8 @@
 namespace mvpl::gpu {
 
 enum class Format {
-    r32_float,  // shadow distances (filterable and blendable, unlike D32 on lavapipe)
-    rg32_float,
+    r32_float,
+    rg32_float,    // shadow texels: distance (blendable, unlike D32 on lavapipe) and plane
     rgba32_float,  // accumulation, G-buffer
     rgba16_float,
     rgba8_unorm,

@@ -56,7 +56,7 @@ void KeptShadowMaps::reserve(std::span<const light::Vpl> batch) {
         const gpu::ImageDesc desc{m_resolution,
                                   m_resolution,
                                   m_layers * m_maps_per_pool,
-                                  gpu::Format::r32_float,
+                                  kShadowTexelFormat,
                                   gpu::ImageUsage::storage,
                                   false};
         m_pools.emplace_back(

@@ -11,11 +11,11 @@
 // proxies), bit for bit. One KeptShadowMaps holds one kind: the cubes (6 layers a map) of
 // point-like VPLs, or the orthographic maps (1 layer) of directional ones.
 //
-// Memory: at most `budget_bytes` of R32F layers, in pools of `maps_per_pool` maps allocated as
-// they fill. Eviction: a new map takes a free place, or else the place of the map used least
-// recently before the current estimate (new_estimate()); a map used in the current estimate is
-// never evicted, so replaying the same VPLs from the start keeps the first that fit and draws the
-// others each time, and the maps of VPLs no longer shaded (a dropped Metropolis chain) give way
+// Memory: at most `budget_bytes` of RG32F layers (shadow_texel.h), in pools of `maps_per_pool` maps
+// allocated as they fill. Eviction: a new map takes a free place, or else the place of the map used
+// least recently before the current estimate (new_estimate()); a map used in the current estimate
+// is never evicted, so replaying the same VPLs from the start keeps the first that fit and draws
+// the others each time, and the maps of VPLs no longer shaded (a dropped Metropolis chain) give way
 // to new ones. Vulkan-free to include.
 #include <cstdint>
 #include <span>
@@ -24,6 +24,7 @@
 
 #include "engine/gpu/image.h"
 #include "engine/light/vpl.h"
+#include "engine/render/shadow_texel.h"
 
 namespace mvpl::gpu {
 class CommandList;
@@ -53,7 +54,7 @@ public:
                    uint32_t maps_per_pool, uint64_t budget_bytes);
 
     static uint64_t map_bytes(bool directional, uint32_t resolution) {
-        return (directional ? 1ull : 6ull) * resolution * resolution * sizeof(float);
+        return (directional ? 1ull : 6ull) * resolution * resolution * kShadowTexelBytes;
     }
     // How many maps the budget holds.
     uint32_t capacity() const { return m_capacity; }

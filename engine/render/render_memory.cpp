@@ -5,6 +5,7 @@
 
 #include "engine/core/host_memory.h"
 #include "engine/render/g_buffer_pass.h"
+#include "engine/render/shadow_texel.h"
 #include "shaders/shared/chain_record.h"
 
 namespace mvpl::render {
@@ -12,7 +13,6 @@ namespace mvpl::render {
 namespace {
 
 constexpr uint64_t kRgba32f = 16;
-constexpr uint64_t kR32f = 4;
 constexpr uint64_t kD32f = 4;
 
 }  // namespace
@@ -25,8 +25,8 @@ MemoryEstimate estimate_memory(const RenderOptions& o) {
     // of six faces per VPL of a batch with one depth cube, and the directional maps (at least two
     // layers) with one depth face.
     const uint64_t g_buffer = pixels * kRgba32f * kGBufferLayerCount;
-    const uint64_t cubes = texels * kR32f * 6 * o.batch;
-    const uint64_t ortho = texels * kR32f * std::max(o.batch, 2u);
+    const uint64_t cubes = texels * kShadowTexelBytes * 6 * o.batch;
+    const uint64_t ortho = texels * kShadowTexelBytes * std::max(o.batch, 2u);
     MemoryEstimate e;
     e.device_bytes = g_buffer + pixels * kD32f + 2 * pixels * kRgba32f + cubes +
                      texels * kD32f * 6 + ortho + texels * kD32f;

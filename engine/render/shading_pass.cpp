@@ -9,6 +9,7 @@
 #include "engine/gpu/shader_compiler.h"
 #include "engine/gpu/spirv_cache.h"
 #include "engine/render/gpu_vpl.h"
+#include "engine/render/shadow_texel.h"
 #include "shaders/shared/interleave.h"
 #include "shaders/shared/push_constants.h"
 
@@ -61,10 +62,9 @@ ShadingPass::ShadingPass(gpu::Context& context, uint32_t width, uint32_t height,
                      "accumulation"),
       m_vpls(context, uint64_t(kMaxShadingBatch) * sizeof(GpuVpl), gpu::BufferUsage::uniform,
              gpu::MemoryLocation::upload, "vpl batch"),
-      m_no_shadows(context, {1, 1, 6, gpu::Format::r32_float, gpu::ImageUsage::storage, false},
+      m_no_shadows(context, {1, 1, 6, kShadowTexelFormat, gpu::ImageUsage::storage, false},
                    "no shadows"),
-      m_no_ortho_shadows(context,
-                         {1, 1, 2, gpu::Format::r32_float, gpu::ImageUsage::sampled, false},
+      m_no_ortho_shadows(context, {1, 1, 2, kShadowTexelFormat, gpu::ImageUsage::sampled, false},
                          "no directional shadows"),
       m_features(features),
       m_cache(cache),

@@ -16,6 +16,7 @@
 #include "engine/render/hemicube.h"
 #include "engine/render/scene_geometry.h"
 #include "engine/render/shader_program.h"
+#include "engine/render/shadow_texel.h"
 #include "shaders/shared/push_constants.h"
 
 namespace mvpl::render {
@@ -59,7 +60,7 @@ gpu::GraphicsLayout shadow_layout(uint32_t push_constant_bytes,
     layout.front_clockwise = front_clockwise.value_or(false);
     layout.vertex_stride = sizeof(Vec3);
     layout.attributes = {{gpu::VertexFormat::float3, 0}};
-    layout.color_formats = {gpu::Format::r32_float};
+    layout.color_formats = {kShadowTexelFormat};
     layout.depth = true;
     layout.push_constant_bytes = push_constant_bytes;
     return layout;
@@ -105,20 +106,19 @@ ShadowPass::ShadowPass(gpu::Context& context, const SceneGeometry& geometry,
                                 "shadow caster positions")),
       m_indices(upload_buffer(context, clusters.indices(), gpu::BufferUsage::index,
                               "shadow caster indices")),
-      m_cubes(
-          context,
-          {options.resolution, options.resolution, 6 * options.max_batch, gpu::Format::r32_float,
-           gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
-          "shadow cubes"),
+      m_cubes(context,
+              {options.resolution, options.resolution, 6 * options.max_batch, kShadowTexelFormat,
+               gpu::ImageUsage::color_attachment | gpu::ImageUsage::storage, false},
+              "shadow cubes"),
       m_depth(context,
               {options.resolution, options.resolution, 6, gpu::Format::d32_float,
                gpu::ImageUsage::depth_attachment, false},
               "shadow depth"),
-      m_ortho(context,
-              {options.resolution, options.resolution, std::max(options.max_batch, 2u),
-               gpu::Format::r32_float, gpu::ImageUsage::color_attachment | gpu::ImageUsage::sampled,
-               false},
-              "directional shadow maps"),
+      m_ortho(
+          context,
+          {options.resolution, options.resolution, std::max(options.max_batch, 2u),
+           kShadowTexelFormat, gpu::ImageUsage::color_attachment | gpu::ImageUsage::sampled, false},
+          "directional shadow maps"),
       m_ortho_depth(context,
                     {options.resolution, options.resolution, 1, gpu::Format::d32_float,
                      gpu::ImageUsage::depth_attachment, false},

@@ -1,7 +1,7 @@
 #pragma once
 // Pass 2 (docs/design.md, "GPU passes"): the distance from each VPL of a batch to the nearest
-// surface in every direction, as cube maps in an R32F 2D array (cube i = batch[i], layers 6i … 6i +
-// 5 in the order +X −X +Y −Y +Z −Z). Six single-layer passes per cube (the fastest on lavapipe;
+// surface in every direction, as cube maps in an RG32F 2D array (cube i = batch[i], layers 6i … 6i
+// + 5 in the order +X −X +Y −Y +Z −Z). Six single-layer passes per cube (the fastest on lavapipe;
 // multiview writes wrong layers there). Not a cube-map view: the shading pass selects face and
 // texel itself as cube sampling would (it needs the texel's centre anyway) and loads the texel as
 // a storage image, which on lavapipe costs a fraction of a samplerCubeArray lookup. Area and
@@ -9,7 +9,7 @@
 // directions; the texels keep stale values that are never read).
 // Vulkan-free to include.
 //
-// Directional VPLs get no cube but an orthographic map instead: layer i of an R32F 2D array
+// Directional VPLs get no cube but an orthographic map instead: layer i of an RG32F 2D array
 // holds, for batch[i], the distance along the direction of travel from the map's near plane
 // (directional_frame.h) to the first surface.
 //

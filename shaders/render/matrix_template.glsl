@@ -23,7 +23,7 @@ layout(local_size_x = 64) in;
 layout(std140, set = 0, binding = 0) uniform Rows { ChainRecord rows[kMaxMatrixRows]; };
 layout(std430, set = 0, binding = 1) readonly buffer Vpls { GpuVpl vpls[]; };
 // The batch's row cubes, six layers each (shadow_pass.h), read as the shading pass reads its own.
-layout(set = 0, binding = 2, r32f) uniform readonly image2DArray shadow_cubes;
+layout(set = 0, binding = 2, rg32f) uniform readonly image2DArray shadow_cubes;
 // The count sketch's hash of the batch's row b's three entries (entries 3r … 3r + 2 of the pool's
 // row r) in hash[b].xyz: bucket in the low bits, bit 31 the sign (set: subtract), as
 // manylights::sketch_hash draws it.

@@ -23,7 +23,7 @@ layout(set = 0, binding = 1, rgba32f) uniform image2D accumulation;
 layout(std140, set = 0, binding = 2) uniform Vpls { GpuVpl vpls[kMaxShadingBatch]; };
 // The shadow cubes, six layers each (shadow_pass.h), read texel by texel (cube_texel()) as a
 // storage image: no sampler is bound where the scene has no textures.
-layout(set = 0, binding = 3, r32f) uniform readonly image2DArray shadow_cubes;
+layout(set = 0, binding = 3, rg32f) uniform readonly image2DArray shadow_cubes;
 //@if directional|specular_chains
 layout(set = 0, binding = 4) uniform sampler2DArray ortho_shadows;
 //@endif

@@ -9,6 +9,8 @@ layout(push_constant) uniform ShadowPushBlock { ShadowPush pc; };
 
 layout(location = 0) in vec3 in_position;
 layout(location = 0) out vec4 out_offset;  // w: −1 for a simplified level (face.w)
+// The point in the frame whose planes the map's second channel holds (shadow.frag): world axes.
+layout(location = 6) out vec3 out_plane_point;
 #ifdef MVPL_MASKED
 // The alpha-tested pipeline of scenes with masked materials (shadow_masked.frag): face.y is the
 // material of the draw.
@@ -33,6 +35,7 @@ void main() {
         default: m = vec3(-r.x, -r.y, -r.z); break;
     }
     out_offset = vec4(r, pc.face.w != 0u ? -1.0 : 1.0);
+    out_plane_point = r;
 #ifdef MVPL_MASKED
     out_uv = in_uv;
     out_color = in_color;

@@ -9,6 +9,9 @@ layout(push_constant) uniform OrthoPushBlock { OrthoPush pc; };
 
 layout(location = 0) in vec3 in_position;
 layout(location = 0) out vec4 out_offset;
+// The point in the frame whose planes the map's second channel holds (shadow.frag): the map's
+// (u, v, w), in which ortho_lookup.glsl intersects them.
+layout(location = 6) out vec3 out_plane_point;
 #ifdef MVPL_MASKED
 // The alpha-tested pipeline of scenes with masked materials (shadow_masked.frag): extents.z is
 // the material of the draw.
@@ -25,6 +28,7 @@ void main() {
     const float u = dot(in_position, pc.u_origin.xyz) - pc.u_origin.w;
     const float v = dot(in_position, pc.v_origin.xyz) - pc.v_origin.w;
     const float w = dot(in_position, pc.dir_origin.xyz) - pc.dir_origin.w;
+    out_plane_point = vec3(u, v, w);
 #ifdef MVPL_MASKED
     out_offset = vec4(w, 0.0, 0.0, 1.0);
 #else

@@ -6,7 +6,16 @@
 
 #include "prelude.h"
 
+#ifdef __cplusplus
+#include <cmath>
+#endif
+
 MVPL_SHARED_BEGIN
+
+#ifdef __cplusplus
+using std::abs;
+using std::floor;
+#endif
 
 // The distance a shadow texel holds where no surface was rendered.
 const float kShadowNoOccluder = 3.0e38f;
@@ -20,6 +29,48 @@ const float kShadowNoOccluder = 3.0e38f;
 // 85 k triangles per VPL (126 → 189 VPL/s) at 1.08× the full maps' error against the oracle
 // (docs/results.md, "Closed interiors and the shadow levels of detail").
 const float kLodFootprint = 1.0f;
+
+// A texel's second channel: the plane of the surface it holds, so that the shading pass can tell
+// an occluder that stands in front of a receiver from one that merely shares the receiver's texel
+// beyond it (shadow_lookup.glsl, occluder_plane_passes_behind). The plane's normal n, whose sign
+// does not matter, turned into the hemisphere n_z ≥ 0 and stored as the hemi-octahedral map of
+// Cigolle et al. 2014 ("A Survey of Efficient Representations for Independent Unit Vectors",
+// JCGT 3(2), §3.3): p = (n_x, n_y) / (|n_x| + |n_y| + n_z), (s, t) = (p_x + p_y, p_x − p_y) in
+// [−1, 1]², each quantised to 12 bits (a step of 2/4095: at most 1.04·10⁻³ rad,
+// tests/render/test_shadow_texel.cpp) and packed as the
+// integer 1 + 4096 · q_s + q_t, which a float holds exactly (at most 2²⁴). 0: no plane (nothing
+// drawn, or a triangle too small for its derivatives).
+const float kNoOccluderPlane = 0.0f;
+const float kPlaneLevels = 4095.0f;
+
+#ifdef __cplusplus
+#define MVPL_PLANE_FN inline
+#else
+#define MVPL_PLANE_FN
+#endif
+
+// The code of the plane with normal (x, y, z), any length above 0.
+MVPL_PLANE_FN float occluder_plane_code(float x, float y, float z) {
+    const float sign = z < 0.0f ? -1.0f : 1.0f;
+    const float l1 = abs(x) + abs(y) + abs(z);
+    if (!(l1 > 0.0f)) return kNoOccluderPlane;
+    const float px = sign * x / l1;
+    const float py = sign * y / l1;
+    const float qs = floor((px + py + 1.0f) * 0.5f * kPlaneLevels + 0.5f);
+    const float qt = floor((px - py + 1.0f) * 0.5f * kPlaneLevels + 0.5f);
+    return 1.0f + 4096.0f * qs + qt;
+}
+
+// The hemi-octahedral coordinates (s, t) of a code other than kNoOccluderPlane.
+MVPL_PLANE_FN float occluder_plane_s(float code) {
+    return floor((code - 1.0f) / 4096.0f) / kPlaneLevels * 2.0f - 1.0f;
+}
+MVPL_PLANE_FN float occluder_plane_t(float code) {
+    const float c = code - 1.0f;
+    return (c - 4096.0f * floor(c / 4096.0f)) / kPlaneLevels * 2.0f - 1.0f;
+}
+
+#undef MVPL_PLANE_FN
 
 MVPL_SHARED_END
 

@@ -44,6 +44,7 @@ TEST_F(ContextTest, CreatesAValidatedContextOnTheDefaultDevice) {
     EXPECT_GT(device.limits.timestamp_period, 0.0f);
     EXPECT_GT(device.timestamp_valid_bits, 0u);
     EXPECT_TRUE(device.image_cube_array);
+    EXPECT_TRUE(device.storage_image_extended_formats);
     EXPECT_NE(context().device(), nullptr);
     EXPECT_NE(context().queue(), nullptr);
 }
@@ -63,6 +64,7 @@ TEST_F(ContextTest, DefaultPrefersDiscreteThenIntegratedGpus) {
         devices[size_t(i)].index = i;
         devices[size_t(i)].api_version = (1u << 22) | (3u << 12);  // 1.3.0
         devices[size_t(i)].queue_family = 0;
+        devices[size_t(i)].storage_image_extended_formats = true;
     }
     devices[0].type = DeviceType::cpu;
     devices[1].type = DeviceType::integrated_gpu;

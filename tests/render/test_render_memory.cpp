@@ -27,8 +27,8 @@ constexpr uint64_t kGiB = uint64_t(1) << 30;
 
 TEST(RenderMemory, EstimateCountsTheGBufferAndTheShadowCubes) {
     const MemoryEstimate e = estimate_memory(options(4096));
-    // 4096² × 8 RGBA32F G-buffer layers alone are 2 GiB; 256² × 6 × 32 R32F cubes 50 MB.
-    EXPECT_GE(e.device_bytes, 2 * kGiB + uint64_t(256) * 256 * 6 * 32 * 4);
+    // 4096² × 8 RGBA32F G-buffer layers alone are 2 GiB; 256² × 6 × 32 RG32F cubes 101 MB.
+    EXPECT_GE(e.device_bytes, 2 * kGiB + uint64_t(256) * 256 * 6 * 32 * 8);
     EXPECT_EQ(e.largest_image, 2 * kGiB);
     EXPECT_GE(e.host_bytes, uint64_t(4096) * 4096 * 12);
 }

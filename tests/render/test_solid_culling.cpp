@@ -130,7 +130,8 @@ TEST(SolidCulling, OnlyVplsOutsideTheSolidsBoxDrawFrontFacesOnly) {
 
 using SolidCullingTest = gpu::testing::GpuTest;
 
-// Renders `vpls` with back-face culling on and off: the same image, and culling did happen.
+// Renders `vpls` with back-face culling on and off: the same image (but for silhouette ties,
+// below), and culling did happen.
 void expect_same_image(gpu::Context& context, const scene::Scene& s, const light::VplSet& vpls) {
     VplRenderer renderer(context, s);
     RenderOptions o;
@@ -148,10 +149,17 @@ void expect_same_image(gpu::Context& context, const scene::Scene& s, const light
         // The double-sided solids in the G-buffer too (one-sided materials are culled anyway).
         EXPECT_GT(culled.g_buffer_front_only_triangles, both.g_buffer_front_only_triangles);
         EXPECT_EQ(culled.shadow_triangles, both.shadow_triangles);
+        // Culling leaves every texel's distance as it was. Where a texel's centre falls on a
+        // silhouette's fold, the front and the back face there tie within rounding and the
+        // texel keeps either face's plane (shaders/shared/shadow_map.h) when both are drawn, so
+        // a pixel whose lookup that texel decides (occluder_plane_passes_behind) may take the
+        // other answer for that one VPL: at most a few pixels, and the image's mean within one
+        // VPL's share of a few pixels.
         size_t differing = 0;
         for (size_t i = 0; i < with.pixels().size(); ++i)
             differing += with.pixels()[i] != without.pixels()[i] ? 1 : 0;
-        EXPECT_EQ(differing, 0u) << "shadow faces " << shadow_res;
+        EXPECT_LE(differing, with.pixels().size() / 1000) << "shadow faces " << shadow_res;
+        EXPECT_NEAR(with.mean().r, without.mean().r, 1e-3f * without.mean().r);
         EXPECT_GT(with.mean().r, 0.0f);
     }
 }
@@ -189,15 +197,16 @@ TEST_F(SolidCullingTest, TheMapsHoldTheSolidsNearSide) {
         const float cos_t = 1.0f / std::sqrt(1.0f + 2.0f / 256.0f);
         const float sin2 = 1.0f - cos_t * cos_t;
         const float near = 3.0f * cos_t - std::sqrt(1.0f - 9.0f * sin2);
+        // Two floats a texel (shadow_texel.h): the distance first.
         const std::vector<float> face = pass.cubes().download_as<float>(5, 1);
-        EXPECT_NEAR(face[8 * 16 + 8], near, 2e-3f) << (culled ? "culled" : "both faces");
+        EXPECT_NEAR(face[2 * (8 * 16 + 8)], near, 2e-3f) << (culled ? "culled" : "both faces");
         // The directional map's texel (8, 8): its centre lies (u, v) off the sphere's centre,
         // where the near side is √(1 − u² − v²) before it along the direction of travel.
         const DirectionalFrame f = directional_frame(sun.normal, s.bounds());
         const float off = 8.5f / 16.0f * f.extent + f.origin.x;  // origin.x = origin.y here
         const float expected = -std::sqrt(1.0f - 2.0f * off * off) - f.origin.z;
         const std::vector<float> map = pass.ortho_maps().download_as<float>(1, 1);
-        EXPECT_NEAR(map[8 * 16 + 8], expected, 2e-3f) << (culled ? "culled" : "both faces");
+        EXPECT_NEAR(map[2 * (8 * 16 + 8)], expected, 2e-3f) << (culled ? "culled" : "both faces");
     }
 }
 
