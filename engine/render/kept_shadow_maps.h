@@ -34,10 +34,10 @@ class Context;
 namespace mvpl::render {
 
 // The preview's budget (--kept-maps), shared by the cubes and the orthographic maps in
-// proportion to their layers (ShadowPass): 1 GiB holds 585 cubes and 585 orthographic maps of
-// 256² (the default shadow resolution), more than the Cornell box at 512² shades in 3 s of rest
-// on two lavapipe cores.
-constexpr uint64_t kDefaultKeptBytes = 1ull << 30;
+// proportion to their layers (ShadowPass): 2 GiB holds 585 cubes and 585 orthographic maps of
+// 256² (the default shadow resolution; 8-byte texels, shadow_texel.h), more than the Cornell box
+// at 512² shades in 3 s of rest on two lavapipe cores.
+constexpr uint64_t kDefaultKeptBytes = 2ull << 30;
 
 // What the kept maps of a renderer hold (VplRenderer::kept_maps()), both kinds together.
 struct KeptMapStats {

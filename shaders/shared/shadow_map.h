@@ -7,6 +7,7 @@
 #include "prelude.h"
 
 #ifdef __cplusplus
+#include <algorithm>
 #include <cmath>
 #endif
 
@@ -15,6 +16,7 @@ MVPL_SHARED_BEGIN
 #ifdef __cplusplus
 using std::abs;
 using std::floor;
+using std::max;
 #endif
 
 // The distance a shadow texel holds where no surface was rendered.
@@ -49,16 +51,16 @@ const float kPlaneLevels = 4095.0f;
 #define MVPL_PLANE_FN
 #endif
 
-// The code of the plane with normal (x, y, z), any length above 0.
+// The code of the plane with normal (x, y, z), any length above 0. One reciprocal and a select
+// rather than a branch: the shadow pass evaluates it for every fragment (its first form, with two
+// divisions and an early return, took 15 % of lavapipe's shadow pass on the Cornell box).
 MVPL_PLANE_FN float occluder_plane_code(float x, float y, float z) {
-    const float sign = z < 0.0f ? -1.0f : 1.0f;
     const float l1 = abs(x) + abs(y) + abs(z);
-    if (!(l1 > 0.0f)) return kNoOccluderPlane;
-    const float px = sign * x / l1;
-    const float py = sign * y / l1;
-    const float qs = floor((px + py + 1.0f) * 0.5f * kPlaneLevels + 0.5f);
-    const float qt = floor((px - py + 1.0f) * 0.5f * kPlaneLevels + 0.5f);
-    return 1.0f + 4096.0f * qs + qt;
+    const float scale = (z < 0.0f ? -0.5f : 0.5f) * kPlaneLevels / max(l1, 1e-30f);
+    const float half_range = 0.5f * kPlaneLevels + 0.5f;
+    const float qs = floor((x + y) * scale + half_range);
+    const float qt = floor((x - y) * scale + half_range);
+    return l1 > 0.0f ? 1.0f + 4096.0f * qs + qt : kNoOccluderPlane;
 }
 
 // The hemi-octahedral coordinates (s, t) of a code other than kNoOccluderPlane.
