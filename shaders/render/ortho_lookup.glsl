@@ -45,7 +45,7 @@ bool ortho_plane_passes_behind(vec2 texel_value, vec3 map, float texel, float re
     const vec3 n = occluder_plane_normal(texel_value.y);
     if (abs(n.z) < kMinPlaneCos * length(n)) return false;
     const vec2 centre = (clamp(floor(map.xy / texel), vec2(0.0), vec2(res - 1.0)) + 0.5) * texel;
-    return stored - dot(n.xy, map.xy - centre) / n.z >= map.z - allowance;
+    return stored - dot(n.xy, map.xy - centre) / n.z > map.z + allowance;
 }
 
 float directional_visibility(uint layer, GpuVpl v, vec3 p, vec3 ng) {

@@ -26,7 +26,8 @@ void main() {
     s.t = vec3(1.0, 0.0, 0.0);
     s.b = vec3(0.0, 1.0, 0.0);
     s.n = vec3(0.0, 0.0, 1.0);
-    if (alpha_cut(in_material, s, in_position, in_seed)) discard;
+    // Derivatives before the discard: the quad's neighbours are undefined after it.
     const vec3 n = cross(dFdx(in_plane_point), dFdy(in_plane_point));
+    if (alpha_cut(in_material, s, in_position, in_seed)) discard;
     out_texel = vec2(length(in_offset.xyz), occluder_plane_code(n.x, n.y, n.z));
 }

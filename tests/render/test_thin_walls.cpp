@@ -181,9 +181,12 @@ Band junction_band(const Vec3& p, const Vec3& n, const light::Vpl& vpl, float ta
 }
 
 // Whether p lies within rounding of an occluder plane: twice the shadow test's constant bias
-// (2·10⁻⁴ of the distance, shadow_lookup.glsl) from a plane other than its own.
-bool at_junction(const Vec3& p, const Vec3& n, const light::Vpl& vpl, float wall_x) {
-    const float d = vpl.type == light::VplType::Directional ? 1.0f : glm::length(vpl.position - p);
+// (2·10⁻⁴ of the distance, shadow_lookup.glsl; for a directional VPL of the depth from its map's
+// near plane, at most the scene's diagonal) from a plane other than its own.
+bool at_junction(const Vec3& p, const Vec3& n, const light::Vpl& vpl, float wall_x,
+                 float diagonal) {
+    const float d =
+        vpl.type == light::VplType::Directional ? diagonal : glm::length(vpl.position - p);
     for (const auto& [normal, offset] : planes(wall_x)) {
         if (std::abs(glm::dot(normal, n)) > 0.999f) continue;
         if (std::abs(glm::dot(normal, p) - offset) < 4e-4f * d) return true;
@@ -196,6 +199,7 @@ bool at_junction(const Vec3& p, const Vec3& n, const light::Vpl& vpl, float wall
 Classified classify(const scene::Scene& scene, const Image& image, const light::Vpl& vpl, float tau,
                     float texel, float wall_x) {
     Classified c;
+    const float diagonal = scene.bounds().diagonal();
     for (int y = 0; y < kSize; ++y) {
         for (int x = 0; x < kSize; ++x) {
             const std::optional<testing::CpuHit> hit =
@@ -217,7 +221,8 @@ Classified classify(const scene::Scene& scene, const Image& image, const light::
                 EXPECT_TRUE(may_differ)
                     << "pixel " << x << "," << y << " at (" << hit->p.x << ", " << hit->p.y << ", "
                     << hit->p.z << ") " << (in_shadow ? "leaks" : "falsely shadowed");
-                if (!in_shadow && !at_junction(hit->p, hit->ng, vpl, wall_x)) ++c.darkened;
+                if (!in_shadow && !at_junction(hit->p, hit->ng, vpl, wall_x, diagonal))
+                    ++c.darkened;
                 continue;
             }
             if (in_shadow) {
