@@ -56,7 +56,7 @@ struct DeviceInfo {
     bool image_cube_array = false;      // cube-map array views (the shadow pass needs them)
     bool storage_image_extended_formats = false;  // rg32f storage images (the shadow maps)
 
-    // mvpl runs on it: Vulkan 1.3 and a graphics+compute queue.
+    // mvpl runs on it: Vulkan 1.3, a graphics+compute queue and rg32f storage images.
     bool usable() const;
     // Why it is not usable ("" if it is).
     std::string unusable_reason() const;
