@@ -5,7 +5,7 @@ set -euo pipefail
 
 packages=(
   # toolchain
-  cmake g++ make pkg-config clang-format
+  cmake g++ make pkg-config clang-format mold
   # engine: Embree (brings oneTBB), glTF, EXR, PNG, maths
   libembree-dev libtbb-dev libtinygltf-dev nlohmann-json3-dev libopenexr-dev libstb-dev libglm-dev
   # tests

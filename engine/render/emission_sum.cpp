@@ -11,7 +11,7 @@
 namespace mvpl::render {
 namespace {
 
-constexpr uint32_t kGroupSize = 8;  // emission_sum.comp's local size
+constexpr uint32_t kEmissionSumGroupSize = 8;  // emission_sum.comp's local size
 
 }  // namespace
 
@@ -69,8 +69,8 @@ void EmissionSum::record_add(gpu::CommandList& cmd, const gpu::Image& g_buffer,
     const shared::EmissionPush push{{width, height}, kGBufferEmission, flags};
     cmd.dispatch(*m_pipeline,
                  {&g_buffer, &m_sum, &m_background, chain_records ? chain_records : &m_no_chains},
-                 gpu::push_bytes(push), (width + kGroupSize - 1) / kGroupSize,
-                 (height + kGroupSize - 1) / kGroupSize);
+                 gpu::push_bytes(push), (width + kEmissionSumGroupSize - 1) / kEmissionSumGroupSize,
+                 (height + kEmissionSumGroupSize - 1) / kEmissionSumGroupSize);
 }
 
 }  // namespace mvpl::render

@@ -11,7 +11,7 @@
 namespace mvpl::render {
 namespace {
 
-constexpr uint32_t kGroupSize = 8;  // interleave_filter.comp's local size
+constexpr uint32_t kInterleaveGroupSize = 8;  // interleave_filter.comp's local size
 
 }  // namespace
 
@@ -47,8 +47,8 @@ void InterleaveFilter::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
         throw gpu::GpuError("interleave filter: fewer chain records than pixels");
     const shared::InterleavePush push{{width, height}, m_k, chains ? 1u : 0u};
     cmd.dispatch(*m_pipeline, {&g_buffer, &m_shaded, &accumulation, chains ? chains : &m_no_chains},
-                 gpu::push_bytes(push), (width + kGroupSize - 1) / kGroupSize,
-                 (height + kGroupSize - 1) / kGroupSize);
+                 gpu::push_bytes(push), (width + kInterleaveGroupSize - 1) / kInterleaveGroupSize,
+                 (height + kInterleaveGroupSize - 1) / kInterleaveGroupSize);
     cmd.barrier();
     record_clear(cmd);
 }

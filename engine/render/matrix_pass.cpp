@@ -16,7 +16,7 @@ namespace {
 
 using shared::ChainRecord;
 using shared::MatrixPush;
-constexpr uint32_t kGroupSize = 64;  // matrix_template.glsl's local_size_x
+constexpr uint32_t kMatrixGroupSize = 64;  // matrix_template.glsl's local_size_x
 
 std::unique_ptr<gpu::ComputePipeline> make_pipeline(gpu::Context& context,
                                                     const ShaderFeatures& features,
@@ -111,7 +111,7 @@ void MatrixPass::evaluate(const MatrixInput& in, const scene::Bounds& bounds,
     push.flags = in.shadows ? shared::kShadows : 0u;
     push.column_count = uint32_t(in.vpls.size());
     push.dims = in.dims;
-    const uint32_t groups = (push.column_count + kGroupSize - 1) / kGroupSize;
+    const uint32_t groups = (push.column_count + kMatrixGroupSize - 1) / kMatrixGroupSize;
     const size_t batch = std::min<size_t>(m_shadow.max_batch(), shared::kMaxMatrixRows);
     std::vector<light::Vpl> row_vpls;
     auto* hash = reinterpret_cast<uint32_t*>(m_hash.mapped());

@@ -20,7 +20,7 @@ using shared::kAddEmission;
 using shared::kMaxShadingBatch;
 using shared::kShadows;
 using shared::ShadingPush;
-constexpr uint32_t kGroupSize = 8;
+constexpr uint32_t kShadingGroupSize = 8;
 
 // Binding 3, the shadow cubes, is a storage image: the shader picks face and texel itself
 // (shadow_lookup.glsl, cube_texel). Binding 4 (the directional maps) exists only in programs
@@ -154,7 +154,7 @@ void ShadingPass::record(gpu::CommandList& cmd, const gpu::Image& g_buffer,
         resources.push_back(batch.chains);
     }
     // Interleaved: one workgroup layer per pixel class, each invocation a pixel K apart.
-    const uint32_t span = kGroupSize * k;
+    const uint32_t span = kShadingGroupSize * k;
     cmd.dispatch(*m_pipeline, resources, gpu::push_bytes(push), (width + span - 1) / span,
                  (height + span - 1) / span, k * k);
 }

@@ -6,6 +6,7 @@
 
 #include "engine/scene/gltf_accessor.h"
 #include "engine/scene/gltf_value.h"
+#include "engine/scene/mesh_limits.h"
 #include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::gltf {
@@ -13,8 +14,6 @@ namespace {
 
 using DMat3 = glm::dmat3;
 
-constexpr uint64_t kMaxTriangles = uint64_t(1) << 28;
-constexpr uint64_t kMaxVertices = uint64_t(1) << 28;
 // Any unit vector will do for a degenerate triangle: it has no area to shade.
 const Vec3 kFallbackNormal(0.0f, 0.0f, 1.0f);
 
@@ -237,12 +236,12 @@ size_t count_triangles(const Document& doc, const std::string& where, int mode, 
 // Charges a placed primitive's triangles and output vertices to the scene's budget.
 void charge(const Document& doc, GeometryBudget& budget, size_t triangle_count,
             uint64_t out_vertices, const std::string& placed) {
-    if (budget.triangles + triangle_count > kMaxTriangles) {
-        doc.fail("the scene has more than " + std::to_string(kMaxTriangles) + " triangles when " +
-                 placed);
+    if (budget.triangles + triangle_count > kMaxMeshTriangles) {
+        doc.fail("the scene has more than " + std::to_string(kMaxMeshTriangles) +
+                 " triangles when " + placed);
     }
-    if (budget.vertices + out_vertices > kMaxVertices) {
-        doc.fail("the scene has more than " + std::to_string(kMaxVertices) + " vertices when " +
+    if (budget.vertices + out_vertices > kMaxMeshVertices) {
+        doc.fail("the scene has more than " + std::to_string(kMaxMeshVertices) + " vertices when " +
                  placed);
     }
     budget.triangles += triangle_count;

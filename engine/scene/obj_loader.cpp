@@ -10,14 +10,13 @@
 
 #include "engine/core/error.h"
 #include "engine/core/regular_file.h"
+#include "engine/scene/mesh_limits.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/scene/scene_range.h"
 
 namespace mvpl::scene {
 
 namespace {
-
-constexpr size_t kMaxTriangles = size_t(1) << 28;
 
 // tinyobjloader's messages may span lines; the first names the problem.
 std::string first_line(const std::string& text) {
@@ -155,7 +154,7 @@ void add_shape(const std::string& path, const tinyobj::ObjReader& reader,
         for (size_t k = 1; k + 1 < n; ++k)
             b.mesh.indices.insert(b.mesh.indices.end(), {polygon[0], polygon[k], polygon[k + 1]});
         triangles += n - 2;
-        if (triangles > kMaxTriangles) throw InputError(path, "more than 2^28 triangles");
+        if (triangles > kMaxMeshTriangles) throw InputError(path, "more than 2^28 triangles");
     }
 }
 

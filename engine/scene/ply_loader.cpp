@@ -8,6 +8,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/regular_file.h"
+#include "engine/scene/mesh_limits.h"
 #include "engine/scene/ply_format.h"
 #include "engine/scene/scene_loader.h"
 #include "engine/scene/scene_range.h"
@@ -23,8 +24,7 @@ using ply::Property;
 using ply::Reader;
 using ply::type_size;
 
-// Bounds that keep a hostile header from asking for absurd allocations (as the glTF loader's).
-constexpr uint64_t kMaxTriangles = uint64_t(1) << 28;
+// Bounds that keep a hostile header from asking for absurd allocations (mesh_limits.h).
 constexpr uint64_t kMaxPolygonVertices = uint64_t(1) << 16;
 
 int property_index(const Element& e, const char* name) {
@@ -163,7 +163,8 @@ void add_face(const std::string& path, uint64_t n, const std::vector<uint32_t>& 
     // Fan triangulation: (0, k, k+1), which keeps the polygon's winding.
     for (size_t k = 1; k + 1 < polygon.size(); ++k)
         mesh.indices.insert(mesh.indices.end(), {polygon[0], uint32_t(polygon[k]), polygon[k + 1]});
-    if (mesh.indices.size() / 3 > kMaxTriangles) throw InputError(path, "more than 2^28 triangles");
+    if (mesh.indices.size() / 3 > kMaxMeshTriangles)
+        throw InputError(path, "more than 2^28 triangles");
 }
 
 }  // namespace

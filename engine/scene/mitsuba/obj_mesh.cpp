@@ -10,13 +10,12 @@
 
 #include "engine/core/error.h"
 #include "engine/core/regular_file.h"
+#include "engine/scene/mesh_limits.h"
 #include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::mitsuba {
 
 namespace {
-
-constexpr size_t kMaxTriangles = size_t(1) << 28;
 
 class LineReader {
 public:
@@ -128,7 +127,7 @@ Mesh read_obj_mesh(const std::string& path, bool flip_tex_coords) {
             if (polygon.size() < 3) r.fail("a face needs at least 3 vertices");
             for (size_t k = 1; k + 1 < polygon.size(); ++k)
                 mesh.indices.insert(mesh.indices.end(), {polygon[0], polygon[k], polygon[k + 1]});
-            if (mesh.indices.size() / 3 > kMaxTriangles) r.fail("more than 2^28 triangles");
+            if (mesh.indices.size() / 3 > kMaxMeshTriangles) r.fail("more than 2^28 triangles");
         }
     }
     if (mesh.indices.empty()) throw InputError(path, "no faces");

@@ -10,6 +10,7 @@
 
 #include "engine/core/error.h"
 #include "engine/core/regular_file.h"
+#include "engine/scene/mesh_limits.h"
 #include "engine/scene/scene_range.h"
 
 namespace mvpl::scene::mitsuba {
@@ -19,7 +20,6 @@ namespace {
 constexpr uint16_t kMagic = 0x041C;
 constexpr uint32_t kHasNormals = 0x0001, kHasUvs = 0x0002, kHasColors = 0x0008,
                    kFaceNormals = 0x0010, kSingle = 0x1000, kDouble = 0x2000;
-constexpr uint64_t kMaxVertices = uint64_t(1) << 28, kMaxTriangles = uint64_t(1) << 28;
 constexpr uint64_t kMaxInflated = uint64_t(1) << 32;
 
 template <class T>
@@ -176,7 +176,8 @@ Mesh read_serialized_mesh(const std::string& path, int shape_index, bool* face_n
     const uint64_t vertices = read_le<uint64_t>(s, r.at);
     const uint64_t triangles = read_le<uint64_t>(s, r.at + 8);
     r.at += 16;
-    if (vertices > kMaxVertices || triangles > kMaxTriangles || vertices == 0 || triangles == 0)
+    if (vertices > kMaxMeshVertices || triangles > kMaxMeshTriangles || vertices == 0 ||
+        triangles == 0)
         throw InputError(path, "shape " + std::to_string(shape_index) + " has " +
                                    std::to_string(vertices) + " vertices and " +
                                    std::to_string(triangles) + " triangles");
