@@ -177,13 +177,20 @@ void Image::check_layers(uint32_t base_layer, uint32_t layer_count) const {
 
 void Image::upload(std::span<const std::byte> pixels, uint32_t base_layer, uint32_t layer_count) {
     check_layers(base_layer, layer_count);
+    Buffer staging(*m_context, layer_bytes() * layer_count, BufferUsage::none,
+                   MemoryLocation::upload, m_name + " (staging)");
+    upload(pixels, staging, base_layer, layer_count);
+}
+
+void Image::upload(std::span<const std::byte> pixels, Buffer& staging, uint32_t base_layer,
+                   uint32_t layer_count) {
+    check_layers(base_layer, layer_count);
     const uint64_t bytes = layer_bytes() * layer_count;
-    if (pixels.size() != bytes) {
+    if (pixels.size() != bytes || staging.size() < bytes) {
         throw GpuError("image '" + m_name + "': upload of " + std::to_string(pixels.size()) +
-                       " bytes, expected " + std::to_string(bytes));
+                       " bytes through a buffer of " + std::to_string(staging.size()) +
+                       ", expected " + std::to_string(bytes));
     }
-    Buffer staging(*m_context, bytes, BufferUsage::none, MemoryLocation::upload,
-                   m_name + " (staging)");
     std::memcpy(staging.mapped(), pixels.data(), bytes);
     m_context->submit_and_wait([&](CommandList& cmd) {
         cmd.copy_buffer_to_image(staging, *this, base_layer, layer_count);

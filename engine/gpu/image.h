@@ -19,6 +19,7 @@
 
 namespace mvpl::gpu {
 
+class Buffer;
 class Context;
 
 // What the GPU does with an image. Transfer source and destination are always included.
@@ -79,6 +80,11 @@ public:
     // Uploads layer_count tightly packed layers starting at base_layer (staging copy and
     // submit_and_wait: not inside a recording).
     void upload(std::span<const std::byte> pixels, uint32_t base_layer = 0,
+                uint32_t layer_count = 1);
+    // The same through the caller's upload buffer of at least pixels.size() bytes: uploads in a
+    // row reuse its pages, where a fresh buffer each faults every page in again (on a CPU device
+    // such as lavapipe, that first touch is most of a large texture's upload).
+    void upload(std::span<const std::byte> pixels, Buffer& staging, uint32_t base_layer = 0,
                 uint32_t layer_count = 1);
     // Reads layer_count layers back, tightly packed (same caveat).
     std::vector<std::byte> download(uint32_t base_layer = 0, uint32_t layer_count = 1) const;

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <bit>
+#include <span>
 
+#include "engine/gpu/buffer.h"
 #include "engine/gpu/command_list.h"
 #include "engine/gpu/compute_pipeline.h"
 #include "engine/gpu/graphics_pipeline.h"
@@ -57,13 +59,29 @@ std::unique_ptr<gpu::GraphicsPipeline> make_pipeline(gpu::Context& context,
         g_buffer_layout(generated.fragment_textures.size()), "g-buffer");
 }
 
-gpu::Image upload_texture(gpu::Context& context, const scene::Texture& t) {
-    gpu::Image image(context,
-                     {uint32_t(t.width), uint32_t(t.height), 1, gpu::Format::rgba32_float,
-                      gpu::ImageUsage::sampled, false},
-                     "texture " + t.name);
-    image.upload(t.texels);
-    return image;
+// The textures `indices` of `textures` as sampled images, through one upload buffer that fits the
+// largest (Image::upload): SpecGlossVsMetalRough's seven 2048² textures uploaded 4.6× faster on
+// lavapipe than through a buffer each (perf samples of `mvpl render` at 48², 16 VPLs).
+std::vector<gpu::Image> upload_textures(gpu::Context& context,
+                                        const std::vector<scene::Texture>& textures,
+                                        const std::vector<int>& indices) {
+    uint64_t largest = 0;
+    for (const int index : indices)
+        largest = std::max<uint64_t>(largest, textures[size_t(index)].texels.size() * sizeof(Vec4));
+    std::vector<gpu::Image> images;
+    if (indices.empty()) return images;
+    gpu::Buffer staging(context, largest, gpu::BufferUsage::none, gpu::MemoryLocation::upload,
+                        "texture upload");
+    for (const int index : indices) {
+        const scene::Texture& t = textures[size_t(index)];
+        images.emplace_back(
+            context,
+            gpu::ImageDesc{uint32_t(t.width), uint32_t(t.height), 1, gpu::Format::rgba32_float,
+                           gpu::ImageUsage::sampled, false},
+            "texture " + t.name);
+        images.back().upload(std::as_bytes(std::span(t.texels)), staging);
+    }
+    return images;
 }
 
 // Whether the camera and its near plane's window lie outside the box of draw: its clipping then
@@ -115,14 +133,12 @@ GBufferPass::GBufferPass(gpu::Context& context, const SceneGeometry& geometry, u
       m_pipeline(make_pipeline(context, geometry, vert, frag, cache)) {
     const GBufferSources sources =
         generate_g_buffer_sources(geometry.graphs(), geometry.textures(), geometry.drawn());
-    for (const int index : sources.fragment_textures)
-        m_fragment_textures.push_back(upload_texture(context, geometry.textures()[size_t(index)]));
+    m_fragment_textures = upload_textures(context, geometry.textures(), sources.fragment_textures);
     if (!sources.has_material_pass()) return;
     gpu::ComputeLayout layout{{gpu::BindingType::storage_image}, sizeof(MaterialPush)};
-    for (const int index : sources.textures) {
-        m_textures.push_back(upload_texture(context, geometry.textures()[size_t(index)]));
-        layout.bindings.push_back(gpu::BindingType::sampled_image);
-    }
+    m_textures = upload_textures(context, geometry.textures(), sources.textures);
+    layout.bindings.resize(layout.bindings.size() + m_textures.size(),
+                           gpu::BindingType::sampled_image);
     m_material_pipeline = std::make_unique<gpu::ComputePipeline>(
         context,
         gpu::compile_glsl_cached(gpu::ShaderStage::compute, sources.material.source,

@@ -77,7 +77,7 @@ SceneGeometry::SceneGeometry(gpu::Context& context, const scene::Scene& scene)
     : m_graphs(material::SceneMaterials(scene).graphs()),
       m_drawn(scene.drawn_materials()),
       m_features(scene_features(scene, ShaderOptions{})),
-      m_textures(scene.textures),
+      m_textures(&scene.textures),
       m_environment(scene.environment) {
     for (const scene::Material& m : scene.materials)
         m_materials.push_back({m.emission(), m.double_sided});

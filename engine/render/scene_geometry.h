@@ -51,7 +51,7 @@ public:
     // Scene::drawn_materials(): the materials the G-buffer generates code for.
     const std::vector<bool>& drawn() const { return m_drawn; }
     // The scene's decoded textures (what the graphs' image-texture nodes read).
-    const std::vector<scene::Texture>& textures() const { return m_textures; }
+    const std::vector<scene::Texture>& textures() const { return *m_textures; }
     // What the scene can produce (scene_features), with or without surface VPLs.
     ShaderFeatures features(bool surface_vpls) const {
         ShaderFeatures f = m_features;
@@ -71,7 +71,9 @@ private:
     std::vector<material::MaterialGraph> m_graphs;
     std::vector<bool> m_drawn;
     ShaderFeatures m_features;
-    std::vector<scene::Texture> m_textures;
+    // The scene's, not a copy (2048² textures hold 64 MiB of float texels each): the scene
+    // outlives its geometry, as it outlives the renderer that holds both (VplRenderer::Impl).
+    const std::vector<scene::Texture>* m_textures;
     uint32_t m_vertex_count = 0;
     scene::Bounds m_bounds;
     scene::Environment m_environment;

@@ -1,6 +1,14 @@
 #include "tests/gpu/gpu_test.h"
 
-#if defined(__SANITIZE_ADDRESS__)
+#if defined(__SANITIZE_ADDRESS__)  // GCC
+#define MVPL_ADDRESS_SANITIZER 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)  // clang
+#define MVPL_ADDRESS_SANITIZER 1
+#endif
+#endif
+
+#if defined(MVPL_ADDRESS_SANITIZER)
 // MVPL_SANITIZE builds: lavapipe's LLVM JIT leaks blocks that point at each other (reported as
 // "indirect" leaks only), allocated in libraries that are unloaded at vkDestroyInstance, so
 // LeakSanitizer can neither symbolise nor suppress them by name. Leak checking is off for this

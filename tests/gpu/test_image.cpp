@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <span>
 #include <vector>
 
 #include "engine/gpu/buffer.h"
@@ -136,6 +137,33 @@ TEST_F(ImageTest, LayeredUploadWritesOnlyItsLayers) {
     EXPECT_EQ(all[96], -1.0f);
     EXPECT_THROW(image.upload(std::vector<float>(8 * 4, 1.0f), 4, 1), GpuError);
     EXPECT_THROW(image.upload(std::vector<float>(7, 1.0f), 0, 1), GpuError);
+}
+
+// Uploads in a row through one buffer (how the G-buffer pass uploads a scene's textures): each
+// image gets its own texels, a smaller image after a larger one included, and a buffer too small
+// for the texels is refused.
+TEST_F(ImageTest, UploadsThroughOneBufferEachKeepTheirTexels) {
+    ImageDesc large;
+    large.width = 16;
+    large.height = 8;
+    large.format = Format::r32_float;
+    ImageDesc small = large;
+    small.width = 4;
+    small.height = 2;
+    Image a(context(), large, "a");
+    Image b(context(), small, "b");
+    Buffer staging(context(), a.layer_bytes(), BufferUsage::none, MemoryLocation::upload, "up");
+    std::vector<float> texels_a(16 * 8), texels_b(4 * 2);
+    for (size_t i = 0; i < texels_a.size(); ++i)
+        texels_a[i] = float(i);
+    for (size_t i = 0; i < texels_b.size(); ++i)
+        texels_b[i] = -float(i) - 1.0f;
+    a.upload(std::as_bytes(std::span(texels_a)), staging);
+    b.upload(std::as_bytes(std::span(texels_b)), staging);
+    EXPECT_EQ(a.download_as<float>(), texels_a);
+    EXPECT_EQ(b.download_as<float>(), texels_b);
+    Buffer too_small(context(), b.layer_bytes(), BufferUsage::none, MemoryLocation::upload, "up");
+    EXPECT_THROW(a.upload(std::as_bytes(std::span(texels_a)), too_small), GpuError);
 }
 
 TEST_F(ImageTest, BadDescriptionsAreErrors) {

@@ -127,7 +127,10 @@ TEST(Furnace, ConductorAlbedoPattern) {
         const Bsdf smooth(test::conductor(Rgb(1.0f), 0.1f));
         EXPECT_GT(albedo_importance(smooth, test::outgoing(theta), 1 << 16, 31).mean, 0.99);
     }
-    double previous = 1.0 + 1e-6;
+    // Energy is conserved up to the float rounding of near-specular weights: D(h) moves by 2δ/α
+    // relative for a half vector rounded by δ ≈ 10⁻⁷ rad, 2·10⁻⁵ at α = 0.01 (r = 0.1; the
+    // estimate read 1 + 10⁻⁵ under clang 14).
+    double previous = 1.0 + 1e-4;
     for (const float r : {0.1f, 0.3f, 0.5f, 0.7f, 1.0f}) {
         const Bsdf bsdf(test::conductor(Rgb(1.0f), r));
         const Estimate e = albedo_importance(bsdf, test::outgoing(0.0f), kImportanceSamples, 37);

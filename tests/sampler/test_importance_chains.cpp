@@ -82,9 +82,12 @@ TEST(ImportanceChains, AMirroredViewHasTheTargetOfTheDirectView) {
     EXPECT_EQ(mirrored_points, direct_points);
     ASSERT_GT(expected, 0.0);
     // The chain's weight is F·G₂/G₁ = 1 − O(α² tan² θ) with α = 10⁻⁴, and the reflected rays
-    // meet the wall at the direct rays' points to float rounding: 10⁻⁴ is ample and far below
-    // what a missed point (1/256 of the sum) or a lost bounce weight would change.
-    EXPECT_NEAR(chained / expected, 1.0, 1e-4);
+    // meet the wall at the direct rays' points to float rounding. Its float evaluation is not
+    // that exact: D(h) near its peak moves by 2δ/α relative for a half vector rounded by δ
+    // (about 10⁻⁷ rad), 2·10⁻³ per point at α = 10⁻⁴, which 256 points average to about 10⁻⁴
+    // (measured 0.82·10⁻⁴ under GCC 12, 1.25·10⁻⁴ under clang 14); 4·10⁻⁴ is three times that
+    // and far below what a missed point (1/256 of the sum) or a lost bounce weight would change.
+    EXPECT_NEAR(chained / expected, 1.0, 4e-4);
     // Without chains the points lie on the mirror, which a point VPL does not light.
     EXPECT_LT(unchained, 1e-3 * expected);
 }

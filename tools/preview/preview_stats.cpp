@@ -1,14 +1,19 @@
 #include "tools/preview/preview_stats.h"
 
 #include <algorithm>
+#include <cstdarg>
 #include <cstdio>
 
 namespace mvpl::preview {
 namespace {
 
-std::string format(const char* fmt, auto... args) {
+// printf's checks apply to the callers' formats (-Wformat under both GCC and clang).
+__attribute__((format(printf, 1, 2))) std::string format(const char* fmt, ...) {
     char buf[256];
-    std::snprintf(buf, sizeof buf, fmt, args...);
+    va_list args;
+    va_start(args, fmt);
+    std::vsnprintf(buf, sizeof buf, fmt, args);
+    va_end(args);
     return buf;
 }
 
