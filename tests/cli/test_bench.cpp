@@ -98,34 +98,34 @@ void expect_consistent_render(const json& r, const json& paths, const std::strin
               r["render_wall_s"].get<double>() * r["devices"].get<double>());
 }
 
-class Bench : public ::testing::Test {
-protected:
-    // One tiny run with --sweep shared by the tests: 32², 16² shadow faces, 16 light paths.
-    static void SetUpTestSuite() {
-        s_json_path = (std::filesystem::temp_directory_path() /
-                       ("mvpl_bench_" + std::to_string(::getpid()) + ".json"))
-                          .string();
-        s_result =
-            test::run_mvpl_gpu("bench " + shell_quote(kCbox) +
-                               " --res 32x24 --shadow-res 16 --batch 8 --vpls 16 --repeat 1 --sweep"
-                               " --json " +
-                               shell_quote(s_json_path));
-        std::ifstream in(s_json_path);
-        std::stringstream text;
-        text << in.rdbuf();
-        s_text = text.str();
-        std::filesystem::remove(s_json_path);
-    }
-
-    static inline std::string s_json_path;
-    static inline test::CommandResult s_result;
-    static inline std::string s_text;
+// One tiny run with --sweep, checked by the three functions below in one test (each test is a
+// process of its own under ctest: three tests would run it three times): 32², 16² shadow faces,
+// 16 light paths.
+struct SweepRun {
+    test::CommandResult result;
+    std::string text;  // the JSON file
 };
 
-TEST_F(Bench, WritesValidJsonWithPositiveNumbers) {
-    ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
+SweepRun run_sweep() {
+    const std::string json_path = (std::filesystem::temp_directory_path() /
+                                   ("mvpl_bench_" + std::to_string(::getpid()) + ".json"))
+                                      .string();
+    SweepRun run;
+    run.result = test::run_mvpl_gpu("bench " + shell_quote(kCbox) +
+                                    " --res 32x24 --shadow-res 16 --batch 8 --vpls 16 --repeat 1"
+                                    " --sweep --json " +
+                                    shell_quote(json_path));
+    std::ifstream in(json_path);
+    std::stringstream text;
+    text << in.rdbuf();
+    run.text = text.str();
+    std::filesystem::remove(json_path);
+    return run;
+}
+
+void expect_valid_json_with_positive_numbers(const SweepRun& run) {
     json j;
-    ASSERT_NO_THROW(j = json::parse(s_text)) << s_text;
+    ASSERT_NO_THROW(j = json::parse(run.text)) << run.text;
     expect_positive_numbers(j, "bench");
     EXPECT_EQ(j["scene"], kCbox);
     EXPECT_EQ(j["repeat"], 1);
@@ -139,29 +139,8 @@ TEST_F(Bench, WritesValidJsonWithPositiveNumbers) {
     EXPECT_EQ(j["render"]["batches_per_position"], 2);
 }
 
-// --batches-per-position N: N batches share each G-buffer (expect_consistent_render counts them).
-TEST(BenchPositions, BatchesShareAGBufferAsAsked) {
-    const std::string json_path = (std::filesystem::temp_directory_path() /
-                                   ("mvpl_bench_bpp_" + std::to_string(::getpid()) + ".json"))
-                                      .string();
-    const test::CommandResult r = test::run_mvpl_gpu(
-        "bench " + shell_quote(kCbox) +
-        " --res 32x24 --shadow-res 16 --batch 4 --vpls 16 --repeat 1 --batches-per-position 3"
-        " --quiet --json " +
-        shell_quote(json_path));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    std::ifstream in(json_path);
-    const json j = json::parse(in);
-    std::filesystem::remove(json_path);
-    EXPECT_EQ(j["render"]["batches_per_position"], 3);
-    // 16 paths leave more than 12 VPLs: at least two positions of 12.
-    EXPECT_GE(j["render"]["g_buffers"].get<int>(), 2);
-    expect_consistent_render(j["render"], j["light_paths"], "render");
-}
-
-TEST_F(Bench, RatesAgreeWithCountsAndTimes) {
-    ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
-    const json j = json::parse(s_text);
+void expect_rates_agree_with_counts_and_times(const SweepRun& run) {
+    const json j = json::parse(run.text);
     const json& paths = j["light_paths"];
     // Each path leaves at least its emitter VPL.
     EXPECT_GE(paths["vpls"].get<int64_t>(), paths["paths"].get<int64_t>());
@@ -181,43 +160,8 @@ TEST_F(Bench, RatesAgreeWithCountsAndTimes) {
     EXPECT_GE(j["memory"]["peak_device_bytes"].get<double>(), 32.0 * 24.0 * 16.0);
 }
 
-// --pool (row-column sampling, engine/manylights): the main render shades each pool's
-// representatives, reported beside the same VPLs shaded one by one; per VPL the rates count the
-// representatives, and the effective rate the VPLs they stand for; the reduced matrix, asked on
-// the GPU, is reported as the GPU's.
-TEST(BenchRowColumn, ReportsRepresentativesBesideEveryVplShaded) {
-    const std::string json_path = (std::filesystem::temp_directory_path() /
-                                   ("mvpl_bench_rc_" + std::to_string(::getpid()) + ".json"))
-                                      .string();
-    const test::CommandResult r = test::run_mvpl_gpu(
-        "bench " + shell_quote(kCbox) +
-        " --res 32x24 --shadow-res 16 --batch 8 --vpls 64 --repeat 1 --pool 64 --rows 16"
-        " --clusters 8 --matrix gpu --quiet --json " +
-        shell_quote(json_path));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    std::ifstream in(json_path);
-    const json j = json::parse(in);
-    std::filesystem::remove(json_path);
-    const json& main = j["render"];
-    ASSERT_TRUE(main.contains("row_column")) << main.dump();
-    EXPECT_EQ(main["row_column"]["matrix"], "gpu");
-    const double vpls = j["light_paths"]["vpls"].get<double>();
-    const double reps = main["row_column"]["representatives"].get<double>();
-    // 64 paths leave more than 64 VPLs: at least two pools of at most 8 representatives each.
-    EXPECT_GT(vpls, 64.0);
-    EXPECT_GE(reps, 2.0);
-    EXPECT_LE(reps, 8.0 * std::ceil(vpls / 64.0));
-    const double seconds = main["end_to_end_s"].get<double>();
-    expect_rel(main["end_to_end_vpls_per_s"], reps / seconds, "representatives/s");
-    expect_rel(main["effective_vpls_per_s"], vpls / seconds, "effective VPL/s");
-    ASSERT_EQ(j["sweep"].size(), 1u);
-    EXPECT_FALSE(j["sweep"][0].contains("row_column"));
-    expect_consistent_render(j["sweep"][0], j["light_paths"], "every VPL");
-}
-
-TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
-    ASSERT_EQ(s_result.exit_code, 0) << s_result.err;
-    const json j = json::parse(s_text);
+void expect_sweep_covers_batches_and_shadow_resolutions(const SweepRun& run) {
+    const json j = json::parse(run.text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
     // specular chains, levels of detail, back-face culling of solids, the other device count.
@@ -266,10 +210,81 @@ TEST_F(Bench, SweepCoversBatchesAndShadowResolutions) {
     // Hemicubes only ever remove texels from a face.
     EXPECT_LE(j["render"]["shadow_texels_per_vpl"].get<double>(),
               j["sweep"][17]["shadow_texels_per_vpl"].get<double>());
-    EXPECT_NE(s_result.out.find("levers"), std::string::npos) << s_result.out;
+    EXPECT_NE(run.result.out.find("levers"), std::string::npos) << run.result.out;
     // The table for people: a header and one row per configuration.
-    EXPECT_NE(s_result.out.find("end to end"), std::string::npos) << s_result.out;
-    EXPECT_NE(s_result.out.find("batch  shadow"), std::string::npos) << s_result.out;
+    EXPECT_NE(run.result.out.find("end to end"), std::string::npos) << run.result.out;
+    EXPECT_NE(run.result.out.find("batch  shadow"), std::string::npos) << run.result.out;
+}
+
+TEST(Bench, SweepWritesValidJsonWhoseRatesAndConfigurationsAgree) {
+    const SweepRun run = run_sweep();
+    ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+    {
+        SCOPED_TRACE("valid JSON, positive numbers");
+        expect_valid_json_with_positive_numbers(run);
+    }
+    {
+        SCOPED_TRACE("rates against counts and times");
+        expect_rates_agree_with_counts_and_times(run);
+    }
+    {
+        SCOPED_TRACE("the sweep's configurations");
+        expect_sweep_covers_batches_and_shadow_resolutions(run);
+    }
+}
+
+// --batches-per-position N: N batches share each G-buffer (expect_consistent_render counts them).
+TEST(BenchPositions, BatchesShareAGBufferAsAsked) {
+    const std::string json_path = (std::filesystem::temp_directory_path() /
+                                   ("mvpl_bench_bpp_" + std::to_string(::getpid()) + ".json"))
+                                      .string();
+    const test::CommandResult r = test::run_mvpl_gpu(
+        "bench " + shell_quote(kCbox) +
+        " --res 32x24 --shadow-res 16 --batch 4 --vpls 16 --repeat 1 --batches-per-position 3"
+        " --quiet --json " +
+        shell_quote(json_path));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(json_path);
+    const json j = json::parse(in);
+    std::filesystem::remove(json_path);
+    EXPECT_EQ(j["render"]["batches_per_position"], 3);
+    // 16 paths leave more than 12 VPLs: at least two positions of 12.
+    EXPECT_GE(j["render"]["g_buffers"].get<int>(), 2);
+    expect_consistent_render(j["render"], j["light_paths"], "render");
+}
+
+// --pool (row-column sampling, engine/manylights): the main render shades each pool's
+// representatives, reported beside the same VPLs shaded one by one; per VPL the rates count the
+// representatives, and the effective rate the VPLs they stand for; the reduced matrix, asked on
+// the GPU, is reported as the GPU's.
+TEST(BenchRowColumn, ReportsRepresentativesBesideEveryVplShaded) {
+    const std::string json_path = (std::filesystem::temp_directory_path() /
+                                   ("mvpl_bench_rc_" + std::to_string(::getpid()) + ".json"))
+                                      .string();
+    const test::CommandResult r = test::run_mvpl_gpu(
+        "bench " + shell_quote(kCbox) +
+        " --res 32x24 --shadow-res 16 --batch 8 --vpls 64 --repeat 1 --pool 64 --rows 16"
+        " --clusters 8 --matrix gpu --quiet --json " +
+        shell_quote(json_path));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    std::ifstream in(json_path);
+    const json j = json::parse(in);
+    std::filesystem::remove(json_path);
+    const json& main = j["render"];
+    ASSERT_TRUE(main.contains("row_column")) << main.dump();
+    EXPECT_EQ(main["row_column"]["matrix"], "gpu");
+    const double vpls = j["light_paths"]["vpls"].get<double>();
+    const double reps = main["row_column"]["representatives"].get<double>();
+    // 64 paths leave more than 64 VPLs: at least two pools of at most 8 representatives each.
+    EXPECT_GT(vpls, 64.0);
+    EXPECT_GE(reps, 2.0);
+    EXPECT_LE(reps, 8.0 * std::ceil(vpls / 64.0));
+    const double seconds = main["end_to_end_s"].get<double>();
+    expect_rel(main["end_to_end_vpls_per_s"], reps / seconds, "representatives/s");
+    expect_rel(main["effective_vpls_per_s"], vpls / seconds, "effective VPL/s");
+    ASSERT_EQ(j["sweep"].size(), 1u);
+    EXPECT_FALSE(j["sweep"][0].contains("row_column"));
+    expect_consistent_render(j["sweep"][0], j["light_paths"], "every VPL");
 }
 
 // A scene with near-mirror metals traces specular chains in bench as in render: one chain per

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -95,19 +96,38 @@ std::array<std::string, 2> expect_agrees_with_path_tracer(const fs::path& model,
     return {vpl[0], pt[0]};
 }
 
-TEST(SampleModels, EveryModelRendersFiniteOnTheGpuAndWithThePathTracer) {
-    const std::vector<fs::path> models = sample_models();
-    if (models.empty()) GTEST_SKIP() << "../shared/gltf-samples is not beside this checkout";
-    const fs::path dir = sample_dir();
-    for (const fs::path& model : models)
-        expect_agrees_with_path_tracer(model, dir);
+// One test per model, so that the test runner spreads them over its jobs; the material
+// extensions' models (UnlitTest, SpecGlossVsMetalRough) are rendered by the test after these.
+std::vector<fs::path> models_without_extensions() {
+    std::vector<fs::path> out;
+    for (const fs::path& model : sample_models()) {
+        const std::string name = model.stem().string();
+        if (name != "UnlitTest" && name != "SpecGlossVsMetalRough") out.push_back(model);
+    }
+    return out;
 }
 
-// KHR_materials_pbrSpecularGlossiness and KHR_materials_unlit (issue 32, item 6), once more on
-// their own so that they can be run alone. UnlitTest shows its base colours and nothing else:
-// every pixel of both images is a mix of black, orange (1, k, 0) and blue (0, k, 1), k = 0.2176
-// (anti-aliased edges), i.e. g = k (r + b) and r + b ≤ 1, to float precision (no shading, no
-// noise).
+class EveryModel : public ::testing::TestWithParam<fs::path> {};
+
+TEST_P(EveryModel, RendersFiniteOnTheGpuAndWithThePathTracer) {
+    expect_agrees_with_path_tracer(GetParam(), sample_dir());
+}
+
+INSTANTIATE_TEST_SUITE_P(SampleModels, EveryModel, ::testing::ValuesIn(models_without_extensions()),
+                         [](const ::testing::TestParamInfo<fs::path>& info) {
+                             std::string name = info.param.stem().string();
+                             for (char& c : name)
+                                 if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                             return name;
+                         });
+// Without ../shared/gltf-samples there are no models, hence no instances.
+GTEST_ALLOW_UNINSTANTIATED_PARAMETERIZED_TEST(EveryModel);
+
+// KHR_materials_pbrSpecularGlossiness and KHR_materials_unlit (issue 32, item 6): their models
+// against the path tracer as above, and UnlitTest's colours. UnlitTest shows its base colours and
+// nothing else: every pixel of both images is a mix of black, orange (1, k, 0) and blue (0, k, 1),
+// k = 0.2176 (anti-aliased edges), i.e. g = k (r + b) and r + b ≤ 1, to float precision (no
+// shading, no noise).
 TEST(SampleModels, MaterialExtensionModelsAgreeWithThePathTracer) {
     const fs::path root = fs::path(MVPL_SOURCE_DIR) / ".." / "shared" / "gltf-samples";
     const fs::path unlit = root / "UnlitTest" / "glTF" / "UnlitTest.gltf";

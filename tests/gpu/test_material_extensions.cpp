@@ -26,7 +26,7 @@ namespace {
 using MaterialExtensionsTest = testing::GpuTest;
 using namespace mvpl::material;
 
-constexpr uint32_t kPoints = 4096;
+constexpr uint32_t kExtensionPoints = 4096;
 constexpr uint32_t kValues = 14;  // per point and material: closure (11), emission (3)
 
 struct PointIn {
@@ -124,15 +124,15 @@ TEST_F(MaterialExtensionsTest, SpecGlossAndUnlitAgreeWithTheCpuGraphs) {
     ASSERT_EQ(code.textures, (std::vector<int>{0, 1}));
 
     std::vector<PointIn> points;
-    for (uint32_t i = 0; i < kPoints; ++i) {
+    for (uint32_t i = 0; i < kExtensionPoints; ++i) {
         points.push_back({Vec2(3.0f * u(rng) - 1.0f, 3.0f * u(rng) - 1.0f), Vec2(0.0f),
                           Vec4(u(rng), u(rng), u(rng), 1.0f)});
     }
     Buffer in(context(), points.size() * sizeof(PointIn), BufferUsage::storage,
               MemoryLocation::device, "surface points");
     in.upload(points);
-    Buffer out(context(), size_t(kPoints) * 2 * kValues * sizeof(float), BufferUsage::storage,
-               MemoryLocation::device, "closures");
+    Buffer out(context(), size_t(kExtensionPoints) * 2 * kValues * sizeof(float),
+               BufferUsage::storage, MemoryLocation::device, "closures");
     std::vector<std::unique_ptr<Image>> images;
     for (const scene::Texture& t : textures) {
         images.push_back(std::make_unique<Image>(
@@ -148,13 +148,13 @@ TEST_F(MaterialExtensionsTest, SpecGlossAndUnlitAgreeWithTheCpuGraphs) {
          sizeof(uint32_t)},
         "material extensions");
     context().submit_and_wait([&](CommandList& cmd) {
-        cmd.dispatch(pipeline, {&in, &out, images[0].get(), images[1].get()}, push_bytes(kPoints),
-                     (kPoints + 63) / 64);
+        cmd.dispatch(pipeline, {&in, &out, images[0].get(), images[1].get()},
+                     push_bytes(kExtensionPoints), (kExtensionPoints + 63) / 64);
     });
-    const std::vector<float> gpu = out.download<float>(size_t(kPoints) * 2 * kValues);
+    const std::vector<float> gpu = out.download<float>(size_t(kExtensionPoints) * 2 * kValues);
 
     int failures = 0;
-    for (uint32_t i = 0; i < kPoints; ++i) {
+    for (uint32_t i = 0; i < kExtensionPoints; ++i) {
         SurfacePoint p;
         p.uv0 = p.uv1 = points[i].uv;
         p.color = points[i].color;

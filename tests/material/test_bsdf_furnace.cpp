@@ -84,7 +84,7 @@ std::vector<FurnaceCase> furnace_cases() {
     return cases;
 }
 
-std::string case_name(const testing::TestParamInfo<FurnaceCase>& info) {
+std::string furnace_case_name(const testing::TestParamInfo<FurnaceCase>& info) {
     std::string s = info.param.name;
     for (char& ch : s) {
         if (!std::isalnum(static_cast<unsigned char>(ch))) ch = '_';
@@ -92,7 +92,8 @@ std::string case_name(const testing::TestParamInfo<FurnaceCase>& info) {
     return s;
 }
 
-INSTANTIATE_TEST_SUITE_P(Closures, WhiteFurnace, testing::ValuesIn(furnace_cases()), case_name);
+INSTANTIATE_TEST_SUITE_P(Closures, WhiteFurnace, testing::ValuesIn(furnace_cases()),
+                         furnace_case_name);
 
 TEST(Furnace, LambertianWhiteIsExactlyOne) {
     const Bsdf bsdf(test::lambertian(Rgb(1.0f)));

@@ -16,7 +16,7 @@ namespace {
 
 using ShadingTest = gpu::testing::GpuTest;
 
-constexpr int kSize = 48;
+constexpr int kShadingSize = 48;
 
 scene::Scene floor_scene(const scene::Material& material) {
     scene::Scene s;
@@ -42,7 +42,7 @@ TEST_F(ShadingTest, APointVplOverADiffusePlaneGivesTheAnalyticDirectLight) {
 
     VplRenderer renderer(context(), scene);
     RenderOptions options;
-    options.width = options.height = kSize;
+    options.width = options.height = kShadingSize;
     options.shadow_resolution = 32;
     options.batch = 4;
     options.clamp = 0.0f;
@@ -50,10 +50,10 @@ TEST_F(ShadingTest, APointVplOverADiffusePlaneGivesTheAnalyticDirectLight) {
 
     int lit = 0;
     float worst = 0.0f;
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
+    for (int y = 0; y < kShadingSize; ++y) {
+        for (int x = 0; x < kShadingSize; ++x) {
             const std::optional<testing::CpuHit> hit =
-                testing::cast_camera_ray(scene, kSize, kSize, x, y);
+                testing::cast_camera_ray(scene, kShadingSize, kShadingSize, x, y);
             if (!hit) {
                 EXPECT_EQ(image.at(x, y), Rgb(0.0f));
                 continue;
@@ -67,7 +67,7 @@ TEST_F(ShadingTest, APointVplOverADiffusePlaneGivesTheAnalyticDirectLight) {
             worst = std::max(worst, relative_error(image.at(x, y), expected));
         }
     }
-    EXPECT_GT(lit, kSize * kSize / 2);
+    EXPECT_GT(lit, kShadingSize * kShadingSize / 2);
     EXPECT_LT(worst, 1e-3f);
     RecordProperty("worst_relative_error", std::to_string(worst));
 }
@@ -122,7 +122,7 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
 
     VplRenderer renderer(context(), scene);
     RenderOptions options;
-    options.width = options.height = kSize;
+    options.width = options.height = kShadingSize;
     options.shadow_resolution = 32;
     options.batch = 3;      // two batches: accumulation across batches is part of the test
     options.clamp = 0.05f;  // d_min = 0.05 · diagonal ≈ 0.28: active for the nearby pixels
@@ -140,14 +140,14 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
     int compared = 0;
     int lit = 0;
     float worst = 0.0f;
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
-            if (!testing::cast_camera_ray(scene, kSize, kSize, x, y)) continue;
+    for (int y = 0; y < kShadingSize; ++y) {
+        for (int x = 0; x < kShadingSize; ++x) {
+            if (!testing::cast_camera_ray(scene, kShadingSize, kShadingSize, x, y)) continue;
             Rgb expected(0.0f);
             for (size_t i = 0; i < vpls.size(); ++i) {
                 const Vec2 at = schedule.position(schedule.position_of(i));
                 const std::optional<testing::CpuHit> hit =
-                    testing::cast_camera_ray(scene, kSize, kSize, x, y, at);
+                    testing::cast_camera_ray(scene, kShadingSize, kShadingSize, x, y, at);
                 if (!hit) continue;
                 expected += testing::cpu_contribution(vpls[i], hit->p, hit->ng, receiver,
                                                       scene.camera.position(), d_min, vsl_radius);
@@ -157,7 +157,7 @@ TEST_F(ShadingTest, GlossySurfaceAreaSpotAndDirectionalVplsMatchTheCpuFormulas) 
             worst = std::max(worst, relative_error(image.at(x, y), expected));
         }
     }
-    EXPECT_GT(compared, kSize * kSize / 2);
+    EXPECT_GT(compared, kShadingSize * kShadingSize / 2);
     EXPECT_GT(lit, compared * 9 / 10) << "the comparison must not be of zeros";
     EXPECT_LT(worst, 1e-3f);
     RecordProperty("worst_relative_error", std::to_string(worst));
@@ -198,7 +198,7 @@ TEST_F(ShadingTest, CloseGlossyPairsAreClampedOnlyInTheirDiffuseProduct) {
 
     VplRenderer renderer(context(), scene);
     RenderOptions options;
-    options.width = options.height = kSize;
+    options.width = options.height = kShadingSize;
     options.shadow_resolution = 32;
     options.batch = 2;
     options.clamp = 0.2f;
@@ -211,14 +211,14 @@ TEST_F(ShadingTest, CloseGlossyPairsAreClampedOnlyInTheirDiffuseProduct) {
     const material::ClosureParams receiver = testing::closure_of(glossy);
     int compared = 0, released = 0;
     float worst = 0.0f;
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
-            if (!testing::cast_camera_ray(scene, kSize, kSize, x, y)) continue;
+    for (int y = 0; y < kShadingSize; ++y) {
+        for (int x = 0; x < kShadingSize; ++x) {
+            if (!testing::cast_camera_ray(scene, kShadingSize, kShadingSize, x, y)) continue;
             Rgb expected(0.0f), all_clamped(0.0f);
             for (size_t i = 0; i < vpls.size(); ++i) {
                 const Vec2 at = schedule.position(schedule.position_of(i));
                 const std::optional<testing::CpuHit> hit =
-                    testing::cast_camera_ray(scene, kSize, kSize, x, y, at);
+                    testing::cast_camera_ray(scene, kShadingSize, kShadingSize, x, y, at);
                 if (!hit) continue;
                 const Vec3 eye = scene.camera.position();
                 expected += testing::cpu_contribution(vpls[i], hit->p, hit->ng, receiver, eye,
@@ -232,7 +232,7 @@ TEST_F(ShadingTest, CloseGlossyPairsAreClampedOnlyInTheirDiffuseProduct) {
             worst = std::max(worst, relative_error(image.at(x, y), expected));
         }
     }
-    EXPECT_GT(compared, kSize * kSize / 2);
+    EXPECT_GT(compared, kShadingSize * kShadingSize / 2);
     // The released glossy light shows in a good share of the pixels (measured: see the record).
     EXPECT_GT(released, compared / 20);
     EXPECT_LT(worst, 1e-3f);
@@ -305,7 +305,7 @@ TEST_F(ShadingTest, AVplBelowTheGeometricSurfaceLightsNothingWhateverTheShadingN
     scene.meshes[0].normals.assign(4, Vec3(std::sin(tilt), std::cos(tilt), 0.0f));
     VplRenderer renderer(context(), scene);
     RenderOptions options;
-    options.width = options.height = kSize;
+    options.width = options.height = kShadingSize;
     options.shadow_resolution = 64;
     options.clamp = 0.0f;
     for (const float height : {-0.5f, 0.5f}) {
@@ -315,14 +315,14 @@ TEST_F(ShadingTest, AVplBelowTheGeometricSurfaceLightsNothingWhateverTheShadingN
         vpl.power = Rgb(20.0f);
         const Image image = renderer.render({{vpl}}, options);
         int lit = 0;
-        for (int y = 0; y < kSize; ++y) {
-            for (int x = 0; x < kSize; ++x)
+        for (int y = 0; y < kShadingSize; ++y) {
+            for (int x = 0; x < kShadingSize; ++x)
                 lit += max_component(image.at(x, y)) > 0.0f;
         }
         if (height < 0.0f) {
             EXPECT_EQ(lit, 0) << "pixels lit from below the plane";
         } else {
-            EXPECT_GT(lit, kSize * kSize / 4);
+            EXPECT_GT(lit, kShadingSize * kShadingSize / 4);
         }
     }
 }

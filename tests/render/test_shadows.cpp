@@ -15,7 +15,7 @@ namespace {
 
 using ShadowTest = gpu::testing::GpuTest;
 
-constexpr int kSize = 64;
+constexpr int kShadowSize = 64;
 constexpr uint32_t kShadowResolution = 64;
 constexpr float kOccluderHalf = 0.25f;
 constexpr float kOccluderHeight = 1.0f;
@@ -42,7 +42,7 @@ light::Vpl point_vpl() {
 
 RenderOptions small_options() {
     RenderOptions options;
-    options.width = options.height = kSize;
+    options.width = options.height = kShadowSize;
     options.shadow_resolution = kShadowResolution;
     options.batch = 8;
     options.clamp = 0.0f;
@@ -66,10 +66,10 @@ ShadowStats classify(const scene::Scene& scene, const Image& image, const light:
                      const LightPoint& light_point, const scene::Mesh& grown,
                      const scene::Mesh& shrunk) {
     ShadowStats stats;
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
+    for (int y = 0; y < kShadowSize; ++y) {
+        for (int x = 0; x < kShadowSize; ++x) {
             const std::optional<testing::CpuHit> hit =
-                testing::cast_camera_ray(scene, kSize, kSize, x, y);
+                testing::cast_camera_ray(scene, kShadowSize, kShadowSize, x, y);
             if (!hit || hit->mesh != 0) continue;
             const Rgb expected = testing::cpu_contribution(vpl, hit->p, hit->ng,
                                                            testing::closure_of(scene.materials[0]),
@@ -190,8 +190,8 @@ TEST_F(ShadowTest, TheImageDoesNotDependOnTheSceneScale) {
     }
     for (size_t i = 1; i < images.size(); ++i) {
         int differ = 0;
-        for (int y = 0; y < kSize; ++y) {
-            for (int x = 0; x < kSize; ++x) {
+        for (int y = 0; y < kShadowSize; ++y) {
+            for (int x = 0; x < kShadowSize; ++x) {
                 const Rgb a = images[0].at(x, y);
                 const Rgb b = images[i].at(x, y);
                 const float scale = std::max(max_component(a), max_component(b));

@@ -27,7 +27,7 @@ namespace {
 
 using ThinWallTest = gpu::testing::GpuTest;
 
-constexpr int kSize = 128;
+constexpr int kWallSize = 128;
 constexpr float kHeight = 2.5f;
 constexpr int kWallMesh = 3;
 
@@ -96,7 +96,7 @@ std::vector<light::Vpl> thin_wall_vpls() {
 
 RenderOptions thin_wall_options(uint32_t shadow_resolution) {
     RenderOptions options;
-    options.width = options.height = kSize;
+    options.width = options.height = kWallSize;
     options.shadow_resolution = shadow_resolution;
     options.clamp = 0.0f;
     options.jitter = false;
@@ -200,10 +200,10 @@ Classified classify(const scene::Scene& scene, const Image& image, const light::
                     float texel, float wall_x) {
     Classified c;
     const float diagonal = scene.bounds().diagonal();
-    for (int y = 0; y < kSize; ++y) {
-        for (int x = 0; x < kSize; ++x) {
+    for (int y = 0; y < kWallSize; ++y) {
+        for (int x = 0; x < kWallSize; ++x) {
             const std::optional<testing::CpuHit> hit =
-                testing::cast_camera_ray(scene, kSize, kSize, x, y);
+                testing::cast_camera_ray(scene, kWallSize, kWallSize, x, y);
             if (!hit || hit->mesh == kWallMesh) continue;
             const Rgb expected = testing::cpu_contribution(vpl, hit->p, hit->ng,
                                                            testing::closure_of(scene.materials[0]),

@@ -25,7 +25,7 @@
 namespace mvpl {
 namespace {
 
-constexpr int kRes = 16, kBlock = 4, kBatches = 16, kSpp = 2048, kDepth = 4;
+constexpr int kOracleRes = 16, kBlock = 4, kBatches = 16, kSpp = 2048, kDepth = 4;
 
 scene::Scene floor_and_panel() {
     scene::Scene s;
@@ -45,19 +45,19 @@ void expect_oracle_matches_path_tracer(const scene::Scene& s) {
     o.seed = 7;
     // At the pixel centres, where the path tracer below is evaluated (no sub-pixel jitter).
     const test::BatchedImage oracle =
-        test::batched_oracle(s, o, kBatches, kRes, kDepth, /*jitter=*/false);
+        test::batched_oracle(s, o, kBatches, kOracleRes, kDepth, /*jitter=*/false);
 
     const trace::Accel accel(s);
     const light::LightSampler lights(s);
     const reference::PathTracer tracer(s, accel, lights);
     // Per block: the sum and the sum of squares of the per-sample block contributions.
-    constexpr int kBlocks = kRes / kBlock;
+    constexpr int kBlocks = kOracleRes / kBlock;
     std::vector<DVec3> sum(kBlocks * kBlocks, DVec3(0.0)), sum2(kBlocks * kBlocks, DVec3(0.0));
-    for (int y = 0; y < kRes; ++y) {
-        for (int x = 0; x < kRes; ++x) {
-            const scene::CameraRay cr =
-                scene::generate_camera_ray(s.camera, kRes, kRes, Vec2(x + 0.5f, y + 0.5f));
-            Rng rng(11, uint64_t(y * kRes + x));
+    for (int y = 0; y < kOracleRes; ++y) {
+        for (int x = 0; x < kOracleRes; ++x) {
+            const scene::CameraRay cr = scene::generate_camera_ray(s.camera, kOracleRes, kOracleRes,
+                                                                   Vec2(x + 0.5f, y + 0.5f));
+            Rng rng(11, uint64_t(y * kOracleRes + x));
             const int b = (y / kBlock) * kBlocks + x / kBlock;
             for (int i = 0; i < kSpp; ++i) {
                 const DVec3 L(tracer.radiance(trace::Ray{cr.origin, cr.direction}, rng, kDepth, 5));

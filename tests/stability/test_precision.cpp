@@ -20,7 +20,7 @@ namespace {
 
 using PrecisionTest = gpu::testing::GpuTest;
 
-int non_finite_pixels(const Image& image) {
+int count_non_finite(const Image& image) {
     int count = 0;
     for (const Rgb& c : image.pixels())
         count += std::isfinite(c.r) && std::isfinite(c.g) && std::isfinite(c.b) ? 0 : 1;
@@ -37,8 +37,8 @@ TEST_F(PrecisionTest, NearMirrorAtGrazingAnglesAgreesWithTheOracle) {
     const test::VplRenderSettings settings{.res = 64, .shadow_res = 256, .clamp = 0.05f};
     const Image gpu = test::gpu_render(context(), s, vpls, settings);
     const Image oracle = test::oracle_render(s, vpls, settings);
-    EXPECT_EQ(non_finite_pixels(gpu), 0);
-    EXPECT_EQ(non_finite_pixels(oracle), 0);
+    EXPECT_EQ(count_non_finite(gpu), 0);
+    EXPECT_EQ(count_non_finite(oracle), 0);
     EXPECT_GT(oracle.mean().g, 0.0f);
     const ImageError error = compare_images(gpu, oracle);
     EXPECT_LT(error.rel_mse, 1.25 * 2.0 / 256.0);
@@ -88,9 +88,9 @@ TEST_F(PrecisionTest, VplTouchingItsReceiverWithClampingOffIsFinite) {
         renderer.accumulate(vpls);
         Image image;
         EXPECT_NO_THROW(image = renderer.resolve(1.0)) << "shadows " << shadows;
-        EXPECT_EQ(non_finite_pixels(image), 0);
+        EXPECT_EQ(count_non_finite(image), 0);
     }
-    EXPECT_EQ(non_finite_pixels(test::oracle_render(s, {vpls}, {.res = kRes, .clamp = 0.0f})), 0);
+    EXPECT_EQ(count_non_finite(test::oracle_render(s, {vpls}, {.res = kRes, .clamp = 0.0f})), 0);
 }
 
 // 10⁵ point VPLs with powers over six orders of magnitude, unshadowed, summed in float by the GPU
