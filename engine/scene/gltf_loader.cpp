@@ -60,6 +60,7 @@ Scene load_gltf(const std::string& path) {
             scene.warnings.push_back("extension " + name + " is not supported; it is ignored");
     }
 
+    textures.decode_pending();  // the texels, before anything reads them
     if (scene.meshes.empty()) doc.fail("no triangle geometry");
     if (!scene.has_camera) scene.camera = frame_bounds(scene.bounds());
     check_emitted_power(

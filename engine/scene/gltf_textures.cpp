@@ -5,9 +5,11 @@
 #include <array>
 #include <climits>
 #include <cstring>
+#include <exception>
 #include <memory>
 
 #include "engine/core/image.h"
+#include "engine/core/parallel.h"
 #include "engine/scene/gltf_diagnose.h"
 
 namespace mvpl::scene::gltf {
@@ -203,13 +205,14 @@ int TextureCache::get(int index, ColorSpace space, const std::string& usage) {
     const auto key = std::make_pair(index, space);
     const auto it = m_entries.find(key);
     if (it != m_entries.end()) return it->second;
-    m_textures.push_back(decode(index, space));
+    m_textures.push_back(describe(index));
     const int entry = int(m_textures.size()) - 1;
     m_entries.emplace(key, entry);
+    m_pending.push_back({entry, index, space});
     return entry;
 }
 
-Texture TextureCache::decode(int index, ColorSpace space) {
+Texture TextureCache::describe(int index) {
     const tinygltf::Texture& gltf_texture = m_doc.model.textures[size_t(index)];
     const std::string texture_name = "texture " + std::to_string(index);
     Texture texture;
@@ -234,7 +237,6 @@ Texture TextureCache::decode(int index, ColorSpace space) {
     if (m_total_texels + texels > kMaxTotalTexels) {
         m_doc.fail("the textures exceed " + std::to_string(kMaxTotalTexels) + " texels in all");
     }
-    const Pixels pixels = decode_pixels(m_doc, image_name, bytes, length, width, height);
     m_total_texels += texels;
 
     texture.name = !image.name.empty()                                      ? image.name
@@ -242,8 +244,33 @@ Texture TextureCache::decode(int index, ColorSpace space) {
                                                                             : texture_name;
     texture.width = width;
     texture.height = height;
-    fill_texels(pixels, space, texture);
     return texture;
+}
+
+void TextureCache::decode(const Pending& pending) {
+    const int source = m_doc.model.textures[size_t(pending.index)].source;
+    const tinygltf::Image& image = m_doc.model.images[size_t(source)];
+    Texture& texture = m_textures[size_t(pending.entry)];
+    const Pixels pixels =
+        decode_pixels(m_doc, "image " + std::to_string(source), image.image.data(),
+                      int(image.image.size()), texture.width, texture.height);
+    fill_texels(pixels, pending.space, texture);
+}
+
+void TextureCache::decode_pending() {
+    std::vector<std::exception_ptr> errors(m_pending.size());
+    parallel_for(int64_t(m_pending.size()), 1, [&](int64_t begin, int64_t end) {
+        for (int64_t i = begin; i < end; ++i) {
+            try {
+                decode(m_pending[size_t(i)]);
+            } catch (...) {
+                errors[size_t(i)] = std::current_exception();
+            }
+        }
+    });
+    m_pending.clear();
+    for (const std::exception_ptr& error : errors)
+        if (error) std::rethrow_exception(error);
 }
 
 }  // namespace mvpl::scene::gltf

@@ -1,5 +1,6 @@
 #pragma once
-// glTF textures decoded into Scene::textures on first use.
+// glTF textures decoded into Scene::textures: described on first use, their texels decoded
+// together, in parallel, by decode_pending().
 #include <cstdint>
 #include <map>
 #include <string>
@@ -21,15 +22,29 @@ public:
         : m_doc(doc), m_textures(textures) {}
 
     // Index into Scene::textures of glTF texture `index` decoded in `space`; `usage` names the
-    // referring slot in messages.
+    // referring slot in messages. The texture's sampler, size and name are set and checked here;
+    // its texels are left to decode_pending().
     int get(int index, ColorSpace space, const std::string& usage);
 
+    // Decodes the texels of every texture get() has described since, in parallel (a PNG's
+    // inflate is serial, so images are the unit of work); fails with the first texture's
+    // problem, in the order get() saw them, whichever thread met it first.
+    void decode_pending();
+
 private:
-    Texture decode(int index, ColorSpace space);
+    struct Pending {
+        int entry;  // index into m_textures
+        int index;  // glTF texture
+        ColorSpace space;
+    };
+
+    Texture describe(int index);
+    void decode(const Pending& pending);
 
     const Document& m_doc;
     std::vector<Texture>& m_textures;
     std::map<std::pair<int, ColorSpace>, int> m_entries;
+    std::vector<Pending> m_pending;
     uint64_t m_total_texels = 0;
 };
 

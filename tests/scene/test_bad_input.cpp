@@ -76,6 +76,7 @@ const std::map<std::string, std::string> kExpected = {
     {"missing-external-image.gltf", "image 0 file 'missing-image.png' not found"},
     {"image-undecodable.gltf", "image 0 cannot be decoded: corrupt or truncated PNG"},
     {"image-corrupt-jpeg.gltf", "image 0 cannot be decoded: corrupt or truncated JPEG"},
+    {"images-cut-short.gltf", "image 0 cannot be decoded"},
     {"image-webp-as-png.gltf",
      "image 0 cannot be decoded: WebP (EXT_texture_webp), which is not supported"},
     {"image-huge-dimensions.gltf", "16384x16384"},

@@ -462,6 +462,20 @@ def bad_corpus():
     files["image-undecodable.gltf"] = variant(lambda d: (
         textured(d, {"index": 0}),
         d["images"][0].update(uri=png_uri(b"\x89PNG\r\n\x1a\nthis is no image at all"))))
+    # Two images whose headers read and whose zlib streams end early: texture 0's (2048², slow
+    # to inflate) is the one named, though texture 1's (1×1) fails first when the two decode in
+    # parallel: the loader reports the first problem in the order the materials asked for them.
+    def cut_short(width):
+        whole = png(width, width, 3, [90] * (width * width * 3), level=9)
+        stream = whole[41:-16]  # after the signature, IHDR and IDAT's length and tag; before CRC
+        stream = stream[:len(stream) * 9 // 10]
+        return (whole[:33] + struct.pack(">I", len(stream)) + b"IDAT" + stream + b"\0\0\0\0" +
+                whole[-12:])
+    files["images-cut-short.gltf"] = variant(lambda d: (
+        d.update(images=[{"uri": png_uri(cut_short(2048))}, {"uri": png_uri(cut_short(1))}],
+                 textures=[{"source": 0}, {"source": 1}]),
+        set_path(d, ["materials", 0], {"pbrMetallicRoughness": {
+            "baseColorTexture": {"index": 0}, "metallicRoughnessTexture": {"index": 1}}})))
     # Small enough for stb_image's own limit, too big for ours (and the IHDR CRC is left stale,
     # which stb_image does not check).
     huge = png(1, 1, 1, [0])
