@@ -98,22 +98,20 @@ void expect_consistent_render(const json& r, const json& paths, const std::strin
               r["render_wall_s"].get<double>() * r["devices"].get<double>());
 }
 
-// One tiny run with --sweep, checked by the three functions below in one test (each test is a
-// process of its own under ctest: three tests would run it three times): 32², 16² shadow faces,
-// 16 light paths.
-struct SweepRun {
+// `mvpl bench SCENE FLAGS --json FILE` on the GPU: the command's result and the JSON file's text
+// (empty if it wrote none); `tag` keeps the files of tests running side by side apart.
+struct BenchRun {
     test::CommandResult result;
-    std::string text;  // the JSON file
+    std::string text;
 };
 
-SweepRun run_sweep() {
-    const std::string json_path = (std::filesystem::temp_directory_path() /
-                                   ("mvpl_bench_" + std::to_string(::getpid()) + ".json"))
-                                      .string();
-    SweepRun run;
-    run.result = test::run_mvpl_gpu("bench " + shell_quote(kCbox) +
-                                    " --res 32x24 --shadow-res 16 --batch 8 --vpls 16 --repeat 1"
-                                    " --sweep --json " +
+BenchRun run_bench(const std::string& scene, const std::string& flags, const std::string& tag) {
+    const std::string json_path =
+        (std::filesystem::temp_directory_path() /
+         ("mvpl_bench_" + tag + "_" + std::to_string(::getpid()) + ".json"))
+            .string();
+    BenchRun run;
+    run.result = test::run_mvpl_gpu("bench " + shell_quote(scene) + " " + flags + " --json " +
                                     shell_quote(json_path));
     std::ifstream in(json_path);
     std::stringstream text;
@@ -123,7 +121,15 @@ SweepRun run_sweep() {
     return run;
 }
 
-void expect_valid_json_with_positive_numbers(const SweepRun& run) {
+// One tiny run with --sweep, checked by the three functions below in one test (each test is a
+// process of its own under ctest: three tests would run it three times): 32², 16² shadow faces,
+// 16 light paths.
+BenchRun run_sweep() {
+    return run_bench(kCbox, "--res 32x24 --shadow-res 16 --batch 8 --vpls 16 --repeat 1 --sweep",
+                     "sweep");
+}
+
+void expect_valid_json_with_positive_numbers(const BenchRun& run) {
     json j;
     ASSERT_NO_THROW(j = json::parse(run.text)) << run.text;
     expect_positive_numbers(j, "bench");
@@ -139,7 +145,7 @@ void expect_valid_json_with_positive_numbers(const SweepRun& run) {
     EXPECT_EQ(j["render"]["batches_per_position"], 2);
 }
 
-void expect_rates_agree_with_counts_and_times(const SweepRun& run) {
+void expect_rates_agree_with_counts_and_times(const BenchRun& run) {
     const json j = json::parse(run.text);
     const json& paths = j["light_paths"];
     // Each path leaves at least its emitter VPL.
@@ -160,7 +166,7 @@ void expect_rates_agree_with_counts_and_times(const SweepRun& run) {
     EXPECT_GE(j["memory"]["peak_device_bytes"].get<double>(), 32.0 * 24.0 * 16.0);
 }
 
-void expect_sweep_covers_batches_and_shadow_resolutions(const SweepRun& run) {
+void expect_sweep_covers_batches_and_shadow_resolutions(const BenchRun& run) {
     const json j = json::parse(run.text);
     // 5 batch sizes × 3 shadow resolutions, each pair once, then the main configuration with
     // each lever switched: shadow culling, the shadow proxy, hemicubes, VPL culling, interleave,
@@ -217,7 +223,7 @@ void expect_sweep_covers_batches_and_shadow_resolutions(const SweepRun& run) {
 }
 
 TEST(Bench, SweepWritesValidJsonWhoseRatesAndConfigurationsAgree) {
-    const SweepRun run = run_sweep();
+    const BenchRun run = run_sweep();
     ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
     {
         SCOPED_TRACE("valid JSON, positive numbers");
@@ -235,18 +241,13 @@ TEST(Bench, SweepWritesValidJsonWhoseRatesAndConfigurationsAgree) {
 
 // --batches-per-position N: N batches share each G-buffer (expect_consistent_render counts them).
 TEST(BenchPositions, BatchesShareAGBufferAsAsked) {
-    const std::string json_path = (std::filesystem::temp_directory_path() /
-                                   ("mvpl_bench_bpp_" + std::to_string(::getpid()) + ".json"))
-                                      .string();
-    const test::CommandResult r = test::run_mvpl_gpu(
-        "bench " + shell_quote(kCbox) +
-        " --res 32x24 --shadow-res 16 --batch 4 --vpls 16 --repeat 1 --batches-per-position 3"
-        " --quiet --json " +
-        shell_quote(json_path));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    std::ifstream in(json_path);
-    const json j = json::parse(in);
-    std::filesystem::remove(json_path);
+    const BenchRun run = run_bench(
+        kCbox,
+        "--res 32x24 --shadow-res 16 --batch 4 --vpls 16 --repeat 1 --batches-per-position 3"
+        " --quiet",
+        "positions");
+    ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+    const json j = json::parse(run.text);
     EXPECT_EQ(j["render"]["batches_per_position"], 3);
     // 16 paths leave more than 12 VPLs: at least two positions of 12.
     EXPECT_GE(j["render"]["g_buffers"].get<int>(), 2);
@@ -258,18 +259,12 @@ TEST(BenchPositions, BatchesShareAGBufferAsAsked) {
 // representatives, and the effective rate the VPLs they stand for; the reduced matrix, asked on
 // the GPU, is reported as the GPU's.
 TEST(BenchRowColumn, ReportsRepresentativesBesideEveryVplShaded) {
-    const std::string json_path = (std::filesystem::temp_directory_path() /
-                                   ("mvpl_bench_rc_" + std::to_string(::getpid()) + ".json"))
-                                      .string();
-    const test::CommandResult r = test::run_mvpl_gpu(
-        "bench " + shell_quote(kCbox) +
-        " --res 32x24 --shadow-res 16 --batch 8 --vpls 64 --repeat 1 --pool 64 --rows 16"
-        " --clusters 8 --matrix gpu --quiet --json " +
-        shell_quote(json_path));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    std::ifstream in(json_path);
-    const json j = json::parse(in);
-    std::filesystem::remove(json_path);
+    const BenchRun run = run_bench(kCbox,
+                                   "--res 32x24 --shadow-res 16 --batch 8 --vpls 64 --repeat 1"
+                                   " --pool 64 --rows 16 --clusters 8 --matrix gpu --quiet",
+                                   "row_column");
+    ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+    const json j = json::parse(run.text);
     const json& main = j["render"];
     ASSERT_TRUE(main.contains("row_column")) << main.dump();
     EXPECT_EQ(main["row_column"]["matrix"], "gpu");
@@ -293,16 +288,13 @@ TEST(BenchRowColumn, ReportsRepresentativesBesideEveryVplShaded) {
 TEST(BenchChains, TheGlossySceneTracesChainsUnlessTurnedOff) {
     const std::string glossy = MVPL_ASSETS_DIR "/glossy/glossy.gltf";
     for (const bool off : {false, true}) {
-        const std::string path = (std::filesystem::temp_directory_path() /
-                                  ("mvpl_bench_chains_" + std::to_string(::getpid()) + ".json"))
-                                     .string();
-        const test::CommandResult r = test::run_mvpl_gpu(
-            "bench " + shell_quote(glossy) + " --res 32x24 --shadow-res 16 --batch 8 --vpls 8" +
-            " --repeat 1 --quiet" + (off ? " --no-chains" : "") + " --json " + shell_quote(path));
-        ASSERT_EQ(r.exit_code, 0) << r.err;
-        std::ifstream in(path);
-        const json j = json::parse(in);
-        std::filesystem::remove(path);
+        const BenchRun run = run_bench(
+            glossy,
+            std::string("--res 32x24 --shadow-res 16 --batch 8 --vpls 8 --repeat 1 --quiet") +
+                (off ? " --no-chains" : ""),
+            "chains");
+        ASSERT_EQ(run.result.exit_code, 0) << run.result.err;
+        const json j = json::parse(run.text);
         EXPECT_EQ(j["render"]["chains"].get<bool>(), !off);
         const int64_t rays = j["render"]["chain_rays"].get<int64_t>();
         const int64_t positions = j["render"]["g_buffers"].get<int64_t>();
