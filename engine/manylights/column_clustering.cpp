@@ -2,13 +2,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <numeric>
 #include <queue>
 
 #include "engine/core/parallel.h"
 #include "engine/core/rng.h"
 #include "engine/core/sampling.h"
+#include "engine/manylights/nearest_centre.h"
 
 namespace mvpl::manylights {
 namespace {
@@ -46,66 +46,6 @@ struct Sums {
         return std::max(0.0, norm * norm - s2);
     }
 };
-
-double dot(const float* a, const float* b, uint32_t dims) {
-    double s = 0.0;
-    for (uint32_t k = 0; k < dims; ++k)
-        s += double(a[k]) * double(b[k]);
-    return s;
-}
-
-// Two doubles a register (SSE2, the x86-64 baseline), by the GCC and Clang vector extension:
-// the compilers leave the scalar loop below unvectorised.
-using Double2 = double __attribute__((vector_size(16)));
-
-// Each column to the centre nearest in direction (the first of equals; a centre to itself).
-// The centres' directions are held transposed, per dimension, so that a column's D-term dot
-// products with a block of centres are summed side by side, each in dot()'s order (and products
-// of floats are exact in double): the same sums, bit for bit, in a third of the time
-// (docs/results.md, "Row-column sampling").
-std::vector<uint32_t> nearest_centres(const std::vector<float>& dir, uint32_t dims,
-                                      const std::vector<uint32_t>& columns,
-                                      const std::vector<uint32_t>& centres) {
-    constexpr size_t kBlock = 8;  // centres summed at once: their sums stay in registers
-    const size_t count = centres.size();
-    const size_t padded = (count + kBlock - 1) / kBlock * kBlock;
-    std::vector<double> across(size_t(dims) * padded, 0.0);  // dimension k at [k · padded, …)
-    for (size_t c = 0; c < count; ++c)
-        for (uint32_t k = 0; k < dims; ++k)
-            across[k * padded + c] = double(dir[size_t(centres[c]) * dims + k]);
-    std::vector<uint32_t> nearest(columns.size());
-    parallel_for(int64_t(columns.size()), 256, [&](int64_t begin, int64_t end) {
-        for (int64_t i = begin; i < end; ++i) {
-            const uint32_t column = columns[size_t(i)];
-            const float* d = &dir[size_t(column) * dims];
-            double best = -2.0;
-            uint32_t pick = 0;
-            for (size_t b = 0; b < padded; b += kBlock) {
-                Double2 sum[kBlock / 2] = {};
-                for (uint32_t k = 0; k < dims; ++k) {
-                    const Double2 dk = {double(d[k]), double(d[k])};
-                    const double* a = &across[k * padded + b];
-                    for (size_t v = 0; v < kBlock / 2; ++v) {
-                        Double2 pair;
-                        std::memcpy(&pair, a + 2 * v, sizeof pair);
-                        sum[v] += dk * pair;
-                    }
-                }
-                for (size_t u = 0; u < kBlock && b + u < count; ++u) {
-                    if (sum[u / 2][u % 2] > best) {
-                        best = sum[u / 2][u % 2];
-                        pick = uint32_t(b + u);
-                    }
-                }
-            }
-            // A centre is nearest to itself (its cosine counts as 2, above any other's).
-            const auto self = std::lower_bound(centres.begin(), centres.end(), column);
-            if (self != centres.end() && *self == column) pick = uint32_t(self - centres.begin());
-            nearest[size_t(i)] = pick;
-        }
-    });
-    return nearest;
-}
 
 // Sampling clustering of `columns` (norm > 0) into at most `count` clusters.
 std::vector<std::vector<uint32_t>> sampling_clusters(const ColumnSketches& s,
@@ -171,7 +111,7 @@ bool split(const ColumnSketches& s, const std::vector<float>& dir, std::vector<u
     std::vector<std::pair<double, uint32_t>> order;
     order.reserve(columns.size());
     for (uint32_t j : columns)
-        order.emplace_back(dot(&dir[size_t(j) * dims], line.data(), dims), j);
+        order.emplace_back(direction_dot(&dir[size_t(j) * dims], line.data(), dims), j);
     std::sort(order.begin(), order.end());
     Sums whole(dims), left(dims);
     for (uint32_t j : columns)

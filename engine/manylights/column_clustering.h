@@ -8,7 +8,8 @@
 //
 // 1. Sampling clustering: C/2 centres drawn with replacement in proportion to
 //    α_j = Σ_i n_i n_j ‖ρ̂_i − ρ̂_j‖² = n_j (2 Σ n − 2 ρ̂_j · Σ n ρ̂), which favours columns far from
-//    the rest, and every column joined to the centre nearest in direction.
+//    the rest, and every column joined to the centre nearest in direction (nearest_centre.h: for
+//    many centres, the nearest among those of a few groups).
 // 2. Top-down splitting: the cluster of largest cost split along a random line at the
 //    point of least total cost, until C clusters (or every cost is 0).
 //
