@@ -14,6 +14,7 @@
 #include <sstream>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "engine/core/exr_file.h"
 #include "engine/core/image.h"
@@ -292,6 +293,33 @@ TEST(Progress, PlainLinesWhenStderrIsNotATerminal) {
                                                 "MVPL_PROGRESS_SECONDS=0.25");
     ASSERT_EQ(quiet.exit_code, 0) << quiet.err;
     EXPECT_EQ(quiet.err, "");
+    fs::remove(out.string() + ".exr");
+}
+
+// A fixed count whose one chunk is one pool of row-column sampling (2 048 representatives, about
+// 2 s at 32² on lavapipe): its batches keep the lines coming while it is shaded, each with the
+// VPLs shaded so far, though the bar's paths stand at 0 % until the chunk ends.
+TEST(Progress, LinesWhileOneLargePoolIsShaded) {
+    const fs::path out = fs::temp_directory_path() / ("mvpl_pool_" + std::to_string(getpid()));
+    const auto run = mvpl::test::run_mvpl_gpu(
+        "render " + shell_quote(kScene) +
+            " --res 32x32 --vpls 8192 --vpl-per-path one --pool 8192 --clusters 2048"
+            " --no-compensate -o " +
+            shell_quote(out.string() + ".exr"),
+        "MVPL_PROGRESS_SECONDS=0.25");
+    ASSERT_EQ(run.exit_code, 0) << run.err;
+    std::vector<long> shaded;  // on the lines written before the chunk ended
+    std::istringstream lines(run.err);
+    for (std::string line; std::getline(lines, line);) {
+        const size_t at = line.find(" VPLs shaded");
+        if (line.rfind("render: 0% ", 0) != 0 || at == std::string::npos) continue;
+        shaded.push_back(std::stol(line.substr(line.rfind(' ', at - 1) + 1)));
+    }
+    ASSERT_GE(shaded.size(), 2u) << run.err;
+    for (size_t i = 1; i < shaded.size(); ++i)
+        EXPECT_GE(shaded[i], shaded[i - 1]) << run.err;
+    EXPECT_GT(shaded.back(), 0) << run.err;
+    EXPECT_LE(shaded.back(), 2048) << run.err;
     fs::remove(out.string() + ".exr");
 }
 

@@ -14,13 +14,18 @@
 #include "engine/core/timer.h"
 #include "tools/cli/checkpoints.h"
 #include "tools/cli/render_chunks.h"
+#include "tools/cli/shading_status.h"
 
 namespace mvpl::cli {
 
 namespace {
 
-integrator::VplIntegrator& begin(const RenderJob& job, integrator::Pacing pacing) {
-    job.integrator->begin(job.session->view(), job.estimate, pacing);
+// The job's estimate, its batches reported to `status`.
+integrator::VplIntegrator& begin(const RenderJob& job, integrator::Pacing pacing,
+                                 const ShadingStatus& status) {
+    integrator::Estimate estimate = job.estimate;
+    estimate.render.on_batch = status.on_batch();
+    job.integrator->begin(job.session->view(), estimate, pacing);
     return *job.integrator;
 }
 
@@ -74,9 +79,10 @@ RenderOutcome outcome_of(integrator::VplIntegrator& run) {
 }  // namespace
 
 RenderOutcome render_once(const RenderJob& job, uint64_t units) {
-    integrator::VplIntegrator& run = begin(job, integrator::Pacing::Fixed);
-    warn_if_unlit(job, run);
     Progress progress("render", int64_t(std::min<uint64_t>(units, INT64_MAX)), job.quiet);
+    ShadingStatus status(progress);
+    integrator::VplIntegrator& run = begin(job, integrator::Pacing::Fixed, status);
+    warn_if_unlit(job, run);
     Checkpoints checkpoints = make_checkpoints(job);
     // Chunk by chunk, so that memory does not grow with `units`: the same VPLs as at once (the
     // Monte Carlo stream's blocks are aligned to path indices, and a chunk is a whole number of
@@ -91,7 +97,7 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
         run.advance(work);
         done += work;
         checkpoints.after_chunk(done >= units, [&] { write_checkpoint(job, run); });
-        progress.set_status(run.stream().statistics());
+        status.set_sampler_status(run.stream().statistics());
         progress.advance(int64_t(work));
     }
     progress.finish();
@@ -100,12 +106,13 @@ RenderOutcome render_once(const RenderJob& job, uint64_t units) {
 
 RenderOutcome render_for(const RenderJob& job, double seconds) {
     Timer budget;
-    integrator::VplIntegrator& run = begin(job, integrator::Pacing::OpenEnded);
-    warn_if_unlit(job, run);
     // Progress in tenths of the budget.
     const int64_t tenths = int64_t(std::ceil(seconds * 10.0));
     int64_t shown = 0;
     Progress progress("render", tenths, job.quiet);
+    ShadingStatus status(progress);
+    integrator::VplIntegrator& run = begin(job, integrator::Pacing::OpenEnded, status);
+    warn_if_unlit(job, run);
     Checkpoints checkpoints = make_checkpoints(job);
     const uint64_t first = uint64_t(job.estimate.render.batch);
     // Over ranks, rank 0's clock decides for all, so that they stop together and agree on each
@@ -129,7 +136,7 @@ RenderOutcome render_for(const RenderJob& job, double seconds) {
          t = elapsed()) {
         run.advance(next_chunk(run.stream().work_done(), t, seconds - t, first, chunk_seconds[0]));
         checkpoints.after_chunk(false, [&] { write_checkpoint(job, run); });
-        progress.set_status(run.stream().statistics());
+        status.set_sampler_status(run.stream().statistics());
         const int64_t now = std::min(tenths, int64_t(budget.seconds() * 10.0));
         progress.advance(now - shown);
         shown = now;
