@@ -36,7 +36,8 @@ struct RowColumnOptions {
     uint32_t clusters = 0;
     // The share of a representative's probability drawn in proportion to VPL power instead of
     // the reduced column norm, so that a VPL that lights pixels no row sees keeps a probability
-    // that does not vanish with its norm on the rows.
+    // that does not vanish with its norm on the rows. The two rooms at 15 s, six seeds: 0.03 and
+    // 0.1 the same error, 0.3 blotches in four (docs/results.md, "Row-column sampling").
     float defensive_share = 0.1f;
     // Dimensions of the sketch the clustering measures columns in (reduced_matrix.h).
     uint32_t sketch_dims = 16;
