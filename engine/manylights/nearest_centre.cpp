@@ -73,8 +73,8 @@ uint32_t itself_or(uint32_t column, const std::vector<uint32_t>& centres, uint32
     return self != centres.end() && *self == column ? uint32_t(self - centres.begin()) : pick;
 }
 
-// Centres grouped around pivots: every (C / G)-th centre (the centres are in pool order, so the
-// pivots are a spread sample of them), each centre in the group of its nearest pivot.
+// Centres grouped around pivots: every (M / G)-th of the M centres (they are in pool order, so
+// the pivots are a spread sample of them), each centre in the group of its nearest pivot.
 struct CentreGroups {
     TransposedCentres pivots;
     std::vector<TransposedCentres> members;

@@ -117,7 +117,7 @@ TEST(NearestCentre, FewCentresAreSearchedExhaustively) {
               manylights::nearest_centres_exhaustive(d.dir, 16, range(20000), centres));
 }
 
-// The grouped search's pivots, by its rule: centre ⌊g C / G⌋ for g < G = ⌈√C⌉.
+// The grouped search's pivots, by its rule: of M centres, centre ⌊g M / G⌋ for g < G = ⌈√M⌉.
 std::vector<uint32_t> pivot_indices(size_t centres) {
     const size_t groups = size_t(std::ceil(std::sqrt(double(centres))));
     std::vector<uint32_t> p(groups);
