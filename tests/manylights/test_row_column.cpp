@@ -175,6 +175,36 @@ TEST(RowColumn, ClusteringLowersTheCost) {
     EXPECT_GT(one, 0.0);
 }
 
+// Past kExhaustiveCentres sampled centres (C/2 > 1 024) each column looks for its centre among a
+// few groups (nearest_centre.h): the clusters still hold every column once, and more of them
+// still cost less.
+TEST(RowColumn, ManyClustersHoldEveryColumnOnceAndLowerTheCost) {
+    const Cornell& c = cornell();
+    const std::vector<light::Vpl> pool = pool_of(8192, 21);
+    const std::vector<manylights::Row> r =
+        manylights::make_rows(c.scene, c.accel, c.scene.camera, {kRes, kRes, 64, {}}, 7, 0);
+    const manylights::MatrixContext mc{&c.accel, r, 0.01f, 0.0f};
+    const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 7);
+    std::vector<double> costs;
+    for (const uint32_t count : {1024u, 2560u, 4096u}) {  // 512, 1 280 and 2 048 centres
+        const std::vector<manylights::Cluster> clusters = manylights::cluster_columns(s, count, 2);
+        EXPECT_LE(clusters.size(), count);
+        std::vector<int> held(pool.size(), 0);
+        double cost = 0.0;
+        for (const auto& k : clusters) {
+            for (uint32_t j : k.columns)
+                ++held[j];
+            cost += k.seen ? manylights::cluster_cost(s, k.columns) : 0.0;
+        }
+        for (size_t j = 0; j < held.size(); ++j)
+            ASSERT_EQ(held[j], 1) << "column " << j << " with " << count << " clusters";
+        costs.push_back(cost);
+    }
+    std::printf("cost: 1024 clusters %.4g, 2560 %.4g, 4096 %.4g\n", costs[0], costs[1], costs[2]);
+    EXPECT_LT(costs[1], costs[0]);
+    EXPECT_LT(costs[2], costs[1]);
+}
+
 // The integrator's hook: with a cluster per VPL the oracle image is the one without row-column
 // sampling; with fewer it shades fewer VPLs than the stream gave.
 TEST(RowColumn, IntegratorHook) {
