@@ -27,6 +27,17 @@ namespace {
 
 using namespace manylights_test;
 
+// The CPU matrix's sketches of `pool` on `rows` rows of the Cornell box's kRes² image (d_min 0.1),
+// the rows and the sketch drawn from `seed`.
+manylights::ColumnSketches cornell_sketches(const std::vector<light::Vpl>& pool, int rows,
+                                            uint64_t seed) {
+    const Cornell& c = cornell();
+    const std::vector<manylights::Row> r =
+        manylights::make_rows(c.scene, c.accel, c.scene.camera, {kRes, kRes, rows, {}}, seed, 0);
+    const manylights::MatrixContext mc{&c.accel, r, 0.01f, 0.0f};
+    return manylights::sketch_columns(mc, pool, 16, seed);
+}
+
 TEST(RowColumn, UnbiasedOverDraws) {
     expect_unbiased(32, 32, 160);
 }
@@ -127,12 +138,8 @@ TEST(RowColumn, RowsLandOnWhatTheCameraSees) {
 // With at least as many clusters as columns every VPL is its own representative, unscaled: the
 // pool's image to the bit, through the clustering and through the sampler.
 TEST(RowColumn, AClusterPerVplIsThePool) {
-    const Cornell& c = cornell();
     const std::vector<light::Vpl> pool = pool_of(96, 13);
-    const std::vector<manylights::Row> r =
-        manylights::make_rows(c.scene, c.accel, c.scene.camera, {kRes, kRes, 16, {}}, 2, 0);
-    const manylights::MatrixContext mc{&c.accel, r, 0.01f, 0.0f};
-    const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 2);
+    const manylights::ColumnSketches s = cornell_sketches(pool, 16, 2);
     Rng rng(1, 0);
     std::vector<light::Vpl> reps;
     manylights::append_representatives(manylights::cluster_columns(s, 96, 2), s.norms, pool, 0.1f,
@@ -150,12 +157,8 @@ TEST(RowColumn, AClusterPerVplIsThePool) {
 // The two stages lower the cluster cost (column_clustering.h) the representatives' error on the
 // rows is: more clusters, less cost, and far below one cluster or clusters cut in pool order.
 TEST(RowColumn, ClusteringLowersTheCost) {
-    const Cornell& c = cornell();
     const std::vector<light::Vpl> pool = pool_of(1024, 17);
-    const std::vector<manylights::Row> r =
-        manylights::make_rows(c.scene, c.accel, c.scene.camera, {kRes, kRes, 64, {}}, 6, 0);
-    const manylights::MatrixContext mc{&c.accel, r, 0.01f, 0.0f};
-    const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 6);
+    const manylights::ColumnSketches s = cornell_sketches(pool, 64, 6);
     auto total = [&](const std::vector<manylights::Cluster>& clusters) {
         double t = 0.0;
         for (const auto& k : clusters)
@@ -179,12 +182,8 @@ TEST(RowColumn, ClusteringLowersTheCost) {
 // few groups (nearest_centre.h): the clusters still hold every column once, and more of them
 // still cost less.
 TEST(RowColumn, ManyClustersHoldEveryColumnOnceAndLowerTheCost) {
-    const Cornell& c = cornell();
     const std::vector<light::Vpl> pool = pool_of(8192, 21);
-    const std::vector<manylights::Row> r =
-        manylights::make_rows(c.scene, c.accel, c.scene.camera, {kRes, kRes, 64, {}}, 7, 0);
-    const manylights::MatrixContext mc{&c.accel, r, 0.01f, 0.0f};
-    const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 7);
+    const manylights::ColumnSketches s = cornell_sketches(pool, 64, 7);
     std::vector<double> costs;
     for (const uint32_t count : {1024u, 2560u, 4096u}) {  // 512, 1 280 and 2 048 centres
         const std::vector<manylights::Cluster> clusters = manylights::cluster_columns(s, count, 2);
