@@ -161,8 +161,12 @@ void split_clusters(const ColumnSketches& s, const std::vector<float>& dir,
 
 }  // namespace
 
-double cluster_cost(const ColumnSketches& s, const std::vector<uint32_t>& columns) {
-    return cost_of(s, directions(s), columns);
+double clusters_cost(const ColumnSketches& s, std::span<const Cluster> clusters) {
+    const std::vector<float> dir = directions(s);
+    double total = 0.0;
+    for (const Cluster& k : clusters)
+        total += k.seen ? cost_of(s, dir, k.columns) : 0.0;
+    return total;
 }
 
 std::vector<Cluster> cluster_columns(const ColumnSketches& s, uint32_t clusters, uint64_t seed) {

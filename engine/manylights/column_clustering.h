@@ -18,6 +18,7 @@
 // (representatives.h), so that a VPL that lights only pixels no row sees still contributes in
 // expectation. With C ≥ N every column is a cluster of its own.
 #include <cstdint>
+#include <span>
 #include <vector>
 
 #include "engine/manylights/reduced_matrix.h"
@@ -33,7 +34,8 @@ struct Cluster {
 std::vector<Cluster> cluster_columns(const ColumnSketches& sketches, uint32_t clusters,
                                      uint64_t seed);
 
-// The cost above, from the norms and directions of a cluster's columns (tests, reports).
-double cluster_cost(const ColumnSketches& sketches, const std::vector<uint32_t>& columns);
+// The summed cost above of the clusters of seen columns, from the norms and directions of their
+// columns (tests, reports); the unseen clusters' cost is not on the rows.
+double clusters_cost(const ColumnSketches& sketches, std::span<const Cluster> clusters);
 
 }  // namespace mvpl::manylights

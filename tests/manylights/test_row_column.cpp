@@ -160,10 +160,7 @@ TEST(RowColumn, ClusteringLowersTheCost) {
     const std::vector<light::Vpl> pool = pool_of(1024, 17);
     const manylights::ColumnSketches s = cornell_sketches(pool, 64, 6);
     auto total = [&](const std::vector<manylights::Cluster>& clusters) {
-        double t = 0.0;
-        for (const auto& k : clusters)
-            t += k.seen ? manylights::cluster_cost(s, k.columns) : 0.0;
-        return t;
+        return manylights::clusters_cost(s, clusters);
     };
     std::vector<manylights::Cluster> in_order(64);
     for (uint32_t j = 0; j < pool.size(); ++j)
@@ -189,15 +186,12 @@ TEST(RowColumn, ManyClustersHoldEveryColumnOnceAndLowerTheCost) {
         const std::vector<manylights::Cluster> clusters = manylights::cluster_columns(s, count, 2);
         EXPECT_LE(clusters.size(), count);
         std::vector<int> held(pool.size(), 0);
-        double cost = 0.0;
-        for (const auto& k : clusters) {
+        for (const auto& k : clusters)
             for (uint32_t j : k.columns)
                 ++held[j];
-            cost += k.seen ? manylights::cluster_cost(s, k.columns) : 0.0;
-        }
         for (size_t j = 0; j < held.size(); ++j)
             ASSERT_EQ(held[j], 1) << "column " << j << " with " << count << " clusters";
-        costs.push_back(cost);
+        costs.push_back(manylights::clusters_cost(s, clusters));
     }
     std::printf("cost: 1024 clusters %.4g, 2560 %.4g, 4096 %.4g\n", costs[0], costs[1], costs[2]);
     EXPECT_LT(costs[1], costs[0]);
