@@ -99,25 +99,15 @@ double cost_of(const ColumnSketches& s, const std::vector<float>& dir,
     return sums.cost();
 }
 
-// Splits `columns` along a random line at the point of least total cost; false when no split
-// lowers the cost.
-bool split(const ColumnSketches& s, const std::vector<float>& dir, std::vector<uint32_t>& columns,
-           std::vector<uint32_t>& right, Rng& rng) {
+// The point of least total cost along `order` (columns sorted along a line): the first `at`
+// columns and the rest; 0 when no split lowers the cost.
+size_t least_cost_point(const ColumnSketches& s, const std::vector<float>& dir,
+                        const std::vector<std::pair<double, uint32_t>>& order) {
     const uint32_t dims = s.dims;
-    std::vector<float> line(dims);
-    for (float& v : line)
-        v = float(std::sqrt(-2.0 * std::log(1.0 - double(rng.next_float()))) *
-                  std::cos(2.0 * kPi * double(rng.next_float())));
-    std::vector<std::pair<double, uint32_t>> order;
-    order.reserve(columns.size());
-    for (uint32_t j : columns)
-        order.emplace_back(direction_dot(&dir[size_t(j) * dims], line.data(), dims), j);
-    std::sort(order.begin(), order.end());
     Sums whole(dims), left(dims);
-    for (uint32_t j : columns)
-        whole.add(s.norms[j], &dir[size_t(j) * dims]);
-    const double cost = whole.cost();
-    double best = cost;
+    for (const auto& o : order)
+        whole.add(s.norms[o.second], &dir[size_t(o.second) * dims]);
+    double best = whole.cost();
     size_t at = 0;
     for (size_t m = 1; m < order.size(); ++m) {
         const uint32_t j = order[m - 1].second;
@@ -129,6 +119,24 @@ bool split(const ColumnSketches& s, const std::vector<float>& dir, std::vector<u
             at = m;
         }
     }
+    return at;
+}
+
+// Splits `columns` along a random line, at the point of least total cost or, with `halve`, at
+// the median; false when no split lowers the cost.
+bool split(const ColumnSketches& s, const std::vector<float>& dir, std::vector<uint32_t>& columns,
+           std::vector<uint32_t>& right, Rng& rng, bool halve) {
+    const uint32_t dims = s.dims;
+    std::vector<float> line(dims);
+    for (float& v : line)
+        v = float(std::sqrt(-2.0 * std::log(1.0 - double(rng.next_float()))) *
+                  std::cos(2.0 * kPi * double(rng.next_float())));
+    std::vector<std::pair<double, uint32_t>> order;
+    order.reserve(columns.size());
+    for (uint32_t j : columns)
+        order.emplace_back(direction_dot(&dir[size_t(j) * dims], line.data(), dims), j);
+    std::sort(order.begin(), order.end());
+    const size_t at = halve ? order.size() / 2 : least_cost_point(s, dir, order);
     if (at == 0) return false;
     columns.clear();
     right.clear();
@@ -137,25 +145,36 @@ bool split(const ColumnSketches& s, const std::vector<float>& dir, std::vector<u
     return true;
 }
 
-// Top-down splitting of `clusters` until `count` or none can be split.
+// Top-down splitting of `clusters` until `count` or none can be split; clusters of more than
+// `cap` columns first, halved.
 void split_clusters(const ColumnSketches& s, const std::vector<float>& dir,
-                    std::vector<std::vector<uint32_t>>& clusters, uint32_t count, Rng& rng) {
-    using Entry = std::pair<double, size_t>;  // cost, cluster: the largest first, then the lowest
+                    std::vector<std::vector<uint32_t>>& clusters, uint32_t count, size_t cap,
+                    Rng& rng) {
+    struct Entry {
+        bool over;
+        double cost;
+        size_t k;
+    };
+    // The oversized first, then the largest cost, then the lowest index.
     auto later = [](const Entry& a, const Entry& b) {
-        return a.first != b.first ? a.first < b.first : a.second > b.second;
+        if (a.over != b.over) return b.over;
+        return a.cost != b.cost ? a.cost < b.cost : a.k > b.k;
     };
     std::priority_queue<Entry, std::vector<Entry>, decltype(later)> queue(later);
+    auto push = [&](size_t k) {
+        queue.push(Entry{clusters[k].size() > cap, cost_of(s, dir, clusters[k]), k});
+    };
     for (size_t k = 0; k < clusters.size(); ++k)
-        queue.emplace(cost_of(s, dir, clusters[k]), k);
+        push(k);
     while (clusters.size() < count && !queue.empty()) {
-        const auto [cost, k] = queue.top();
+        const Entry e = queue.top();
         queue.pop();
-        if (!(cost > 0.0) || clusters[k].size() < 2) continue;
+        if (!e.over && (!(e.cost > 0.0) || clusters[e.k].size() < 2)) continue;
         std::vector<uint32_t> right;
-        if (!split(s, dir, clusters[k], right, rng)) continue;
+        if (!split(s, dir, clusters[e.k], right, rng, e.over)) continue;
         clusters.push_back(std::move(right));
-        queue.emplace(cost_of(s, dir, clusters[k]), k);
-        queue.emplace(cost_of(s, dir, clusters.back()), clusters.size() - 1);
+        push(e.k);
+        push(clusters.size() - 1);
     }
 }
 
@@ -198,7 +217,8 @@ std::vector<Cluster> cluster_columns(const ColumnSketches& s, uint32_t clusters,
     } else if (count > 0) {
         const std::vector<float> dir = directions(s);
         parts = sampling_clusters(s, dir, seen, std::max(count / 2, 1u), rng);
-        split_clusters(s, dir, parts, count, rng);
+        const auto cap = size_t(std::ceil(kLargestCluster * double(seen.size()) / double(count)));
+        split_clusters(s, dir, parts, count, cap, rng);
     }
     for (auto& p : parts)
         out.push_back(Cluster{std::move(p), true});

@@ -4,6 +4,7 @@
 // with a cluster per VPL the image is the pool's to the bit.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <memory>
@@ -196,6 +197,42 @@ TEST(RowColumn, ManyClustersHoldEveryColumnOnceAndLowerTheCost) {
     std::printf("cost: 1024 clusters %.4g, 2560 %.4g, 4096 %.4g\n", costs[0], costs[1], costs[2]);
     EXPECT_LT(costs[1], costs[0]);
     EXPECT_LT(costs[2], costs[1]);
+}
+
+// Clusters of bounded size (column_clustering.h): the two rooms' far-room VPLs, which the rows
+// of the near room barely see, have nearly parallel sketches and gather by the hundred on the
+// cost alone. Every cluster of seen columns holds at most kLargestCluster times their mean
+// (rounded up), the bound the splitting keeps.
+TEST(RowColumn, NoClusterHoldsMoreThanItsShareOfTheColumns) {
+    const scene::Scene scene = scene::load_scene(MVPL_ASSETS_DIR "/two-room/two-room.gltf");
+    const trace::Accel accel(scene);
+    const light::LightSampler lights(scene);
+    const std::vector<light::Vpl> pool = stream_pool(scene, accel, lights, 8192, 11);
+    const std::vector<manylights::Row> rows =
+        manylights::make_rows(scene, accel, scene.camera, {32, 32, 64, {}}, 11, 0);
+    const float d_min = light::kDefaultClamp * scene.bounds().diagonal();
+    const manylights::MatrixContext mc{&accel, rows, d_min * d_min, 0.0f};
+    const manylights::ColumnSketches s = manylights::sketch_columns(mc, pool, 16, 11);
+    // Unbounded, the largest held 250 and 238 columns here, against bounds of 128 and 65.
+    for (const uint32_t count : {512u, 1024u}) {
+        const std::vector<manylights::Cluster> clusters = manylights::cluster_columns(s, count, 3);
+        size_t seen_columns = 0, seen_clusters = 0, largest = 0, columns = 0;
+        for (const manylights::Cluster& k : clusters) {
+            columns += k.columns.size();
+            if (!k.seen) continue;
+            ++seen_clusters;
+            seen_columns += k.columns.size();
+            largest = std::max(largest, k.columns.size());
+        }
+        ASSERT_EQ(columns, pool.size());
+        ASSERT_EQ(clusters.size(), count);
+        // The seen clusters are the C less the unseen ones (cluster_columns).
+        const double bound =
+            std::ceil(manylights::kLargestCluster * double(seen_columns) / double(seen_clusters));
+        std::printf("%u clusters: %zu seen columns in %zu, the largest %zu (bound %.0f)\n", count,
+                    seen_columns, seen_clusters, largest, bound);
+        EXPECT_LE(double(largest), bound);
+    }
 }
 
 // The integrator's hook: with a cluster per VPL the oracle image is the one without row-column
