@@ -19,8 +19,11 @@ bool diffuse_interior(const scene::Scene& scene) {
 
 uint32_t automatic_pool(const scene::Scene& scene, std::string_view sampler, double time_budget,
                         bool cpu_device) {
-    const bool pays = cpu_device && sampler == "mc" && time_budget >= kAutomaticMinSeconds &&
-                      diffuse_interior(scene);
+    const double shortest = sampler == "mc"           ? kAutomaticMinSeconds
+                            : sampler == "metropolis" ? kAutomaticMinSecondsMetropolis
+                                                      : 0.0;
+    const bool pays =
+        cpu_device && shortest > 0.0 && time_budget >= shortest && diffuse_interior(scene);
     return pays ? kAutomaticPool : 0;
 }
 

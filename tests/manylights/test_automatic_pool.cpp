@@ -1,7 +1,7 @@
 // Where `--pool auto` turns row-column sampling on (engine/manylights/automatic_pool.h): Monte
-// Carlo renders of at least five seconds of diffuse interiors on lavapipe, where it paid; not
-// under a sky, not with metal or glossy receivers, not for Metropolis VPLs, short or fixed-count
-// renders, GPUs or the CPU oracle.
+// Carlo renders of at least five seconds and Metropolis renders of at least fifteen of diffuse
+// interiors on lavapipe, where it paid; not under a sky, not with metal or glossy receivers, not
+// for short or fixed-count renders, GPUs or the CPU oracle.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -15,13 +15,14 @@ namespace {
 using manylights::automatic_pool;
 using manylights::diffuse_interior;
 using manylights::kAutomaticMinSeconds;
+using manylights::kAutomaticMinSecondsMetropolis;
 using manylights::kAutomaticPool;
 
 scene::Scene asset(const std::string& path) {
     return scene::load_scene(MVPL_ASSETS_DIR "/" + path);
 }
 
-TEST(AutomaticPool, OnForLongMonteCarloRendersOfDiffuseInteriors) {
+TEST(AutomaticPool, OnForLongRendersOfDiffuseInteriors) {
     const scene::Scene cornell = asset("cornell-box/cbox.gltf");
     EXPECT_TRUE(diffuse_interior(cornell));
     EXPECT_TRUE(diffuse_interior(asset("two-room/two-room.gltf")));
@@ -29,7 +30,9 @@ TEST(AutomaticPool, OnForLongMonteCarloRendersOfDiffuseInteriors) {
     EXPECT_EQ(automatic_pool(cornell, "mc", 60.0, true), kAutomaticPool);
     EXPECT_EQ(automatic_pool(cornell, "mc", 0.5 * kAutomaticMinSeconds, true), 0u);
     EXPECT_EQ(automatic_pool(cornell, "mc", 0.0, true), 0u);  // a fixed VPL count
-    EXPECT_EQ(automatic_pool(cornell, "metropolis", 60.0, true), 0u);
+    EXPECT_EQ(automatic_pool(cornell, "metropolis", kAutomaticMinSecondsMetropolis, true),
+              kAutomaticPool);
+    EXPECT_EQ(automatic_pool(cornell, "metropolis", kAutomaticMinSeconds, true), 0u);
     EXPECT_EQ(automatic_pool(cornell, "mc", 60.0, false), 0u);  // a GPU, or the CPU oracle
 }
 

@@ -246,10 +246,11 @@ void add_many_lights_options(ArgParser& parser, ManyLightsArgs& o) {
         "--clusters weighted representatives chosen from their light on --rows camera-visible "
         "points; 0: every VPL shaded; auto (render's default): " +
             std::to_string(manylights::kAutomaticPool) +
-            " for mc renders of a --time-budget of at least " +
-            std::to_string(int(manylights::kAutomaticMinSeconds)) +
-            " s of scenes whose materials are all diffuse, under no sky, on lavapipe (where it "
-            "paid), else 0; bench, convergence and preview: 0",
+            " for renders of a --time-budget of at least " +
+            std::to_string(int(manylights::kAutomaticMinSeconds)) + " s (mc) or " +
+            std::to_string(int(manylights::kAutomaticMinSecondsMetropolis)) +
+            " s (metropolis) of scenes whose materials are all diffuse, under no sky, on lavapipe "
+            "(where it paid), else 0; bench, convergence and preview: 0",
         "auto|N");
     parser.add_int("--rows", &o.rows, "camera-visible points of the reduced matrix");
     parser.add_int("--clusters", &o.clusters,
