@@ -8,7 +8,7 @@
 //   1.15× / 1.67× at 60 s;
 //   two rooms, Monte Carlo, N 16384: 4.4× / 9.3× at 5 s, 7.1× / 13× at 15 s (seeds 1–6);
 //   Metropolis, N 16384: the Cornell box 1.7× / 2.1× and the two rooms 1.4× / 2.1× at 15 s, the
-//   two rooms 0.9× / 1.2× at 5 s (a Metropolis render's first pools are few);
+//   two rooms 0.9× / 1.35× at 5 s (a Metropolis render's first pools are few);
 //   DamagedHelmet, MetalRoughSpheresNoTextures under the sky (metal receivers), N 8192:
 //   0.6–0.7× per pixel at 15 s: each VPL's highlight on a metal becomes a representative's spot.
 // Below about 2 s a render's few short pools made it worse than every VPL shaded, and on an H200
