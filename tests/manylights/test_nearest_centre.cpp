@@ -10,6 +10,7 @@
 
 #include "engine/core/rng.h"
 #include "engine/manylights/nearest_centre.h"
+#include "tests/manylights/standard_normal.h"
 
 namespace mvpl {
 namespace {
@@ -30,11 +31,6 @@ void normalise(float* v, uint32_t dims) {
         v[k] = len2 > 0.0 ? float(double(v[k]) / std::sqrt(len2)) : 0.0f;
 }
 
-float gaussian(Rng& rng) {
-    const double u = 1.0 - double(rng.next_float()), v = double(rng.next_float());
-    return float(std::sqrt(-2.0 * std::log(u)) * std::cos(6.283185307179586 * v));
-}
-
 // `count` directions scattered by `spread` around `lobes` random unit directions (spread 0: the
 // lobes' directions themselves, so that many columns tie); every `zero_every`-th one zero.
 // Column j's lobe is lobe_of[j] where given, a random one otherwise.
@@ -45,7 +41,7 @@ Directions clustered(uint32_t count, uint32_t dims, uint32_t lobes, float spread
     std::vector<float> axes(size_t(lobes) * dims);
     for (uint32_t l = 0; l < lobes; ++l) {
         for (uint32_t k = 0; k < dims; ++k)
-            axes[size_t(l) * dims + k] = gaussian(rng);
+            axes[size_t(l) * dims + k] = manylights_test::standard_normal(rng);
         normalise(&axes[size_t(l) * dims], dims);
     }
     Directions d{dims, std::vector<float>(size_t(count) * dims, 0.0f)};
@@ -54,7 +50,7 @@ Directions clustered(uint32_t count, uint32_t dims, uint32_t lobes, float spread
         const uint32_t l = lobe_of.empty() ? rng.next_u32() % lobes : lobe_of[j];
         float* v = &d.dir[size_t(j) * dims];
         for (uint32_t k = 0; k < dims; ++k)
-            v[k] = axes[size_t(l) * dims + k] + spread * gaussian(rng);
+            v[k] = axes[size_t(l) * dims + k] + spread * manylights_test::standard_normal(rng);
         normalise(v, dims);
     }
     return d;
